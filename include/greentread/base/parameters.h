@@ -1,0 +1,79 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * Reading scenes (.prm files) and `--set` overrides into a
+ * dealii::ParameterHandler, with errors a user can act on.
+ *
+ * Every stage declares and parses its own subsection (ASPECT style:
+ * `static void declare_parameters(ParameterHandler &)` and
+ * `void parse_parameters(ParameterHandler &)`); this file holds only what
+ * is common to all of them.
+ */
+
+namespace greentread
+{
+  namespace base
+  {
+    /**
+     * @brief One parameter as it stands after parsing.
+     */
+    struct ParameterEntry
+    {
+      /// Full path, subsections separated by '/': "Oscillator/Mass".
+      std::string path;
+      std::string value;
+      std::string default_value;
+      std::string documentation;
+      /// What deal.II's Patterns:: object allows, in its own words.
+      std::string allowed;
+    };
+
+    /**
+     * @brief Every declared parameter in declaration order.
+     */
+    std::vector<ParameterEntry>
+    list_parameters(const dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Parse a scene file into @p prm.
+     *
+     * @throws InputError naming the file, the line, the parameter and what is
+     * allowed, with the closest declared name for a misspelled one.
+     */
+    void
+    parse_scene_file(dealii::ParameterHandler &prm,
+                     const std::string        &filename);
+
+    /**
+     * @brief Apply one command-line override "Section/Sub/Name=value".
+     *
+     * @throws InputError for an undeclared parameter or a value its pattern
+     * rejects.
+     */
+    void
+    apply_override(dealii::ParameterHandler &prm, const std::string &assignment);
+
+    /**
+     * @brief Write the reference of all parameters: path, default, allowed
+     * values, and documentation (which carries the unit).
+     */
+    void
+    print_parameter_reference(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out);
+
+    /**
+     * @brief The declared name closest to @p name (Levenshtein distance), or
+     * an empty string when nothing is reasonably close.
+     */
+    std::string
+    closest_name(const std::string              &name,
+                 const std::vector<std::string> &candidates);
+  } // namespace base
+} // namespace greentread

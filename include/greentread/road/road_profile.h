@@ -1,0 +1,134 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
+
+/**
+ * @file
+ * Road profiles: the height of a rigid road along the rolling direction.
+ */
+
+namespace greentread
+{
+  namespace road
+  {
+    /**
+     * @brief A road height \f$u^r(x)\f$ along the rolling direction x, with
+     * its first three derivatives (the exact 1-DoF reference needs them).
+     */
+    class RoadProfile
+    {
+    public:
+      virtual ~RoadProfile() = default;
+
+      /// Height [m] at x [m].
+      virtual double
+      height(double x) const = 0;
+
+      /// \f$d u^r / dx\f$.
+      virtual double
+      slope(double x) const = 0;
+
+      /// \f$d^2 u^r / dx^2\f$ [1/m].
+      virtual double
+      curvature(double x) const = 0;
+
+      /// \f$d^3 u^r / dx^3\f$ [1/m^2].
+      virtual double
+      third_derivative(double x) const = 0;
+
+      /// The shortest wavelength in the profile [m], which sets how finely
+      /// events have to be searched for.
+      virtual double
+      shortest_wavelength() const = 0;
+
+      /// Largest |height| [m].
+      virtual double
+      amplitude() const = 0;
+    };
+
+    /**
+     * @brief Eq. (29): \f$u^r(x) = A_0 \sin(2\pi x / \lambda_r)\f$.
+     */
+    class Sinusoid : public RoadProfile
+    {
+    public:
+      Sinusoid(double amplitude, double wavelength);
+
+      double
+      height(double x) const override;
+      double
+      slope(double x) const override;
+      double
+      curvature(double x) const override;
+      double
+      third_derivative(double x) const override;
+      double
+      shortest_wavelength() const override
+      {
+        return wavelength;
+      }
+      double
+      amplitude() const override
+      {
+        return a0;
+      }
+
+    private:
+      double a0, wavelength, k;
+    };
+
+    /**
+     * @brief A road seen from a point that moves at constant speed:
+     * \f$u^r(t) = u^r(x_0 + V t)\f$ and its time derivatives.
+     */
+    struct RoadTrack
+    {
+      const RoadProfile &profile;
+      double             speed;
+      double             x0 = 0.;
+
+      double
+      height(double t) const
+      {
+        return profile.height(x0 + speed * t);
+      }
+      double
+      velocity(double t) const
+      {
+        return speed * profile.slope(x0 + speed * t);
+      }
+      double
+      acceleration(double t) const
+      {
+        return speed * speed * profile.curvature(x0 + speed * t);
+      }
+      double
+      jerk(double t) const
+      {
+        return speed * speed * speed * profile.third_derivative(x0 + speed * t);
+      }
+    };
+
+    /**
+     * @brief Subsection "Road": which profile, and its parameters.
+     */
+    struct RoadParameters
+    {
+      std::string profile    = "sinusoid";
+      double      amplitude  = 5e-3;
+      double      wavelength = 1e-2;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /// Build the profile these parameters describe.
+      std::unique_ptr<RoadProfile>
+      create() const;
+    };
+  } // namespace road
+} // namespace greentread

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
+
+/**
+ * @file
+ * A scene is a .prm file: it names what to compute (the top-level `Scene`)
+ * and where to put it (`Output directory`). Only the stages a scene needs
+ * are built and run.
+ */
+
+namespace greentread
+{
+  namespace scenes
+  {
+    /**
+     * @brief The top-level parameters every scene has.
+     */
+    struct GlobalParameters
+    {
+      std::string scene            = "sdof";
+      std::string output_directory = "output";
+      bool        print_timings    = true;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * @brief A runnable scene.
+     */
+    class Scene
+    {
+    public:
+      virtual ~Scene() = default;
+
+      /// Compute and write everything the scene asks for.
+      virtual void
+      run() = 0;
+    };
+
+    /**
+     * @brief Declare the top-level parameters and every stage's subsection.
+     */
+    void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Parse and check the parameters of the scene @p prm names, and
+     * build it. Nothing is written yet.
+     * @throws InputError for any parameter out of range.
+     */
+    std::unique_ptr<Scene>
+    create_scene(dealii::ParameterHandler &prm);
+  } // namespace scenes
+} // namespace greentread

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Set up GreenTread on a Debian 12 machine and either run the default scene
+# or the whole test suite.
+#
+#   bash scripts/setup.sh run    # install, build, run the built-in default scene
+#   bash scripts/setup.sh test   # install, build, run every test through ctest
+#   bash scripts/setup.sh build  # install and build only
+#
+# Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
+set -euo pipefail
+
+mode="${1:-run}"
+case "$mode" in
+  run|test|build) ;;
+  *) echo "usage: bash scripts/setup.sh run|test|build" >&2; exit 2 ;;
+esac
+
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_dir="${BUILD_DIR:-$top/build}"
+jobs="${JOBS:-$(nproc)}"
+
+# Everything GreenTread needs, as Debian 12 packages.
+packages=(
+  g++ make cmake git perl
+  libdeal.ii-dev        # deal.II 9.4 (with Trilinos, UMFPACK, MPI)
+  libeigen3-dev         # Eigen 3.4
+  libboost-test-dev     # Boost.Test for tests/unit
+  libgmsh-dev gmsh      # gmsh API for the tyre section
+  numdiff               # deal.II-style regression tests
+  gnuplot-nox           # PNG plots
+  openmpi-bin           # mpirun
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if (( ${#missing[@]} )); then
+  echo "== installing: ${missing[*]}"
+  sudo=""
+  if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "== all packages are installed"
+fi
+
+echo "== configuring in $build_dir (Release)"
+mkdir -p "$build_dir"
+cmake -S "$top" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$build_dir/configure.log" 2>&1 || {
+  cat "$build_dir/configure.log"; exit 1; }
+echo "== building with $jobs jobs"
+cmake --build "$build_dir" -j "$jobs"
+
+case "$mode" in
+  run)
+    echo "== running the built-in default scene"
+    cd "$top"
+    "$build_dir/greentread"
+    ;;
+  test)
+    echo "== running the test suite"
+    # Test executables are built on demand by ctest (deal.II test macros);
+    # build them here in parallel first.
+    cmake --build "$build_dir" -j "$jobs" --target greentread_tests
+    cd "$build_dir"
+    ctest --output-on-failure -j "$jobs"
+    ;;
+  build) ;;
+esac

@@ -1,0 +1,45 @@
+#include <greentread/base/exceptions.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace greentread
+{
+  std::string
+  format_number(const double value)
+  {
+    // The shortest %g precision that reads back exactly.
+    char buffer[64];
+    for (int precision = 6; precision <= 17; ++precision)
+      {
+        std::snprintf(buffer, sizeof(buffer), "%.*g", precision, value);
+        if (std::strtod(buffer, nullptr) == value)
+          break;
+      }
+    return buffer;
+  }
+
+
+
+  void
+  require_parameter(const bool         condition,
+                    const std::string &path,
+                    const double       value,
+                    const std::string &allowed)
+  {
+    require_parameter(condition, path, format_number(value), allowed);
+  }
+
+
+
+  void
+  require_parameter(const bool         condition,
+                    const std::string &path,
+                    const std::string &value,
+                    const std::string &allowed)
+  {
+    if (!condition)
+      throw InputError("parameter '" + path + "' = " + value +
+                       " is not allowed: " + allowed);
+  }
+} // namespace greentread

@@ -1,0 +1,83 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/contact_parameters.h>
+
+#include <cmath>
+
+namespace greentread
+{
+  namespace contact
+  {
+    std::string
+    to_string(const ContactLaw law)
+    {
+      return law == ContactLaw::kinematic ? "kinematic" : "penalty";
+    }
+
+
+
+    void
+    ContactParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      {
+        prm.declare_entry(
+          "Law", "kinematic", dealii::Patterns::Selection("kinematic|penalty"),
+          "Contact law. 'kinematic': Eqs. (16)-(28), the point rides on the road with its "
+          "displacement and velocity matched; impacts by the impulse-completion rule "
+          "(README). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted position "
+          "penetrates the road.");
+        prm.declare_entry("Contact stiffness", "1e7", dealii::Patterns::Double(),
+                          "Penalty stiffness kc, > 0 (Law = penalty only). Unit: N/m. "
+                          "Paper: 1e6, 1e7 and 1e8 N/m in Figures A.2-A.4.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Time stepping");
+      {
+        prm.declare_entry("Time step", "1e-5", dealii::Patterns::Double(),
+                          "Time step dt, > 0. Unit: s. Table A.2 uses 1e-4 and 1e-5 s.");
+        prm.declare_entry("End time", "0.2", dealii::Patterns::Double(),
+                          "Duration of the run, >= dt. Unit: s. 0.2 s is two road periods "
+                          "of Section 3.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ContactParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      {
+        law               = prm.get("Law") == "kinematic" ? ContactLaw::kinematic : ContactLaw::penalty;
+        contact_stiffness = prm.get_double("Contact stiffness");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Time stepping");
+      {
+        time_step = prm.get_double("Time step");
+        end_time  = prm.get_double("End time");
+      }
+      prm.leave_subsection();
+
+      require_parameter(contact_stiffness > 0. && std::isfinite(contact_stiffness),
+                        "Contact/Contact stiffness", contact_stiffness, "kc > 0 N/m");
+      require_parameter(time_step > 0. && std::isfinite(time_step), "Time stepping/Time step",
+                        time_step, "dt > 0 s");
+      require_parameter(end_time >= time_step && std::isfinite(end_time),
+                        "Time stepping/End time", end_time,
+                        "an end time >= the time step (" + format_number(time_step) + " s)");
+      require_parameter(end_time / time_step <= 2e8, "Time stepping/End time", end_time,
+                        "at most 2e8 time steps (dt = " + format_number(time_step) + " s)");
+    }
+
+
+
+    unsigned int
+    ContactParameters::n_steps() const
+    {
+      return static_cast<unsigned int>(std::llround(end_time / time_step));
+    }
+  } // namespace contact
+} // namespace greentread

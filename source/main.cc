@@ -1,0 +1,131 @@
+// greentread: run a scene.
+//
+//   greentread [SCENE.prm] [--set "Section/Name=value"]...
+//   greentread --print-parameters | --help | --version
+//
+// Everything else lives in the greentread_core library, so that the tests and
+// benchmarks run the same code.
+
+#include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
+#include <greentread/config.h>
+#include <greentread/scenes/scene.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/revision.h>
+
+#include <Eigen/Core>
+
+#include <boost/version.hpp>
+
+#include <gmsh.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  const char *usage =
+    "Usage:\n"
+    "  greentread [SCENE.prm] [--set \"Section/Name=value\"]...\n"
+    "  greentread --print-parameters\n"
+    "  greentread --help | --version\n"
+    "\n"
+    "Runs the scene SCENE.prm; without one, the built-in default scene (every\n"
+    "parameter at its default: the 1-DoF kinematic contact of the paper's Section 3).\n"
+    "\n"
+    "Options:\n"
+    "  --set \"Path=value\"   override one parameter after the file is read, e.g.\n"
+    "                       --set \"Time stepping/Time step=1e-4\"; may be repeated\n"
+    "  --print-parameters   every parameter with its default, allowed values, unit\n"
+    "                       and meaning\n"
+    "  --help               this text\n"
+    "  --version            versions of GreenTread and of the libraries it uses\n"
+    "\n"
+    "Exit status: 0 on success, 2 for bad input (parameter, file, directory),\n"
+    "3 for a numerical failure (overflow, divergence, singular system), 1 otherwise.\n";
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      std::string              scene_file;
+      std::vector<std::string> overrides;
+      bool                     print_parameters = false;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--help" || arg == "-h")
+            {
+              std::cout << usage;
+              return 0;
+            }
+          else if (arg == "--version")
+            {
+              std::cout << "greentread " << GREENTREAD_VERSION << " (" << GREENTREAD_GIT_REVISION
+                        << ", " << GREENTREAD_BUILD_TYPE << ")\n"
+                        << "deal.II " << DEAL_II_PACKAGE_VERSION << ", Eigen "
+                        << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.'
+                        << EIGEN_MINOR_VERSION << ", Boost " << BOOST_VERSION / 100000 << '.'
+                        << BOOST_VERSION / 100 % 1000 << ", gmsh " << GMSH_API_VERSION << '\n';
+              return 0;
+            }
+          else if (arg == "--print-parameters")
+            print_parameters = true;
+          else if (arg == "--set")
+            {
+              if (i + 1 >= argc)
+                throw greentread::InputError("--set needs an argument \"Section/Name=value\"");
+              overrides.push_back(argv[++i]);
+            }
+          else if (arg.rfind("--set=", 0) == 0)
+            overrides.push_back(arg.substr(6));
+          else if (arg.rfind("-", 0) == 0)
+            throw greentread::InputError("unknown option '" + arg +
+                                         "'; allowed: --set, --print-parameters, --help, "
+                                         "--version");
+          else if (scene_file.empty())
+            scene_file = arg;
+          else
+            throw greentread::InputError("more than one scene file given ('" + scene_file +
+                                         "' and '" + arg + "'); run them one at a time");
+        }
+
+      dealii::ParameterHandler prm;
+      greentread::scenes::declare_parameters(prm);
+      if (print_parameters)
+        {
+          greentread::base::print_parameter_reference(prm, std::cout);
+          return 0;
+        }
+      if (!scene_file.empty())
+        greentread::base::parse_scene_file(prm, scene_file);
+      for (const auto &assignment : overrides)
+        greentread::base::apply_override(prm, assignment);
+
+      auto scene = greentread::scenes::create_scene(prm);
+      scene->run();
+    }
+  catch (const greentread::InputError &e)
+    {
+      std::cerr << "greentread: error: " << e.what() << std::endl;
+      return 2;
+    }
+  catch (const greentread::NumericalError &e)
+    {
+      std::cerr << "greentread: numerical failure: " << e.what() << std::endl;
+      return 3;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "greentread: internal error: " << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}

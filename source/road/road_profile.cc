@@ -1,0 +1,100 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/road/road_profile.h>
+
+#include <cmath>
+
+namespace greentread
+{
+  namespace road
+  {
+    Sinusoid::Sinusoid(const double amplitude_, const double wavelength_)
+      : a0(amplitude_)
+      , wavelength(wavelength_)
+      , k(2. * M_PI / wavelength_)
+    {}
+
+
+
+    double
+    Sinusoid::height(const double x) const
+    {
+      return a0 * std::sin(k * x);
+    }
+
+
+
+    double
+    Sinusoid::slope(const double x) const
+    {
+      return a0 * k * std::cos(k * x);
+    }
+
+
+
+    double
+    Sinusoid::curvature(const double x) const
+    {
+      return -a0 * k * k * std::sin(k * x);
+    }
+
+
+
+    double
+    Sinusoid::third_derivative(const double x) const
+    {
+      return -a0 * k * k * k * std::cos(k * x);
+    }
+
+
+
+    void
+    RoadParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Road");
+      {
+        prm.declare_entry("Profile", "sinusoid", dealii::Patterns::Selection("sinusoid"),
+                          "The road under the contact point. 'sinusoid': "
+                          "u_r(x) = A0 sin(2 pi x / lambda_r), Eq. (29).");
+        prm.enter_subsection("Sinusoid");
+        {
+          prm.declare_entry("Amplitude", "0.005", dealii::Patterns::Double(0.),
+                            "Amplitude A0 of the sinusoidal road. Unit: m. "
+                            "Paper, Section 3: 5 mm.");
+          prm.declare_entry("Wavelength", "0.01", dealii::Patterns::Double(0.),
+                            "Wavelength lambda_r of the sinusoidal road, > 0. Unit: m. "
+                            "Paper, Section 3: 10 mm.");
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    RoadParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Road");
+      {
+        profile = prm.get("Profile");
+        prm.enter_subsection("Sinusoid");
+        {
+          amplitude  = prm.get_double("Amplitude");
+          wavelength = prm.get_double("Wavelength");
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+      require_parameter(wavelength > 0., "Road/Sinusoid/Wavelength", wavelength,
+                        "a wavelength > 0 m");
+    }
+
+
+
+    std::unique_ptr<RoadProfile>
+    RoadParameters::create() const
+    {
+      return std::make_unique<Sinusoid>(amplitude, wavelength);
+    }
+  } // namespace road
+} // namespace greentread

@@ -1,0 +1,59 @@
+#include <greentread/contact/contact_parameters.h>
+#include <greentread/convolution/convolution_parameters.h>
+#include <greentread/road/road_profile.h>
+#include <greentread/scenes/scene.h>
+#include <greentread/scenes/sdof_scene.h>
+#include <greentread/sdof/oscillator.h>
+
+namespace greentread
+{
+  namespace scenes
+  {
+    void
+    GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Scene", "sdof", dealii::Patterns::Selection("sdof"),
+                        "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
+                        "sinusoidal road (paper, Section 3), with its exact solution.");
+      prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
+                        "Directory for every output file; created if missing. Relative "
+                        "paths are relative to the working directory.");
+      prm.declare_entry("Print timings", "true", dealii::Patterns::Bool(),
+                        "Print run times on screen. Regression tests switch this off so "
+                        "that their output is reproducible.");
+    }
+
+
+
+    void
+    GlobalParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      scene            = prm.get("Scene");
+      output_directory = prm.get("Output directory");
+      print_timings    = prm.get_bool("Print timings");
+    }
+
+
+
+    void
+    declare_parameters(dealii::ParameterHandler &prm)
+    {
+      GlobalParameters::declare_parameters(prm);
+      sdof::OscillatorParameters::declare_parameters(prm);
+      road::RoadParameters::declare_parameters(prm);
+      contact::ContactParameters::declare_parameters(prm);
+      convolution::ConvolutionParameters::declare_parameters(prm);
+    }
+
+
+
+    std::unique_ptr<Scene>
+    create_scene(dealii::ParameterHandler &prm)
+    {
+      GlobalParameters global;
+      global.parse_parameters(prm);
+      // Only "sdof" exists so far; the Selection pattern has rejected the rest.
+      return std::make_unique<SdofScene>(prm, global);
+    }
+  } // namespace scenes
+} // namespace greentread

@@ -1,0 +1,199 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/output.h>
+#include <greentread/base/plot.h>
+#include <greentread/scenes/sdof_scene.h>
+#include <greentread/sdof/exact_solution.h>
+#include <greentread/sdof/sdof_solver.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace greentread
+{
+  namespace scenes
+  {
+    namespace
+    {
+      std::string
+      fmt(const char *format, const double value)
+      {
+        char buffer[64];
+        std::snprintf(buffer, sizeof(buffer), format, value);
+        return buffer;
+      }
+    } // namespace
+
+
+
+    SdofScene::SdofScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
+      : prm(prm_)
+      , global(global_)
+    {
+      oscillator.parse_parameters(prm);
+      road.parse_parameters(prm);
+      contact.parse_parameters(prm);
+      convolution.parse_parameters(prm);
+    }
+
+
+
+    void
+    SdofScene::run()
+    {
+      namespace fs = std::filesystem;
+      const fs::path directory = base::prepare_output_directory(global.output_directory);
+      const auto     record =
+        base::ParameterRecord::from(prm, "sdof",
+                                    {"Scene", "Output directory", "Oscillator", "Road",
+                                     "Contact", "Time stepping", "Convolution"});
+
+      const sdof::Oscillator osc(oscillator);
+      const auto             profile = road.create();
+      const road::RoadTrack  track{*profile, oscillator.speed, 0.};
+      const double           dt      = contact.time_step;
+      const unsigned int     n_steps = contact.n_steps();
+
+      std::cout << "GreenTread: scene 'sdof', a 1-DoF oscillator on a sinusoidal road "
+                   "(Meftah et al. 2013, Section 3)\n"
+                << "  oscillator: M = " << format_number(osc.mass())
+                << " kg, K = " << format_number(osc.stiffness())
+                << " N/m, xi = " << format_number(osc.damping_ratio())
+                << ", f0 = " << fmt("%.4g", osc.natural_frequency() / (2 * M_PI)) << " Hz\n"
+                << "  road: A0 = " << format_number(road.amplitude)
+                << " m, lambda_r = " << format_number(road.wavelength)
+                << " m, V0 = " << format_number(oscillator.speed) << " m/s\n"
+                << "  time: dt = " << format_number(dt) << " s, " << n_steps << " steps\n";
+
+      auto conv = sdof::make_convolution(osc, convolution, dt, n_steps);
+      std::cout << "  contact: " << contact::to_string(contact.law);
+      if (contact.law == contact::ContactLaw::penalty)
+        std::cout << " (kc = " << format_number(contact.contact_stiffness) << " N/m)";
+      std::cout << "; convolution: " << conv->name()
+                << (convolution.method == convolution::Method::direct ? " (N_g = " : " (N_m = ")
+                << conv->size() << ")\n";
+
+      const sdof::SdofRun run = sdof::solve(osc, track, *conv, contact);
+
+      const auto exact_start = std::chrono::steady_clock::now();
+      const sdof::ExactSolution exact(osc, track, n_steps * dt);
+      const sdof::SdofErrors    e = sdof::compare(run, exact, track);
+      const double              exact_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - exact_start).count();
+
+      // Outputs, each written under a temporary name and renamed.
+      {
+        base::AtomicFile file(directory / "time_history.csv");
+        auto            &out = file.stream();
+        out << "t,u,v,F\n";
+        for (unsigned int n = 0; n <= n_steps; ++n)
+          out << run.t[n] << ',' << run.u[n] << ',' << run.v[n] << ',' << run.F[n] << '\n';
+        record.write_comments(out);
+        file.commit();
+      }
+      {
+        base::AtomicFile file(directory / "reference.csv");
+        auto            &out = file.stream();
+        out << "t,u_road,u_exact,v_exact,F_exact\n";
+        for (unsigned int n = 0; n <= n_steps; ++n)
+          {
+            const double t = run.t[n];
+            out << t << ',' << track.height(t) << ',' << exact.displacement(t) << ','
+                << exact.velocity(t) << ','
+                << (n == 0 ? 0. : exact.impulse(run.t[n - 1], t) / dt) << '\n';
+          }
+        record.write_comments(out);
+        file.commit();
+      }
+      {
+        base::AtomicFile file(directory / "summary.csv");
+        auto            &out = file.stream();
+        out << "quantity,value,unit\n"
+            << "max_u_error," << e.max_u_error << ",m\n"
+            << "max_u_error_relative_to_A0,"
+            << (road.amplitude > 0 ? e.max_u_error / road.amplitude : 0.) << ",1\n"
+            << "max_v_error," << e.max_v_error << ",m/s\n"
+            << "max_force_error," << e.max_force_error << ",N\n"
+            << "peak_contact_force," << e.peak_contact_force << ",N\n"
+            << "total_impulse_error," << e.impulse_error << ",1\n"
+            << "max_penetration_at_steps," << e.max_penetration_grid << ",m\n"
+            << "max_penetration_inside_steps," << e.max_penetration_step << ",m\n"
+            << "contact_fraction," << e.contact_fraction << ",1\n"
+            << "exact_contact_fraction," << e.exact_contact_fraction << ",1\n"
+            << "impacts_exact," << exact.n_impacts() << ",1\n"
+            << "time_step," << dt << ",s\n"
+            << "steps," << n_steps << ",1\n"
+            << (convolution.method == convolution::Method::direct ? "N_g," : "N_m,")
+            << run.size << ",1\n"
+            << "run_time," << run.run_time << ",s\n";
+        for (unsigned int b = 0; b < run.branch_count.size(); ++b)
+          out << "steps_" << contact::to_string(static_cast<contact::KinematicBranch>(b)) << ','
+              << run.branch_count[b] << ",1\n";
+        record.write_comments(out);
+        file.commit();
+      }
+      {
+        base::AtomicFile file(directory / "parameters.prm");
+        file.stream() << "# Every parameter of this run; 'greentread parameters.prm' repeats it.\n";
+        prm.print_parameters(file.stream(), dealii::ParameterHandler::ShortPRM);
+        file.commit();
+      }
+
+      const double force_top = std::max(1.0, 1.3 * e.peak_contact_force);
+      const std::string label =
+        contact::to_string(contact.law) + ", " + conv->name() + ", dt = " + format_number(dt) + " s";
+      std::string commands =
+        "set datafile separator ','\n"
+        "set multiplot layout 2,1 title 'GreenTread sdof: " + label + "'\n"
+        "set grid\nset key top right\n"
+        "set xlabel 't [s]'\nset ylabel 'u [mm]'\n"
+        "plot " + base::gnuplot_quote(directory / "reference.csv") +
+        " skip 1 using 1:($2*1e3) with lines lc rgb '#999999' lw 2 title 'road u_r', " +
+        "'' skip 1 using 1:($3*1e3) with lines lc rgb 'black' dt 2 lw 2 title 'exact', " +
+        base::gnuplot_quote(directory / "time_history.csv") +
+        " skip 1 using 1:($2*1e3) with lines lc rgb '#d62728' title 'computed'\n"
+        "set ylabel 'contact force F [N] (mean over each step)'\n"
+        "set yrange [" + format_number(-0.05 * force_top) + ":" + format_number(force_top) + "]\n"
+        "plot " + base::gnuplot_quote(directory / "reference.csv") +
+        " skip 1 using 1:5 with lines lc rgb 'black' dt 2 lw 2 title 'exact (impacts clipped)', " +
+        base::gnuplot_quote(directory / "time_history.csv") +
+        " skip 1 using 1:4 with lines lc rgb '#d62728' title 'computed'\n"
+        "unset multiplot\n";
+      const bool plotted =
+        base::plot_png(directory / "time_history.png", commands, record, 1100, 800);
+
+      const double a0 = road.amplitude;
+      std::cout << "Errors against the exact piecewise-analytic solution ("
+                << exact.n_impacts() << " impacts, " << exact.n_phases() << " phases):\n"
+                << "  max |u - u_exact|              = " << fmt("%.4g", e.max_u_error) << " m"
+                << (a0 > 0 ? " (" + fmt("%.4g", 100. * e.max_u_error / a0) + " % of A0)" : "")
+                << "\n"
+                << "  max |v - v_exact|              = " << fmt("%.4g", e.max_v_error) << " m/s\n"
+                << "  max |F - F_exact| (step means) = " << fmt("%.4g", e.max_force_error)
+                << " N (peak contact force " << fmt("%.4g", e.peak_contact_force) << " N)\n"
+                << "  total impulse error            = " << fmt("%.4g", e.impulse_error) << "\n"
+                << "  max penetration at time steps  = " << fmt("%.4g", e.max_penetration_grid)
+                << " m\n"
+                << "  max penetration inside steps   = " << fmt("%.4g", e.max_penetration_step)
+                << " m\n"
+                << "  fraction of time in contact    = " << fmt("%.4f", e.contact_fraction)
+                << " (exact " << fmt("%.4f", e.exact_contact_fraction) << ")\n";
+      if (contact.law == contact::ContactLaw::kinematic)
+        {
+          std::cout << "  contact steps by branch:";
+          for (unsigned int b = 1; b < run.branch_count.size(); ++b)
+            std::cout << ' ' << contact::to_string(static_cast<contact::KinematicBranch>(b))
+                      << ' ' << run.branch_count[b];
+          std::cout << '\n';
+        }
+      if (global.print_timings)
+        std::cout << "Run time: " << fmt("%.4g", run.run_time) << " s for the time loop ("
+                  << fmt("%.3g", 1e9 * run.run_time / n_steps) << " ns per step), "
+                  << fmt("%.3g", exact_time) << " s for the exact reference\n";
+      std::cout << "Wrote time_history.csv, reference.csv, summary.csv, parameters.prm"
+                << (plotted ? ", time_history.png" : "") << " in "
+                << directory.string() << "\n";
+    }
+  } // namespace scenes
+} // namespace greentread

@@ -1,0 +1,198 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/sdof/oscillator.h>
+
+#include <cmath>
+
+namespace greentread
+{
+  namespace sdof
+  {
+    void
+    OscillatorParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Oscillator");
+      {
+        prm.declare_entry("Mass", "1", dealii::Patterns::Double(),
+                          "Mass M, > 0. Unit: kg. Table A.1: 1 kg.");
+        prm.declare_entry("Stiffness", "4e5", dealii::Patterns::Double(),
+                          "Spring stiffness K, > 0. Unit: N/m. Table A.1: 4e5 N/m.");
+        prm.declare_entry("Damping ratio", "0.02", dealii::Patterns::Double(),
+                          "Viscous damping ratio xi = C / (2 sqrt(K M)), >= 0. "
+                          "Values >= 1 give real poles. Unit: 1. Table A.1: 0.02.");
+        prm.declare_entry("Gravity", "9.81", dealii::Patterns::Double(),
+                          "Gravitational acceleration g, >= 0, pressing the mass "
+                          "onto the road (the load -M g of Eq. 30). Unit: m/s^2.");
+        prm.declare_entry("Speed", "0.1", dealii::Patterns::Double(),
+                          "Speed V0 at which the oscillator travels over the road, > 0. "
+                          "Unit: m/s. Paper, Section 3: 0.1 m/s.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    OscillatorParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Oscillator");
+      {
+        mass          = prm.get_double("Mass");
+        stiffness     = prm.get_double("Stiffness");
+        damping_ratio = prm.get_double("Damping ratio");
+        gravity       = prm.get_double("Gravity");
+        speed         = prm.get_double("Speed");
+      }
+      prm.leave_subsection();
+      require_parameter(mass > 0. && std::isfinite(mass), "Oscillator/Mass", mass,
+                        "a mass M > 0 kg");
+      require_parameter(stiffness > 0. && std::isfinite(stiffness), "Oscillator/Stiffness",
+                        stiffness, "a stiffness K > 0 N/m");
+      require_parameter(damping_ratio >= 0. && damping_ratio <= 1e3,
+                        "Oscillator/Damping ratio", damping_ratio,
+                        "0 <= xi <= 1000 (xi < 0 would feed energy in)");
+      require_parameter(gravity >= 0. && std::isfinite(gravity), "Oscillator/Gravity",
+                        gravity, "g >= 0 m/s^2");
+      require_parameter(speed > 0. && std::isfinite(speed), "Oscillator/Speed", speed,
+                        "a speed V0 > 0 m/s");
+    }
+
+
+
+    Oscillator::Oscillator(const OscillatorParameters &p)
+      : M(p.mass)
+      , K(p.stiffness)
+      , xi(p.damping_ratio)
+      , g(p.gravity)
+      , C(2. * p.damping_ratio * std::sqrt(p.stiffness * p.mass))
+      , omega0(std::sqrt(p.stiffness / p.mass))
+      , sigma(p.damping_ratio * std::sqrt(p.stiffness / p.mass))
+      , delta(K / M * (1. - p.damping_ratio) * (1. + p.damping_ratio))
+    {}
+
+
+
+    namespace
+    {
+      /// cos(sqrt(mu)) and sin(sqrt(mu))/sqrt(mu) as power series in mu, |mu| < 1.
+      void
+      trigonometric_series(const double mu, double &c, double &s)
+      {
+        c = 0.;
+        s = 0.;
+        double term = 1.; // (-mu)^k / (2k)!
+        for (unsigned int k = 0; k < 14; ++k)
+          {
+            c += term;
+            s += term / double(2 * k + 1);
+            term *= -mu / double((2 * k + 1) * (2 * k + 2));
+          }
+      }
+    } // namespace
+
+
+
+    double
+    Oscillator::damped_cos(const double t) const
+    {
+      const double mu = delta * t * t;
+      if (std::abs(mu) < 1.)
+        {
+          double c, s;
+          trigonometric_series(mu, c, s);
+          return std::exp(-sigma * t) * c;
+        }
+      if (delta > 0.)
+        return std::exp(-sigma * t) * std::cos(std::sqrt(delta) * t);
+      const double beta = std::sqrt(-delta);
+      return 0.5 * (std::exp((beta - sigma) * t) + std::exp(-(beta + sigma) * t));
+    }
+
+
+
+    double
+    Oscillator::damped_sin(const double t) const
+    {
+      const double mu = delta * t * t;
+      if (std::abs(mu) < 1.)
+        {
+          double c, s;
+          trigonometric_series(mu, c, s);
+          return std::exp(-sigma * t) * t * s;
+        }
+      if (delta > 0.)
+        {
+          const double omega_d = std::sqrt(delta);
+          return std::exp(-sigma * t) * std::sin(omega_d * t) / omega_d;
+        }
+      const double beta = std::sqrt(-delta);
+      return (std::exp((beta - sigma) * t) - std::exp(-(beta + sigma) * t)) / (2. * beta);
+    }
+
+
+
+    double
+    Oscillator::green(const double t) const
+    {
+      return t < 0. ? 0. : damped_sin(t) / M;
+    }
+
+
+
+    double
+    Oscillator::green_derivative(const double t) const
+    {
+      return t < 0. ? 0. : (damped_cos(t) - sigma * damped_sin(t)) / M;
+    }
+
+
+
+    std::complex<double>
+    Oscillator::frequency_response(const double omega) const
+    {
+      return 1. / std::complex<double>(K - omega * omega * M, omega * C);
+    }
+
+
+
+    convolution::ModalModel
+    Oscillator::modal_model() const
+    {
+      convolution::ModalModel model;
+      if (std::abs(xi - 1.) <= 1e-8)
+        model.add_double(-sigma, 0., 1. / M);
+      else if (xi < 1.)
+        {
+          const double omega_d = std::sqrt(delta);
+          model.add_pair({-sigma, omega_d}, {0., -1. / (2. * M * omega_d)});
+        }
+      else
+        {
+          // Over-damped: the two roots of M s^2 + C s + K, the smaller one
+          // without cancellation (product of the roots is K/M).
+          const double beta = std::sqrt(-delta);
+          const double fast = -(sigma + beta);
+          const double slow = (K / M) / fast;
+          const double residue = 1. / (M * (slow - fast));
+          model.add_real(slow, residue);
+          model.add_real(fast, -residue);
+        }
+      return model;
+    }
+
+
+
+    void
+    Oscillator::free_motion(const double u0,
+                            const double v0,
+                            const double t,
+                            double      &u,
+                            double      &v) const
+    {
+      const double x0 = u0 - static_deflection();
+      const double c  = damped_cos(t);
+      const double s  = damped_sin(t);
+      u               = static_deflection() + c * x0 + s * (v0 + sigma * x0);
+      v               = c * v0 - s * (omega0 * omega0 * x0 + sigma * v0);
+    }
+  } // namespace sdof
+} // namespace greentread

@@ -1,0 +1,216 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/progress.h>
+#include <greentread/convolution/direct_convolution.h>
+#include <greentread/convolution/modal_paper_convolution.h>
+#include <greentread/convolution/modal_recursive_convolution.h>
+#include <greentread/sdof/sdof_solver.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace greentread
+{
+  namespace sdof
+  {
+    std::unique_ptr<convolution::Convolution>
+    make_convolution(const Oscillator                          &oscillator,
+                     const convolution::ConvolutionParameters &parameters,
+                     const double                              dt,
+                     const unsigned int                        n_steps)
+    {
+      using namespace convolution;
+      switch (parameters.method)
+        {
+          case Method::direct:
+            {
+              const auto g  = [&](double t) { return oscillator.green(t); };
+              const auto dg = [&](double t) { return oscillator.green_derivative(t); };
+              const unsigned int n_g =
+                truncation_length(g, dt, parameters.truncation_threshold, n_steps);
+              const double rate = oscillator.natural_frequency() *
+                                  (oscillator.damping_ratio() + 1.);
+              return std::make_unique<DirectConvolution>(g, dg, dt, n_g, n_steps, rate);
+            }
+          case Method::modal_paper:
+            return std::make_unique<ModalPaperConvolution>(oscillator.modal_model(), dt);
+          case Method::modal_recursive:
+            return std::make_unique<ModalRecursiveConvolution>(oscillator.modal_model(), dt);
+        }
+      return nullptr;
+    }
+
+
+
+    SdofRun
+    solve(const Oscillator                 &oscillator,
+          const road::RoadTrack            &road,
+          convolution::Convolution         &convolution,
+          const contact::ContactParameters &contact,
+          const bool                        show_progress)
+    {
+      using convolution::Response;
+      using convolution::StepLoad;
+
+      const double       dt      = convolution.time_step();
+      const unsigned int n_steps = contact.n_steps();
+      const double       weight  = oscillator.mass() * oscillator.gravity();
+      const auto        &psi     = convolution.influence();
+      // No physical motion of this problem leaves the band of the road's
+      // amplitude, the static deflection and the swing that the road's
+      // fastest motion can launch; a hundred times that band means the time
+      // integration has diverged.
+      double road_speed = 0.;
+      for (unsigned int i = 0; i < 64; ++i)
+        road_speed = std::max(road_speed,
+                              std::abs(road.velocity(i * road.profile.shortest_wavelength() /
+                                                     (64. * road.speed))));
+      const double bound = 100. * (road.profile.amplitude() +
+                                   std::abs(oscillator.static_deflection()) +
+                                   road_speed / oscillator.natural_frequency()) +
+                           1e-9;
+
+      SdofRun run;
+      run.time_step = dt;
+      run.method    = convolution.name();
+      run.size      = convolution.size();
+      for (auto *x : {&run.t, &run.u, &run.v, &run.F})
+        x->resize(n_steps + 1);
+      for (auto *x : {&run.u_start, &run.v_start, &run.v_end})
+        x->resize(n_steps);
+      run.t[0] = 0.;
+      run.u[0] = road.height(0.);
+      run.v[0] = 0.;
+      run.F[0] = 0.;
+
+      const StepLoad   gravity{0., -weight, -weight, 0.};
+      double           penalty_force = 0.; // force at t_n, penalty law
+      base::Progress   progress("sdof time steps", n_steps);
+      const auto       start = std::chrono::steady_clock::now();
+
+      for (unsigned int n = 0; n < n_steps; ++n)
+        {
+          const double   t1      = (n + 1) * dt;
+          const Response history = convolution.history();
+          const double   ur      = road.height(t1);
+          const double   vr      = road.velocity(t1);
+
+          StepLoad known = gravity;
+          StepLoad load;
+          if (contact.law == contact::ContactLaw::kinematic)
+            {
+              const Response predicted{history.u + psi.of(known).u, history.v + psi.of(known).v};
+              contact::KinematicStep step;
+              if (predicted.u <= ur)
+                step = contact::solve_kinematic_step(psi, ur - predicted.u, vr - predicted.v);
+              load = step.load;
+              ++run.branch_count[static_cast<unsigned int>(step.branch)];
+            }
+          else
+            {
+              // Eq. (37): the force at t_{n+1} from the predicted penetration,
+              // linear in time from the force at t_n.
+              known.start += penalty_force;
+              const double predicted = history.u + psi.of(known).u;
+              const double force     = contact.contact_stiffness * std::max(ur - predicted, 0.);
+              load                   = StepLoad{0., penalty_force, force, 0.};
+              penalty_force          = force;
+            }
+
+          StepLoad total = gravity;
+          total += load;
+          convolution.advance(total);
+
+          const Response state = {history.u + psi.of(total).u, history.v + psi.of(total).v};
+          StepLoad       before_end = total;
+          before_end.impulse_end    = 0.;
+          run.u_start[n] = run.u[n] + psi.u[3] * total.impulse_start;
+          run.v_start[n] = run.v[n] + psi.v[3] * total.impulse_start;
+          run.v_end[n]   = history.v + psi.of(before_end).v;
+          run.t[n + 1]   = t1;
+          run.u[n + 1]   = state.u;
+          run.v[n + 1]   = state.v;
+          run.F[n + 1]   = load.impulse(dt) / dt;
+          if (load.impulse(dt) > 0.)
+            ++run.contact_steps;
+
+          if (!std::isfinite(state.u) || !std::isfinite(state.v) ||
+              std::abs(state.u) > bound)
+            {
+              std::string hint;
+              if (contact.law == contact::ContactLaw::penalty)
+                {
+                  const double omega_c = std::sqrt((oscillator.stiffness() + contact.contact_stiffness) /
+                                                   oscillator.mass());
+                  hint = " The penalty contact mode has omega_c dt = sqrt((K + kc)/M) dt = " +
+                         format_number(omega_c * dt) +
+                         "; the explicit penalty of Eq. (37) needs a smaller time step or a "
+                         "smaller 'Contact/Contact stiffness'.";
+                }
+              throw NumericalError("the 1-DoF run diverged at t = " + format_number(t1) +
+                                   " s (step " + std::to_string(n + 1) + "): |u| = " +
+                                   format_number(std::abs(state.u)) + " m exceeds " +
+                                   format_number(bound) +
+                                   " m, a hundred times the largest physical swing." + hint);
+            }
+          if (show_progress)
+            progress.update(n + 1);
+        }
+      run.run_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (show_progress)
+        progress.finish();
+      return run;
+    }
+
+
+
+    SdofErrors
+    compare(const SdofRun &run, const ExactSolution &exact, const road::RoadTrack &road)
+    {
+      SdofErrors         e;
+      const double       dt = run.time_step;
+      const unsigned int N  = static_cast<unsigned int>(run.t.size()) - 1;
+      double             impulse = 0., exact_impulse = 0.;
+      for (unsigned int n = 0; n <= N; ++n)
+        {
+          const double t = run.t[n];
+          e.max_u_error  = std::max(e.max_u_error, std::abs(run.u[n] - exact.displacement(t)));
+          // v[0] = 0 is the initial state, before the impact at t = 0.
+          if (n > 0)
+            e.max_v_error = std::max(e.max_v_error, std::abs(run.v[n] - exact.velocity(t)));
+          e.max_penetration_grid =
+            std::max(e.max_penetration_grid, road.height(t) - run.u[n]);
+          if (n == 0)
+            continue;
+          const double step_impulse = exact.impulse(run.t[n - 1], t);
+          // An impact's impulse is compared through the total impulse; the
+          // force of its step (impulse / dt) says nothing about accuracy.
+          if (!exact.has_impact(run.t[n - 1], t))
+            e.max_force_error =
+              std::max(e.max_force_error, std::abs(run.F[n] - step_impulse / dt));
+          impulse += run.F[n] * dt;
+          exact_impulse += step_impulse;
+
+          // Inside the step: the cubic Hermite interpolant of the numerical
+          // motion, which is smooth between the end impulses.
+          const double u0 = run.u_start[n - 1], v0 = run.v_start[n - 1];
+          const double u1 = run.u[n], v1 = run.v_end[n - 1];
+          for (unsigned int k = 1; k < 10; ++k)
+            {
+              const double s   = k / 10.;
+              const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+              const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+              const double u   = h00 * u0 + h10 * dt * v0 + h01 * u1 + h11 * dt * v1;
+              e.max_penetration_step =
+                std::max(e.max_penetration_step, road.height(run.t[n - 1] + s * dt) - u);
+            }
+        }
+      e.max_penetration_step   = std::max(e.max_penetration_step, e.max_penetration_grid);
+      e.impulse_error          = std::abs(impulse - exact_impulse) / std::max(exact_impulse, 1e-300);
+      e.contact_fraction       = double(run.contact_steps) / N;
+      e.exact_contact_fraction = exact.contact_time() / run.t[N];
+      e.peak_contact_force     = exact.max_contact_force();
+      return e;
+    }
+  } // namespace sdof
+} // namespace greentread
