@@ -109,11 +109,14 @@ namespace greentread
         throw InputError("parameter 'Output directory' is empty: give a directory name");
       const std::filesystem::path path(directory);
       std::error_code             error;
+      if (std::filesystem::exists(path, error) && !std::filesystem::is_directory(path, error))
+        throw InputError("parameter 'Output directory' = " + directory +
+                         " is an existing file, not a directory");
       std::filesystem::create_directories(path, error);
       if (error || !std::filesystem::is_directory(path))
         throw InputError("parameter 'Output directory' = " + directory +
                          " cannot be created: " +
-                         (error ? error.message() : "a file of that name exists"));
+                         (error ? error.message() : "not a directory"));
       // Probe: an empty file written and removed again.
       const auto    probe = path / (".greentread-probe." + std::to_string(::getpid()));
       std::ofstream test(probe);

@@ -32,6 +32,8 @@ namespace greentread
     {
     public:
       /**
+       * @param[in] road The road under the mass; its profile must outlive
+       * this object.
        * @throws NumericalError if more than 10^6 events are found (a Zeno
        * sequence of impacts).
        */
@@ -99,9 +101,11 @@ namespace greentread
         double impulse;
       };
 
-      const Oscillator      &oscillator;
-      const road::RoadTrack &road;
-      double                 end_time;
+      // Copies: small value types (the track refers to its profile, which
+      // must outlive this object).
+      const Oscillator      oscillator;
+      const road::RoadTrack road;
+      double                end_time;
       std::vector<Phase>     phases;
       std::vector<Impact>    impacts;
 
