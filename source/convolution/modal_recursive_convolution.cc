@@ -104,11 +104,27 @@ namespace greentread
     Response
     ModalRecursiveConvolution::history()
     {
-      h_re = alpha_re * s_re - alpha_im * s_im;
-      h_im = alpha_re * s_im + alpha_im * s_re;
+      // One fused pass; the pragma lets the compiler vectorise the sums
+      // (reassociating them), without -ffast-math elsewhere.
+      const Eigen::Index m  = s_re.size();
+      double             u  = 0., v = 0.;
+      const double *ar = alpha_re.data(), *ai = alpha_im.data(), *sr = s_re.data(),
+                   *si = s_im.data(), *ur = cu_re.data(), *ui = cu_im.data(),
+                   *vr = cv_re.data(), *vi = cv_im.data();
+      double *hr = h_re.data(), *hi = h_im.data();
+#pragma omp simd reduction(+ : u, v)
+      for (Eigen::Index k = 0; k < m; ++k)
+        {
+          const double x = ar[k] * sr[k] - ai[k] * si[k];
+          const double y = ar[k] * si[k] + ai[k] * sr[k];
+          hr[k]          = x;
+          hi[k]          = y;
+          u += ur[k] * x - ui[k] * y;
+          v += vr[k] * x - vi[k] * y;
+        }
       Response r;
-      r.u = (cu_re * h_re - cu_im * h_im).sum();
-      r.v = (cv_re * h_re - cv_im * h_im).sum();
+      r.u = u;
+      r.v = v;
       for (auto &d : double_poles)
         {
           d.h0 = d.alpha * d.s0;
@@ -127,15 +143,18 @@ namespace greentread
     {
       if (!history_ready)
         history();
-      s_re = h_re + beta_a_re * load.start + beta_b_re * load.end;
-      s_im = h_im + beta_a_im * load.start + beta_b_im * load.end;
-      if (load.impulse_start != 0.)
+      const Eigen::Index m = s_re.size();
+      const double       a = load.start, b = load.end, p = load.impulse_start;
+      const double      *hr = h_re.data(), *hi = h_im.data(), *bar = beta_a_re.data(),
+                   *bai = beta_a_im.data(), *bbr = beta_b_re.data(), *bbi = beta_b_im.data(),
+                   *ar = alpha_re.data(), *ai = alpha_im.data();
+      double *sr = s_re.data(), *si = s_im.data();
+#pragma omp simd
+      for (Eigen::Index k = 0; k < m; ++k)
         {
-          s_re += alpha_re * load.impulse_start;
-          s_im += alpha_im * load.impulse_start;
+          sr[k] = hr[k] + bar[k] * a + bbr[k] * b + ar[k] * p + load.impulse_end;
+          si[k] = hi[k] + bai[k] * a + bbi[k] * b + ai[k] * p;
         }
-      if (load.impulse_end != 0.)
-        s_re += load.impulse_end;
       for (auto &d : double_poles)
         {
           d.s0 = d.h0 + d.wa0 * load.start + d.wb0 * load.end +

@@ -31,6 +31,17 @@ namespace greentread
 
 
 
+    void
+    Sinusoid::height_and_slope(const double x, double &height_value, double &slope_value) const
+    {
+      double s, c;
+      ::sincos(k * x, &s, &c);
+      height_value = a0 * s;
+      slope_value  = a0 * k * c;
+    }
+
+
+
     double
     Sinusoid::curvature(const double x) const
     {

@@ -59,6 +59,9 @@ namespace greentread
         std::max(1., oscillator.damping_ratio());
       const double period_road = road.profile.shortest_wavelength() / road.speed;
       scan_step                = std::min(period_oscillator, period_road) / 64.;
+      const dealii::QGauss<1> rule(12);
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        gauss.emplace_back(rule.point(q)[0], rule.weight(q));
       gap_tolerance = 64. * std::numeric_limits<double>::epsilon() *
                       (road.profile.amplitude() + std::abs(oscillator.static_deflection()) +
                        road.speed * end_time * 1e-6 + 1e-9);
@@ -236,16 +239,18 @@ namespace greentread
         if ((i.t > t_a || (i.t == 0. && t_a == 0.)) && i.t <= t_b)
           total += i.impulse;
 
-      const dealii::QGauss<1> gauss(12);
-      for (const auto &p : phases)
+      // Only the phases that overlap (t_a, t_b]: binary search for the first.
+      auto first = std::upper_bound(phases.begin(), phases.end(), t_a,
+                                    [](double time, const Phase &p) { return time < p.t_end; });
+      for (auto p = first; p != phases.end() && p->t_begin < t_b; ++p)
         {
-          if (!p.contact)
+          if (!p->contact)
             continue;
-          const double a = std::max(p.t_begin, t_a), b = std::min(p.t_end, t_b);
+          const double a = std::max(p->t_begin, t_a), b = std::min(p->t_end, t_b);
           if (b <= a)
             continue;
-          for (unsigned int q = 0; q < gauss.size(); ++q)
-            total += gauss.weight(q) * (b - a) * force_in_contact(a + gauss.point(q)[0] * (b - a));
+          for (const auto &[x, w] : gauss)
+            total += w * (b - a) * force_in_contact(a + x * (b - a));
         }
       return total;
     }

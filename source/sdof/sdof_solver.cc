@@ -55,6 +55,10 @@ namespace greentread
       const unsigned int n_steps = contact.n_steps();
       const double       weight  = oscillator.mass() * oscillator.gravity();
       const auto        &psi     = convolution.influence();
+      const std::unique_ptr<contact::KinematicContact> kinematic =
+        contact.law == contact::ContactLaw::kinematic ?
+          std::make_unique<contact::KinematicContact>(psi) :
+          nullptr;
       // No physical motion of this problem leaves the band of the road's
       // amplitude, the static deflection and the swing that the road's
       // fastest motion can launch; a hundred times that band means the time
@@ -91,17 +95,18 @@ namespace greentread
         {
           const double   t1      = (n + 1) * dt;
           const Response history = convolution.history();
-          const double   ur      = road.height(t1);
-          const double   vr      = road.velocity(t1);
+          double         ur, vr;
+          road.height_and_velocity(t1, ur, vr);
 
           StepLoad known = gravity;
           StepLoad load;
           if (contact.law == contact::ContactLaw::kinematic)
             {
-              const Response predicted{history.u + psi.of(known).u, history.v + psi.of(known).v};
+              const Response known_response = psi.of(known);
+              const Response predicted{history.u + known_response.u, history.v + known_response.v};
               contact::KinematicStep step;
               if (predicted.u <= ur)
-                step = contact::solve_kinematic_step(psi, ur - predicted.u, vr - predicted.v);
+                step = kinematic->solve(ur - predicted.u, vr - predicted.v);
               load = step.load;
               ++run.branch_count[static_cast<unsigned int>(step.branch)];
             }
@@ -120,7 +125,8 @@ namespace greentread
           total += load;
           convolution.advance(total);
 
-          const Response state = {history.u + psi.of(total).u, history.v + psi.of(total).v};
+          const Response total_response = psi.of(total);
+          const Response state = {history.u + total_response.u, history.v + total_response.v};
           StepLoad       before_end = total;
           before_end.impulse_end    = 0.;
           run.u_start[n] = run.u[n] + psi.u[3] * total.impulse_start;
@@ -211,6 +217,28 @@ namespace greentread
       e.exact_contact_fraction = exact.contact_time() / run.t[N];
       e.peak_contact_force     = exact.max_contact_force();
       return e;
+    }
+
+
+
+    SdofOutcome
+    simulate(const OscillatorParameters                &oscillator_parameters,
+             const road::RoadProfile                   &road,
+             const contact::ContactParameters          &contact,
+             const convolution::ConvolutionParameters &convolution,
+             const bool                                show_progress)
+    {
+      const Oscillator      oscillator(oscillator_parameters);
+      const road::RoadTrack track{road, oscillator_parameters.speed, 0.};
+      auto conv = make_convolution(oscillator, convolution, contact.time_step, contact.n_steps());
+      SdofOutcome outcome;
+      outcome.run = solve(oscillator, track, *conv, contact, show_progress);
+      const ExactSolution exact(oscillator, track, contact.n_steps() * contact.time_step);
+      outcome.errors        = compare(outcome.run, exact, track);
+      outcome.exact_impacts = exact.n_impacts();
+      for (const double u : outcome.run.u)
+        outcome.max_abs_u = std::max(outcome.max_abs_u, std::abs(u));
+      return outcome;
     }
   } // namespace sdof
 } // namespace greentread

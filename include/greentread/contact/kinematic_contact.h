@@ -63,15 +63,38 @@ namespace greentread
     };
 
     /**
-     * @brief The contact load of one step.
-     *
-     * @param[in] psi Influence of the step's loads at \f$t_{n+1}\f$.
-     * @param[in] du  \f$u^r - u^h\f$: what the load must add to u.
-     * @param[in] dv  \f$v^r - v^h\f$: what it must add to v.
-     * @return The non-negative load and the branch that produced it.
-     * @throws NumericalError if not even the fallback can raise u (time step
-     * longer than half a period of the structure).
+     * @brief The rule for one point, with the three 2x2 systems inverted once:
+     * the influence is the same at every step of a run.
      */
+    class KinematicContact
+    {
+    public:
+      explicit KinematicContact(const convolution::Influence &psi);
+
+      /**
+       * @brief The contact load of one step.
+       *
+       * @param[in] du \f$u^r - u^h\f$: what the load must add to u.
+       * @param[in] dv \f$v^r - v^h\f$: what it must add to v.
+       * @return The non-negative load and the branch that produced it.
+       * @throws NumericalError if not even the fallback can raise u (time
+       * step longer than half a period of the structure).
+       */
+      KinematicStep
+      solve(double du, double dv) const;
+
+    private:
+      struct Pair
+      {
+        unsigned int i, j;
+        bool         regular;
+        double       inverse[2][2]; // of [[u_i, u_j], [v_i, v_j]]
+      };
+      Pair   pairs[3];
+      double fallback_weight; // 1 / u-influence of the start impulse
+    };
+
+    /// One step of the rule with a given influence (builds a KinematicContact).
     KinematicStep
     solve_kinematic_step(const convolution::Influence &psi, double du, double dv);
   } // namespace contact

@@ -31,6 +31,14 @@ namespace greentread
       virtual double
       slope(double x) const = 0;
 
+      /// Height and slope at once (one call per time step in the solvers).
+      virtual void
+      height_and_slope(double x, double &height_value, double &slope_value) const
+      {
+        height_value = height(x);
+        slope_value  = slope(x);
+      }
+
       /// \f$d^2 u^r / dx^2\f$ [1/m].
       virtual double
       curvature(double x) const = 0;
@@ -61,6 +69,8 @@ namespace greentread
       height(double x) const override;
       double
       slope(double x) const override;
+      void
+      height_and_slope(double x, double &height_value, double &slope_value) const override;
       double
       curvature(double x) const override;
       double
@@ -104,6 +114,14 @@ namespace greentread
       acceleration(double t) const
       {
         return speed * speed * profile.curvature(x0 + speed * t);
+      }
+      /// Height and vertical velocity at t, in one evaluation.
+      void
+      height_and_velocity(double t, double &height_value, double &velocity_value) const
+      {
+        double slope_value;
+        profile.height_and_slope(x0 + speed * t, height_value, slope_value);
+        velocity_value = speed * slope_value;
       }
       double
       jerk(double t) const

@@ -125,6 +125,8 @@ namespace greentread
 
       double scan_step;
       double gap_tolerance;
+      /// 12-point Gauss-Legendre on [0,1] for the contact impulse.
+      std::vector<std::pair<double, double>> gauss;
     };
   } // namespace sdof
 } // namespace greentread

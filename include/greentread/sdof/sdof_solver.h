@@ -97,5 +97,29 @@ namespace greentread
      */
     SdofErrors
     compare(const SdofRun &run, const ExactSolution &exact, const road::RoadTrack &road);
+
+    /**
+     * @brief A run and its errors: what a test or a benchmark needs.
+     */
+    struct SdofOutcome
+    {
+      SdofRun      run;
+      SdofErrors   errors;
+      unsigned int exact_impacts = 0;
+      /// max_n |u_n| [m]
+      double max_abs_u = 0.;
+    };
+
+    /**
+     * @brief Build the oscillator, the road track and the convolution, run,
+     * and compare with the exact solution (the scene's pipeline without its
+     * files).
+     */
+    SdofOutcome
+    simulate(const OscillatorParameters                &oscillator,
+             const road::RoadProfile                   &road,
+             const contact::ContactParameters          &contact,
+             const convolution::ConvolutionParameters &convolution,
+             bool                                      show_progress = false);
   } // namespace sdof
 } // namespace greentread

@@ -1,0 +1,41 @@
+#pragma once
+
+// Command line shared by the benchmarks: --quick (a smoke run with small
+// sizes) and --output DIR (where CSV and PNG files go).
+
+#include <greentread/base/output.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+namespace benchmark
+{
+  struct Options
+  {
+    bool                  quick = false;
+    std::filesystem::path output;
+  };
+
+  inline Options
+  parse(int argc, char **argv, const std::string &name)
+  {
+    Options options;
+    options.output = "benchmark-output/" + name;
+    for (int i = 1; i < argc; ++i)
+      if (std::strcmp(argv[i], "--quick") == 0)
+        options.quick = true;
+      else if (std::strcmp(argv[i], "--output") == 0 && i + 1 < argc)
+        options.output = argv[++i];
+      else
+        {
+          std::cerr << "usage: " << name << " [--quick] [--output DIR]\n";
+          std::exit(2);
+        }
+    options.output = greentread::base::prepare_output_directory(options.output.string());
+    return options;
+  }
+} // namespace benchmark
