@@ -21,6 +21,16 @@ namespace greentread
 
 
 
+  std::string
+  format_short(const double value)
+  {
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), "%.4g", value);
+    return buffer;
+  }
+
+
+
   void
   require_parameter(const bool         condition,
                     const std::string &path,
@@ -40,6 +50,6 @@ namespace greentread
   {
     if (!condition)
       throw InputError("parameter '" + path + "' = " + value +
-                       " is not allowed: " + allowed);
+                       " is not allowed; allowed: " + allowed);
   }
 } // namespace greentread

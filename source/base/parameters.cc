@@ -5,6 +5,8 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
@@ -119,8 +121,11 @@ namespace greentread
         const std::regex line_regex("Line <([0-9]+)>");
         if (std::regex_search(info, m, line_regex))
           line = std::stoul(m[1]);
+        // A --set override is one line of generated text: its line number
+        // means nothing to the user.
+        const bool        is_file = source.rfind("--set", 0) != 0;
         const std::string where =
-          source + (line > 0 ? ", line " + std::to_string(line) : "");
+          source + (line > 0 && is_file ? ", line " + std::to_string(line) : "");
         const std::string section = line > 0 ? subsection_at_line(text, line) : "";
 
         const std::regex undeclared("No entry with name <(.*)> was declared");
@@ -171,6 +176,95 @@ namespace greentread
           }
       }
     } // namespace
+
+
+
+    RangePattern::RangePattern(const double lower_,
+                               const Bound  lower_kind_,
+                               const double upper_,
+                               const Bound  upper_kind_,
+                               std::string  unit_)
+      : lower(lower_)
+      , upper(upper_)
+      , lower_kind(lower_kind_)
+      , upper_kind(upper_kind_)
+      , unit(std::move(unit_))
+    {}
+
+
+
+    RangePattern
+    RangePattern::positive(const std::string &unit)
+    {
+      return {0., Bound::exclusive, 0., Bound::none, unit};
+    }
+
+
+
+    RangePattern
+    RangePattern::non_negative(const std::string &unit)
+    {
+      return {0., Bound::inclusive, 0., Bound::none, unit};
+    }
+
+
+
+    RangePattern
+    RangePattern::closed(const double lower, const double upper, const std::string &unit)
+    {
+      return {lower, Bound::inclusive, upper, Bound::inclusive, unit};
+    }
+
+
+
+    bool
+    RangePattern::match(const std::string &test_string) const
+    {
+      const std::string text = trim(test_string);
+      if (text.empty())
+        return false;
+      char        *end   = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || trim(end) != "" || !std::isfinite(value))
+        return false;
+      if ((lower_kind == Bound::inclusive && !(value >= lower)) ||
+          (lower_kind == Bound::exclusive && !(value > lower)))
+        return false;
+      if ((upper_kind == Bound::inclusive && !(value <= upper)) ||
+          (upper_kind == Bound::exclusive && !(value < upper)))
+        return false;
+      return true;
+    }
+
+
+
+    std::string
+    RangePattern::description(const OutputStyle) const
+    {
+      std::string range;
+      const auto  number = [](double x) { return format_number(x); };
+      if (lower_kind != Bound::none && upper_kind != Bound::none)
+        range = std::string(lower_kind == Bound::inclusive ? "[" : "(") + number(lower) + ", " +
+                number(upper) + (upper_kind == Bound::inclusive ? "]" : ")");
+      else if (lower_kind != Bound::none)
+        range = std::string(lower_kind == Bound::inclusive ? ">= " : "> ") + number(lower);
+      else if (upper_kind != Bound::none)
+        range = std::string(upper_kind == Bound::inclusive ? "<= " : "< ") + number(upper);
+      std::string d = "[a finite number";
+      if (!range.empty())
+        d += (range[0] == '[' || range[0] == '(' ? " in " : " ") + range;
+      if (!unit.empty())
+        d += ", in " + unit;
+      return d + "]";
+    }
+
+
+
+    std::unique_ptr<dealii::Patterns::PatternBase>
+    RangePattern::clone() const
+    {
+      return std::make_unique<RangePattern>(*this);
+    }
 
 
 

@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/contact/contact_parameters.h>
 
 #include <cmath>
@@ -26,19 +27,19 @@ namespace greentread
           "displacement and velocity matched; impacts by the impulse-completion rule "
           "(README). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted position "
           "penetrates the road.");
-        prm.declare_entry("Contact stiffness", "1e7", dealii::Patterns::Double(),
-                          "Penalty stiffness kc, > 0 (Law = penalty only). Unit: N/m. "
+        prm.declare_entry("Contact stiffness", "1e7", base::RangePattern::positive("N/m"),
+                          "Penalty stiffness kc (Law = penalty only). Unit: N/m. "
                           "Paper: 1e6, 1e7 and 1e8 N/m in Figures A.2-A.4.");
       }
       prm.leave_subsection();
 
       prm.enter_subsection("Time stepping");
       {
-        prm.declare_entry("Time step", "1e-5", dealii::Patterns::Double(),
-                          "Time step dt, > 0. Unit: s. Table A.2 uses 1e-4 and 1e-5 s.");
-        prm.declare_entry("End time", "0.2", dealii::Patterns::Double(),
-                          "Duration of the run, >= dt. Unit: s. 0.2 s is two road periods "
-                          "of Section 3.");
+        prm.declare_entry("Time step", "1e-5", base::RangePattern::positive("s"),
+                          "Time step dt. Unit: s. Table A.2 uses 1e-4 and 1e-5 s.");
+        prm.declare_entry("End time", "0.2", base::RangePattern::positive("s"),
+                          "Duration of the run, at least one time step and at most 2e8 of "
+                          "them. Unit: s. 0.2 s is two road periods of Section 3.");
       }
       prm.leave_subsection();
     }
@@ -61,13 +62,9 @@ namespace greentread
       }
       prm.leave_subsection();
 
-      require_parameter(contact_stiffness > 0. && std::isfinite(contact_stiffness),
-                        "Contact/Contact stiffness", contact_stiffness, "kc > 0 N/m");
-      require_parameter(time_step > 0. && std::isfinite(time_step), "Time stepping/Time step",
-                        time_step, "dt > 0 s");
       require_parameter(end_time >= time_step && std::isfinite(end_time),
                         "Time stepping/End time", end_time,
-                        "an end time >= the time step (" + format_number(time_step) + " s)");
+                        "an end time >= the time step, " + format_number(time_step) + " s");
       require_parameter(end_time / time_step <= 2e8, "Time stepping/End time", end_time,
                         "at most 2e8 time steps (dt = " + format_number(time_step) + " s)");
     }

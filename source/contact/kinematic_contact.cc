@@ -87,7 +87,7 @@ namespace greentread
       if (!(psi.u[0] > 0.))
         throw NumericalError(
           "kinematic contact: an impulse at the start of the step does not raise the "
-          "displacement at its end (g(dt) = " + format_number(psi.u[0]) +
+          "displacement at its end (g(dt) = " + format_short(psi.u[0]) +
           " <= 0): the time step is longer than half a period of the structure; reduce "
           "'Time stepping/Time step'");
       fallback_weight = 1. / psi.u[0];

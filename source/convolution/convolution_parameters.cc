@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 
 namespace greentread
@@ -36,7 +37,7 @@ namespace greentread
           "'modal-recursive': one decaying state per pole with exact weights for a load "
           "linear over the step; exact for any run length.");
         prm.declare_entry(
-          "Truncation threshold", "0.01", dealii::Patterns::Double(0., 1.),
+          "Truncation threshold", "0.01", base::RangePattern::closed(0., 1., ""),
           "Direct method only: the Green's function is cut after N_g steps, where its "
           "amplitude stays below this fraction of its maximum (the paper's rule: 0.01). "
           "0 keeps the whole run. Unit: 1.");

@@ -106,16 +106,16 @@ namespace greentread
 
       if (!(growth < limit_growth) )
         throw NumericalError(
-          "modal-paper convolution (Eqs. 12-15) overflowed at t = " + format_number(n * dt) +
+          "modal-paper convolution (Eqs. 12-15) overflowed at t = " + format_short(n * dt) +
           " s (step " + std::to_string(n) + "): its growing factor exp(xi*omega*t) reached " +
-          format_number(growth) + ", past 1/epsilon, so no significant digit of u is left, and it "
+          format_short(growth) + ", past 1/epsilon, so no significant digit of u is left, and it "
           "becomes inf at exp(709). Use 'set Method = modal-recursive' in subsection Convolution, "
           "which is exact for any run length and damping.");
       if (growth > warning_growth && !warned)
         {
           warned = true;
           std::cerr << "warning: modal-paper convolution: exp(xi*omega*t) = "
-                    << format_number(growth) << " at t = " << format_number(n * dt)
+                    << format_short(growth) << " at t = " << format_short(n * dt)
                     << " s; about " << int(std::log10(growth))
                     << " of 16 significant digits of u are lost to round-off\n";
         }

@@ -15,7 +15,7 @@ namespace greentread
     {
       if (model.max_real_part() > 0.)
         throw NumericalError("modal-recursive convolution: the modal model has an unstable pole "
-                             "(Re(lambda) = " + format_number(model.max_real_part()) +
+                             "(Re(lambda) = " + format_short(model.max_real_part()) +
                              " > 0); only stable poles can be convolved");
 
       std::vector<const ModalTerm *> simple;

@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/road/road_profile.h>
 
 #include <cmath>
@@ -68,11 +69,11 @@ namespace greentread
                           "u_r(x) = A0 sin(2 pi x / lambda_r), Eq. (29).");
         prm.enter_subsection("Sinusoid");
         {
-          prm.declare_entry("Amplitude", "0.005", dealii::Patterns::Double(0.),
+          prm.declare_entry("Amplitude", "0.005", base::RangePattern::non_negative("m"),
                             "Amplitude A0 of the sinusoidal road. Unit: m. "
                             "Paper, Section 3: 5 mm.");
-          prm.declare_entry("Wavelength", "0.01", dealii::Patterns::Double(0.),
-                            "Wavelength lambda_r of the sinusoidal road, > 0. Unit: m. "
+          prm.declare_entry("Wavelength", "0.01", base::RangePattern::positive("m"),
+                            "Wavelength lambda_r of the sinusoidal road. Unit: m. "
                             "Paper, Section 3: 10 mm.");
         }
         prm.leave_subsection();
@@ -96,8 +97,6 @@ namespace greentread
         prm.leave_subsection();
       }
       prm.leave_subsection();
-      require_parameter(wavelength > 0., "Road/Sinusoid/Wavelength", wavelength,
-                        "a wavelength > 0 m");
     }
 
 

@@ -72,7 +72,7 @@ namespace greentread
         {
           if (phases.size() > 1000000)
             throw NumericalError("exact 1-DoF solution: more than 10^6 contact events before t = " +
-                                 format_number(t) + " s (a Zeno sequence of impacts?)");
+                                 format_short(t) + " s (a Zeno sequence of impacts?)");
 
           // On the road: a plastic impact if the road moves up faster.
           const bool on_road = std::abs(u - road.height(t)) <= gap_tolerance;

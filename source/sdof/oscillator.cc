@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/sdof/oscillator.h>
 
 #include <cmath>
@@ -12,18 +13,19 @@ namespace greentread
     {
       prm.enter_subsection("Oscillator");
       {
-        prm.declare_entry("Mass", "1", dealii::Patterns::Double(),
-                          "Mass M, > 0. Unit: kg. Table A.1: 1 kg.");
-        prm.declare_entry("Stiffness", "4e5", dealii::Patterns::Double(),
-                          "Spring stiffness K, > 0. Unit: N/m. Table A.1: 4e5 N/m.");
-        prm.declare_entry("Damping ratio", "0.02", dealii::Patterns::Double(),
-                          "Viscous damping ratio xi = C / (2 sqrt(K M)), >= 0. "
-                          "Values >= 1 give real poles. Unit: 1. Table A.1: 0.02.");
-        prm.declare_entry("Gravity", "9.81", dealii::Patterns::Double(),
-                          "Gravitational acceleration g, >= 0, pressing the mass "
-                          "onto the road (the load -M g of Eq. 30). Unit: m/s^2.");
-        prm.declare_entry("Speed", "0.1", dealii::Patterns::Double(),
-                          "Speed V0 at which the oscillator travels over the road, > 0. "
+        using base::RangePattern;
+        prm.declare_entry("Mass", "1", RangePattern::positive("kg"),
+                          "Mass M. Unit: kg. Table A.1: 1 kg.");
+        prm.declare_entry("Stiffness", "4e5", RangePattern::positive("N/m"),
+                          "Spring stiffness K. Unit: N/m. Table A.1: 4e5 N/m.");
+        prm.declare_entry("Damping ratio", "0.02", RangePattern::closed(0., 1000., ""),
+                          "Viscous damping ratio xi = C / (2 sqrt(K M)); xi < 0 would feed "
+                          "energy in. Values >= 1 give real poles. Unit: 1. Table A.1: 0.02.");
+        prm.declare_entry("Gravity", "9.81", RangePattern::non_negative("m/s^2"),
+                          "Gravitational acceleration g pressing the mass onto the road "
+                          "(the load -M g of Eq. 30). Unit: m/s^2.");
+        prm.declare_entry("Speed", "0.1", RangePattern::positive("m/s"),
+                          "Speed V0 at which the oscillator travels over the road. "
                           "Unit: m/s. Paper, Section 3: 0.1 m/s.");
       }
       prm.leave_subsection();
@@ -43,17 +45,6 @@ namespace greentread
         speed         = prm.get_double("Speed");
       }
       prm.leave_subsection();
-      require_parameter(mass > 0. && std::isfinite(mass), "Oscillator/Mass", mass,
-                        "a mass M > 0 kg");
-      require_parameter(stiffness > 0. && std::isfinite(stiffness), "Oscillator/Stiffness",
-                        stiffness, "a stiffness K > 0 N/m");
-      require_parameter(damping_ratio >= 0. && damping_ratio <= 1e3,
-                        "Oscillator/Damping ratio", damping_ratio,
-                        "0 <= xi <= 1000 (xi < 0 would feed energy in)");
-      require_parameter(gravity >= 0. && std::isfinite(gravity), "Oscillator/Gravity",
-                        gravity, "g >= 0 m/s^2");
-      require_parameter(speed > 0. && std::isfinite(speed), "Oscillator/Speed", speed,
-                        "a speed V0 > 0 m/s");
     }
 
 

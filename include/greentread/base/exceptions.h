@@ -44,6 +44,12 @@ namespace greentread
   format_number(double value);
 
   /**
+   * @brief Format a computed quantity for a message: 4 significant digits.
+   */
+  std::string
+  format_short(double value);
+
+  /**
    * @brief Throw an InputError naming a parameter unless @p condition holds.
    *
    * @param[in] condition What must be true of the value.

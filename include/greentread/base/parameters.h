@@ -22,6 +22,55 @@ namespace greentread
   namespace base
   {
     /**
+     * @brief A finite real number in a range whose ends may be open, closed
+     * or absent, with its unit: "[a number > 0, in kg]".
+     *
+     * deal.II's Patterns::Double has closed bounds only, so a mass "> 0"
+     * would be listed as [0, MAX_DOUBLE]; this pattern lets
+     * --print-parameters and the parse errors state the true range.
+     */
+    class RangePattern : public dealii::Patterns::PatternBase
+    {
+    public:
+      enum class Bound
+      {
+        none,
+        inclusive,
+        exclusive
+      };
+
+      RangePattern(double      lower,
+                   Bound       lower_kind,
+                   double      upper,
+                   Bound       upper_kind,
+                   std::string unit);
+
+      /// x > 0
+      static RangePattern
+      positive(const std::string &unit);
+      /// x >= 0
+      static RangePattern
+      non_negative(const std::string &unit);
+      /// lower <= x <= upper
+      static RangePattern
+      closed(double lower, double upper, const std::string &unit);
+
+      bool
+      match(const std::string &test_string) const override;
+
+      std::string
+      description(OutputStyle style = Machine) const override;
+
+      std::unique_ptr<dealii::Patterns::PatternBase>
+      clone() const override;
+
+    private:
+      double      lower, upper;
+      Bound       lower_kind, upper_kind;
+      std::string unit;
+    };
+
+    /**
      * @brief One parameter as it stands after parsing.
      */
     struct ParameterEntry

@@ -81,9 +81,10 @@ namespace greentread
      * @brief Run the contact problem: gravity and contact load convolved with
      * g, from u(0) = u_r(0), v(0) = 0.
      *
-     * @throws NumericalError if the run diverges (|u| beyond a hundred times
-     * the largest physical swing: road amplitude + static deflection + peak
-     * road speed / omega_0) or produces a non-finite value.
+     * @throws NumericalError if the run diverges (|u| beyond ten times the
+     * largest physical swing: road amplitude + static deflection + peak road
+     * speed / omega_0) or produces a non-finite value. Warns on standard
+     * error when a penalty run has omega_c dt > 1.
      */
     SdofRun
     solve(const Oscillator                    &oscillator,
