@@ -188,14 +188,23 @@ namespace greentread
 
 
 
-    double
-    ExactSolution::displacement(const double t) const
+    void
+    ExactSolution::state(const double t, double &u, double &v) const
     {
       const Phase &p = phase_at(t);
       if (p.contact)
-        return road.height(t);
+        road.height_and_velocity(t, u, v);
+      else
+        oscillator.free_motion(p.u0, p.v0, t - p.t_begin, u, v);
+    }
+
+
+
+    double
+    ExactSolution::displacement(const double t) const
+    {
       double u, v;
-      oscillator.free_motion(p.u0, p.v0, t - p.t_begin, u, v);
+      state(t, u, v);
       return u;
     }
 
@@ -204,11 +213,8 @@ namespace greentread
     double
     ExactSolution::velocity(const double t) const
     {
-      const Phase &p = phase_at(t);
-      if (p.contact)
-        return road.velocity(t);
       double u, v;
-      oscillator.free_motion(p.u0, p.v0, t - p.t_begin, u, v);
+      state(t, u, v);
       return v;
     }
 

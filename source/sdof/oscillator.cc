@@ -82,20 +82,43 @@ namespace greentread
 
 
 
+    void
+    Oscillator::damped_functions(const double t, double &c, double &s) const
+    {
+      const double decay = std::exp(-sigma * t);
+      const double mu    = delta * t * t;
+      if (std::abs(mu) < 1.)
+        {
+          trigonometric_series(mu, c, s);
+          c *= decay;
+          s *= decay * t;
+        }
+      else if (delta > 0.)
+        {
+          const double omega_d = std::sqrt(delta);
+          c                    = decay * std::cos(omega_d * t);
+          s                    = decay * std::sin(omega_d * t) / omega_d;
+        }
+      else
+        {
+          // e^{-sigma t} cosh(beta t) and sinh: the exponentials folded
+          // together so that neither overflows (beta < sigma), and no
+          // cancellation since beta t >= 1 here.
+          const double beta = std::sqrt(-delta);
+          const double grow = std::exp((beta - sigma) * t), fall = std::exp(-(beta + sigma) * t);
+          c                 = 0.5 * (grow + fall);
+          s                 = (grow - fall) / (2. * beta);
+        }
+    }
+
+
+
     double
     Oscillator::damped_cos(const double t) const
     {
-      const double mu = delta * t * t;
-      if (std::abs(mu) < 1.)
-        {
-          double c, s;
-          trigonometric_series(mu, c, s);
-          return std::exp(-sigma * t) * c;
-        }
-      if (delta > 0.)
-        return std::exp(-sigma * t) * std::cos(std::sqrt(delta) * t);
-      const double beta = std::sqrt(-delta);
-      return 0.5 * (std::exp((beta - sigma) * t) + std::exp(-(beta + sigma) * t));
+      double c, s;
+      damped_functions(t, c, s);
+      return c;
     }
 
 
@@ -103,20 +126,9 @@ namespace greentread
     double
     Oscillator::damped_sin(const double t) const
     {
-      const double mu = delta * t * t;
-      if (std::abs(mu) < 1.)
-        {
-          double c, s;
-          trigonometric_series(mu, c, s);
-          return std::exp(-sigma * t) * t * s;
-        }
-      if (delta > 0.)
-        {
-          const double omega_d = std::sqrt(delta);
-          return std::exp(-sigma * t) * std::sin(omega_d * t) / omega_d;
-        }
-      const double beta = std::sqrt(-delta);
-      return (std::exp((beta - sigma) * t) - std::exp(-(beta + sigma) * t)) / (2. * beta);
+      double c, s;
+      damped_functions(t, c, s);
+      return s;
     }
 
 
@@ -132,7 +144,11 @@ namespace greentread
     double
     Oscillator::green_derivative(const double t) const
     {
-      return t < 0. ? 0. : (damped_cos(t) - sigma * damped_sin(t)) / M;
+      if (t < 0.)
+        return 0.;
+      double c, s;
+      damped_functions(t, c, s);
+      return (c - sigma * s) / M;
     }
 
 
@@ -180,8 +196,8 @@ namespace greentread
                             double      &v) const
     {
       const double x0 = u0 - static_deflection();
-      const double c  = damped_cos(t);
-      const double s  = damped_sin(t);
+      double       c, s;
+      damped_functions(t, c, s);
       u               = static_deflection() + c * x0 + s * (v0 + sigma * x0);
       v               = c * v0 - s * (omega0 * omega0 * x0 + sigma * v0);
     }

@@ -41,6 +41,10 @@ namespace greentread
                     const road::RoadTrack &road,
                     double                 end_time);
 
+      /// u(t) [m] and v(t) [m/s] (just after any impact at t).
+      void
+      state(double t, double &u, double &v) const;
+
       /// u(t) [m].
       double
       displacement(double t) const;

@@ -86,6 +86,10 @@ namespace greentread
         return -g / (omega0 * omega0);
       }
 
+      /// Both damped functions below in one evaluation.
+      void
+      damped_functions(double t, double &damped_cos_value, double &damped_sin_value) const;
+
       /// \f$e^{-\sigma t}\cos(\omega_d t)\f$ and its analytic continuations.
       double
       damped_cos(double t) const;
