@@ -74,6 +74,12 @@ namespace greentread
                                    road_speed / oscillator.natural_frequency()) +
                            1e-9;
 
+      // The convolution starts from rest at u = 0, which is Eq. (33),
+      // u(0) = u_r(0), only for a road that starts at height 0.
+      if (std::abs(road.height(0.)) > 1e-12 * std::max(road.profile.amplitude(), 1e-300))
+        throw InputError("the 1-DoF scene starts from rest at u(0) = u_r(0) = 0, but the road "
+                         "starts at height " + format_short(road.height(0.)) + " m");
+
       SdofRun run;
       run.time_step = dt;
       run.method    = convolution.name();
