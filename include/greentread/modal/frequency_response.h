@@ -1,0 +1,112 @@
+#pragma once
+
+#include <greentread/base/output.h>
+#include <greentread/convolution/modal_model.h>
+
+#include <array>
+#include <complex>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * Frequency responses (FRFs) on a uniform grid from 0 Hz, in the convention
+ * of Eq. (3): \f$\hat g(\omega) = (K + j\omega C - \omega^2 M)^{-1}\f$, i.e.
+ * \f$\hat g(\omega) = \int_0^\infty g(t) e^{-j\omega t} dt\f$.
+ */
+
+namespace greentread
+{
+  namespace modal
+  {
+    /**
+     * @brief One FRF: values at \f$f_k = k\,\Delta f\f$, k = 0 .. n-1.
+     */
+    struct FrequencyResponse
+    {
+      /// Line spacing \f$\Delta f\f$ [Hz].
+      double df = 0.;
+      /// \f$\hat g(f_k)\f$ [m/N].
+      std::vector<std::complex<double>> values;
+
+      /// The last line [Hz].
+      double
+      f_max() const
+      {
+        return df * (values.size() - 1);
+      }
+    };
+
+    /**
+     * @brief Read an FRF from a CSV file with the header `f,re,im` (f in Hz).
+     *
+     * Lines starting with '#' are comments. The grid must start at 0 Hz and
+     * be uniform (to a relative 1e-6 of the spacing); every value must be a
+     * finite number.
+     * @throws InputError naming the file, the line and what is wrong.
+     */
+    FrequencyResponse
+    read_frf_csv(const std::string &file);
+
+    /**
+     * @brief Write an FRF as `f,re,im` (atomically, with the parameter record).
+     */
+    void
+    write_frf_csv(const std::filesystem::path  &file,
+                  const FrequencyResponse      &frf,
+                  const base::ParameterRecord &record);
+
+    /**
+     * @brief The FRF of a modal model on the grid \f$k\,\Delta f\f$,
+     * k = 0 .. n_lines-1.
+     */
+    FrequencyResponse
+    sample(const convolution::ModalModel &model, double df, unsigned int n_lines);
+
+    /**
+     * @brief Many FRFs g_ij(f) between points: the contents of a Green's
+     * function file (see read_green_hdf5()).
+     */
+    struct FrequencyResponseMatrix
+    {
+      double df = 0.;
+      /// Point coordinates [m], one row per point.
+      std::vector<std::array<double, 3>> points;
+      /// g(f_k, i, j) at index (k * n + i) * n + j, n = points.size() [m/N].
+      std::vector<std::complex<double>> values;
+      unsigned int                      n_lines = 0;
+
+      unsigned int
+      n_points() const
+      {
+        return static_cast<unsigned int>(points.size());
+      }
+
+      /// The FRF g_ij.
+      FrequencyResponse
+      get(unsigned int i, unsigned int j) const;
+    };
+
+    /**
+     * @brief Read a Green's function file, an HDF5 file with the layout
+     * - `/frequency`: double[n_f], the lines in Hz, uniform from 0;
+     * - `/points`: double[n_p][3], the contact points in m;
+     * - `/green`: complex double[n_f][n_p][n_p], g(f, i, j) in m/N: the
+     *   displacement at point i for a unit force at point j, complex numbers
+     *   stored as the compound {r, i} that h5py and deal.II read as complex.
+     * @throws InputError naming the file and the dataset.
+     */
+    FrequencyResponseMatrix
+    read_green_hdf5(const std::string &file);
+
+    /**
+     * @brief Write a Green's function file in the layout of read_green_hdf5(),
+     * under a temporary name renamed when complete.
+     */
+    void
+    write_green_hdf5(const std::filesystem::path  &file,
+                     const FrequencyResponseMatrix &green,
+                     const base::ParameterRecord  &record);
+  } // namespace modal
+} // namespace greentread

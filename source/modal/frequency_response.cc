@@ -1,0 +1,289 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/modal/frequency_response.h>
+
+#include <deal.II/base/hdf5.h>
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace greentread
+{
+  namespace modal
+  {
+    namespace
+    {
+      std::string
+      trim(const std::string &s)
+      {
+        const auto begin = s.find_first_not_of(" \t\r\n");
+        if (begin == std::string::npos)
+          return "";
+        return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
+      }
+
+
+
+      /// Check a grid of line frequencies: from 0, uniform. Returns df.
+      double
+      check_grid(const std::vector<double> &f, const std::string &where)
+      {
+        if (f.size() < 2)
+          throw InputError(where + ": an FRF needs at least 2 frequency lines, it has " +
+                           std::to_string(f.size()));
+        const double df = (f.back() - f.front()) / (f.size() - 1);
+        if (!(df > 0.))
+          throw InputError(where + ": the frequencies must increase; they go from " +
+                           format_number(f.front()) + " to " + format_number(f.back()) + " Hz");
+        if (std::abs(f.front()) > 1e-6 * df)
+          throw InputError(where + ": the frequency grid must start at 0 Hz (it starts at " +
+                           format_number(f.front()) + " Hz): LSCE extends the FRF to negative "
+                           "frequencies by symmetry and needs the whole band from 0");
+        for (std::size_t k = 0; k < f.size(); ++k)
+          if (std::abs(f[k] - k * df) > 1e-6 * df)
+            throw InputError(where + ": the frequency grid is not uniform: line " +
+                             std::to_string(k) + " is at " + format_number(f[k]) +
+                             " Hz, expected " + format_number(k * df) + " Hz (spacing " +
+                             format_number(df) + " Hz); resample it on a uniform grid");
+        return df;
+      }
+    } // namespace
+
+
+
+    FrequencyResponse
+    read_frf_csv(const std::string &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError("FRF file '" + file + "' cannot be opened: it does not exist or is not "
+                         "readable");
+      std::string         line;
+      unsigned int        number = 0;
+      bool                header = false;
+      std::vector<double> f;
+      FrequencyResponse   frf;
+      while (std::getline(in, line))
+        {
+          ++number;
+          const std::string text = trim(line);
+          if (text.empty() || text[0] == '#')
+            continue;
+          const std::string where = "FRF file '" + file + "', line " + std::to_string(number);
+          if (!header)
+            {
+              std::string compact;
+              for (const char c : text)
+                if (c != ' ')
+                  compact += c;
+              if (compact != "f,re,im")
+                throw InputError(where + ": expected the header 'f,re,im', found '" + text + "'");
+              header = true;
+              continue;
+            }
+          double       x[3];
+          const char  *p = text.c_str();
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              char *end = nullptr;
+              x[c]      = std::strtod(p, &end);
+              if (end == p)
+                throw InputError(where + ": expected three numbers 'f,re,im', found '" + text +
+                                 "'");
+              if (!std::isfinite(x[c]))
+                throw InputError(where + ": the value '" + trim(std::string(p, static_cast<std::size_t>(end - p))) +
+                                 "' is not a finite number (NaN or inf in the FRF)");
+              p = end;
+              while (*p == ' ' || *p == '\t')
+                ++p;
+              if (c < 2)
+                {
+                  if (*p != ',')
+                    throw InputError(where + ": expected three comma-separated numbers, found '" +
+                                     text + "'");
+                  ++p;
+                }
+            }
+          if (trim(p) != "")
+            throw InputError(where + ": unexpected text after three numbers: '" + text + "'");
+          f.push_back(x[0]);
+          frf.values.emplace_back(x[1], x[2]);
+        }
+      if (!header)
+        throw InputError("FRF file '" + file + "' is empty: expected the header 'f,re,im' and "
+                         "one line per frequency");
+      frf.df = check_grid(f, "FRF file '" + file + "'");
+      return frf;
+    }
+
+
+
+    void
+    write_frf_csv(const std::filesystem::path  &file,
+                  const FrequencyResponse      &frf,
+                  const base::ParameterRecord &record)
+    {
+      base::AtomicFile out(file);
+      out.stream().precision(16);
+      out.stream() << "f,re,im\n";
+      for (std::size_t k = 0; k < frf.values.size(); ++k)
+        out.stream() << k * frf.df << ',' << frf.values[k].real() << ',' << frf.values[k].imag()
+                     << '\n';
+      record.write_comments(out.stream());
+      out.commit();
+    }
+
+
+
+    FrequencyResponse
+    sample(const convolution::ModalModel &model, const double df, const unsigned int n_lines)
+    {
+      FrequencyResponse frf;
+      frf.df = df;
+      frf.values.resize(n_lines);
+      for (unsigned int k = 0; k < n_lines; ++k)
+        frf.values[k] = model.frequency_response(2. * M_PI * k * df);
+      return frf;
+    }
+
+
+
+    FrequencyResponse
+    FrequencyResponseMatrix::get(const unsigned int i, const unsigned int j) const
+    {
+      const unsigned int n = n_points();
+      FrequencyResponse  frf;
+      frf.df = df;
+      frf.values.resize(n_lines);
+      for (unsigned int k = 0; k < n_lines; ++k)
+        frf.values[k] = values[(std::size_t(k) * n + i) * n + j];
+      return frf;
+    }
+
+
+
+    namespace
+    {
+      /**
+       * Check with the HDF5 C API that @p file is an HDF5 file holding the
+       * datasets @p names, before deal.II's wrappers open it: they do not
+       * report a bad file, they abort.
+       */
+      void
+      check_hdf5_layout(const std::string &file, const std::vector<std::string> &names)
+      {
+        // Silence HDF5's own error printing during the checks.
+        H5E_auto2_t handler;
+        void       *data;
+        H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        std::string problem;
+        if (H5Fis_hdf5(file.c_str()) <= 0)
+          problem = "it is not an HDF5 file";
+        else
+          {
+            const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+            if (id < 0)
+              problem = "HDF5 cannot open it";
+            else
+              {
+                for (const auto &name : names)
+                  if (problem.empty() && H5Lexists(id, name.c_str(), H5P_DEFAULT) <= 0)
+                    problem = "it has no dataset /" + name;
+                H5Fclose(id);
+              }
+          }
+        H5Eset_auto2(H5E_DEFAULT, handler, data);
+        if (!problem.empty())
+          throw InputError("Green's function file '" + file + "' cannot be read: " + problem +
+                           "; expected the layout /frequency [n_f], /points [n_p][3], /green "
+                           "complex [n_f][n_p][n_p] (README, 'File formats')");
+      }
+    } // namespace
+
+
+
+    FrequencyResponseMatrix
+    read_green_hdf5(const std::string &file)
+    {
+      if (!std::filesystem::exists(file))
+        throw InputError("Green's function file '" + file + "' does not exist");
+      check_hdf5_layout(file, {"frequency", "points", "green"});
+      FrequencyResponseMatrix green;
+      std::string             dataset = "/frequency";
+      try
+        {
+          dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
+          const auto         f = h5.open_dataset("frequency").read<std::vector<double>>();
+          green.df             = check_grid(f, "Green's function file '" + file + "', /frequency");
+          green.n_lines        = static_cast<unsigned int>(f.size());
+
+          dataset              = "/points";
+          auto points          = h5.open_dataset("points");
+          const auto pdims     = points.get_dimensions();
+          if (pdims.size() != 2 || pdims[1] != 3)
+            throw InputError("Green's function file '" + file +
+                             "': /points must be a double array [n_p][3]");
+          const auto p = points.read<std::vector<double>>();
+          for (std::size_t i = 0; i < pdims[0]; ++i)
+            green.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});
+
+          dataset          = "/green";
+          auto       data  = h5.open_dataset("green");
+          const auto dims  = data.get_dimensions();
+          const auto n     = green.points.size();
+          if (dims.size() != 3 || dims[0] != f.size() || dims[1] != n || dims[2] != n)
+            throw InputError("Green's function file '" + file +
+                             "': /green must be complex [n_f][n_p][n_p] = [" +
+                             std::to_string(f.size()) + "][" + std::to_string(n) + "][" +
+                             std::to_string(n) + "]");
+          green.values = data.read<std::vector<std::complex<double>>>();
+          for (const auto &v : green.values)
+            if (!std::isfinite(v.real()) || !std::isfinite(v.imag()))
+              throw InputError("Green's function file '" + file +
+                               "': /green holds NaN or inf values");
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          throw InputError("Green's function file '" + file + "': cannot read " + dataset +
+                           " (is it an HDF5 file in the documented layout?): " + info.str());
+        }
+      return green;
+    }
+
+
+
+    void
+    write_green_hdf5(const std::filesystem::path  &file,
+                     const FrequencyResponseMatrix &green,
+                     const base::ParameterRecord  &record)
+    {
+      // HDF5 writes through its own file handle: reserve the temporary name
+      // with an AtomicFile, let HDF5 fill it, then rename.
+      base::AtomicFile target(file, std::ios::binary);
+      target.stream().close();
+      {
+        dealii::HDF5::File h5(target.temporary_path().string(),
+                              dealii::HDF5::File::FileAccessMode::create);
+        std::vector<double> f(green.n_lines);
+        for (unsigned int k = 0; k < green.n_lines; ++k)
+          f[k] = k * green.df;
+        h5.create_dataset<double>("frequency", {green.n_lines}).write(f);
+        std::vector<double> p;
+        for (const auto &x : green.points)
+          p.insert(p.end(), x.begin(), x.end());
+        h5.create_dataset<double>("points", {green.points.size(), 3}).write(p);
+        h5.create_dataset<std::complex<double>>(
+            "green", {green.n_lines, green.points.size(), green.points.size()})
+          .write(green.values);
+        h5.set_attribute("parameters", record.text());
+      }
+      target.commit();
+    }
+  } // namespace modal
+} // namespace greentread
