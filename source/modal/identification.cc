@@ -1,0 +1,745 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
+#include <greentread/modal/identification.h>
+#include <greentread/modal/lsce.h>
+
+#include <deal.II/base/multithread_info.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <map>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <cmath>
+#include <numeric>
+
+namespace greentread
+{
+  namespace modal
+  {
+    std::string
+    to_string(const ResidueModel model)
+    {
+      return model == ResidueModel::eq7 ? "eq7" : "general";
+    }
+
+
+
+    void
+    IdentificationParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using base::RangePattern;
+      prm.enter_subsection("Identification");
+      {
+        prm.declare_entry("FRF file", "", dealii::Patterns::Anything(),
+                          "One FRF to identify: a CSV file with the header 'f,re,im', f in Hz "
+                          "on a uniform grid from 0, g in m/N with g = (K + jwC - w^2 M)^-1. "
+                          "Scene 'identify' needs this or 'Green's function file'.");
+        prm.declare_entry("Green's function file", "", dealii::Patterns::Anything(),
+                          "Many FRFs: an HDF5 file with /frequency [n_f] (Hz), /points "
+                          "[n_p][3] (m) and /green complex [n_f][n_p][n_p] (m/N), as written "
+                          "by the periodic stage (README, 'File formats').");
+        prm.declare_entry("Pairs", "all", dealii::Patterns::Anything(),
+                          "Which g_ij of the Green's function file to identify: 'all', "
+                          "'diagonal', or a list 'i:j, i:j, ...' of 0-based point indices.");
+        prm.declare_entry("Bands", "auto",
+                          dealii::Patterns::Anything(),
+                          "'auto', or a number B from 1 to 64. 1: LSCE on the whole band at "
+                          "once, as in Appendix A. B > 1: 'zoom' LSCE in B sub-bands, each "
+                          "inverse-transformed on its own (complex) and at its own lower rate, "
+                          "so that the roots of each polynomial spread around the unit circle "
+                          "instead of crowding near z = 1; needed when many modes lie far below "
+                          "f_max. Each pole is taken from the band whose core holds its "
+                          "frequency. 'auto': 1 band, and 8 bands as well where E exceeds "
+                          "'Zoom above error', keeping the better fit.");
+        prm.declare_entry("Zoom above error", "0.05", RangePattern::closed(0., 1., ""),
+                          "With Bands = auto, an FRF whose error E with one band exceeds this "
+                          "is identified again in 8 bands. Unit: 1 (0.05 = 5%, the paper's "
+                          "typical error).");
+        prm.declare_entry("Maximum number of modes", "60", dealii::Patterns::Integer(1, 500),
+                          "N_max: the LSCE order is 2 N_max poles, and the chosen model has at "
+                          "most N_max modes. The paper uses about 50 per Green's function.");
+        prm.declare_entry("Order tolerance", "0.001", RangePattern::closed(0., 1., ""),
+                          "The chosen N_m is the smallest whose error E (Eq. 50) is within "
+                          "this of the smallest E over all orders tried. Unit: 1 (a fraction "
+                          "of E, 0.001 = 0.1 percentage point).");
+        prm.declare_entry("Residue model", "eq7", dealii::Patterns::Selection("eq7|general"),
+                          "'eq7': one real A per mode, A/(w_k^2 - w^2 + 2j xi_k w_k w), Eq. (7), "
+                          "so g(t = 0) = 0 is built in; real poles keep one real residue each. "
+                          "'general': a complex residue per pair, Eq. (A.2).");
+        prm.declare_entry("Compare residue models", "true", dealii::Patterns::Bool(),
+                          "Also fit the other residue model with the same poles and report "
+                          "its error.");
+        prm.declare_entry("Lower residual", "false", dealii::Patterns::Bool(),
+                          "Add a term -L/w^2 for modes below the band (free structures). The "
+                          "0 Hz line is then left out of the fit and of E. The time-domain "
+                          "convolution does not use residual terms.");
+        prm.declare_entry("Upper residual", "false", dealii::Patterns::Bool(),
+                          "Add a constant real term U for modes above f_max. The time-domain "
+                          "convolution does not use residual terms.");
+        prm.declare_entry("Stabilisation frequency tolerance", "0.01",
+                          RangePattern::closed(0., 1., ""),
+                          "A pole is kept only if the LSCE polynomial of order p - 2 has a "
+                          "root within this relative distance |d lambda| / |lambda|. Unit: 1.");
+        prm.declare_entry("Stabilisation damping tolerance", "0.05",
+                          RangePattern::closed(0., 10., ""),
+                          "... and with a damping ratio within this fraction of its own. "
+                          "Unit: 1.");
+        prm.declare_entry("Band edge", "0.98", RangePattern::closed(0.1, 1., ""),
+                          "Poles whose damped frequency exceeds this fraction of f_max are "
+                          "rejected: the cut of the FRF at f_max rings at the Nyquist "
+                          "frequency and LSCE fits that ringing with poles there. Unit: 1.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    IdentificationParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Identification");
+      {
+        frf_file            = prm.get("FRF file");
+        green_file          = prm.get("Green's function file");
+        pairs               = prm.get("Pairs");
+        const std::string b = prm.get("Bands");
+        if (b == "auto")
+          bands = 0;
+        else
+          {
+            char      *end   = nullptr;
+            const long value = std::strtol(b.c_str(), &end, 10);
+            require_parameter(end != b.c_str() && *end == '\0' && value >= 1 && value <= 64,
+                              "Identification/Bands", b, "'auto' or a whole number from 1 to 64");
+            bands = static_cast<unsigned int>(value);
+          }
+        zoom_above_error    = prm.get_double("Zoom above error");
+        max_modes           = prm.get_integer("Maximum number of modes");
+        order_tolerance     = prm.get_double("Order tolerance");
+        residue_model       = prm.get("Residue model") == "eq7" ? ResidueModel::eq7 :
+                                                                  ResidueModel::general;
+        compare_models      = prm.get_bool("Compare residue models");
+        lower_residual      = prm.get_bool("Lower residual");
+        upper_residual      = prm.get_bool("Upper residual");
+        stability_frequency = prm.get_double("Stabilisation frequency tolerance");
+        stability_damping   = prm.get_double("Stabilisation damping tolerance");
+        band_edge           = prm.get_double("Band edge");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    namespace
+    {
+      struct Pole
+      {
+        std::complex<double> lambda; // Im >= 0
+        bool                 real;
+      };
+
+      /// The frequency-domain least-squares problem for a set of poles.
+      class ResidueFit
+      {
+      public:
+        ResidueFit(const FrequencyResponse    &frf,
+                   const std::vector<Pole>    &poles,
+                   ResidueModel                model,
+                   bool                        lower,
+                   bool                        upper)
+          : frf(frf)
+          , poles(poles)
+          , model(model)
+          , first_line(lower ? 1 : 0)
+        {
+          const unsigned int n_lines = frf.values.size() - first_line;
+          // Columns: residual terms first (always kept), then the modes.
+          std::vector<Eigen::VectorXcd> columns;
+          const auto                    omega = [&](unsigned int k) {
+            return 2. * M_PI * (k + first_line) * frf.df;
+          };
+          if (lower)
+            {
+              Eigen::VectorXcd c(n_lines);
+              for (unsigned int k = 0; k < n_lines; ++k)
+                c[k] = -1. / (omega(k) * omega(k));
+              columns.push_back(c);
+              residual_kind.push_back(0);
+            }
+          if (upper)
+            {
+              columns.push_back(Eigen::VectorXcd::Ones(n_lines));
+              residual_kind.push_back(1);
+            }
+          n_residual = columns.size();
+          for (const auto &pole : poles)
+            {
+              first_column.push_back(columns.size());
+              const std::complex<double> l = pole.lambda, lb = std::conj(pole.lambda);
+              Eigen::VectorXcd           a(n_lines), b(n_lines);
+              for (unsigned int k = 0; k < n_lines; ++k)
+                {
+                  const std::complex<double> jw(0., omega(k));
+                  if (pole.real)
+                    a[k] = 1. / (jw - l);
+                  else if (model == ResidueModel::eq7)
+                    a[k] = 1. / ((jw - l) * (jw - lb));
+                  else
+                    {
+                      a[k] = 1. / (jw - l) + 1. / (jw - lb);
+                      b[k] = std::complex<double>(0., 1.) / (jw - l) -
+                             std::complex<double>(0., 1.) / (jw - lb);
+                    }
+                }
+              columns.push_back(a);
+              if (!pole.real && model == ResidueModel::general)
+                columns.push_back(b);
+            }
+          first_column.push_back(columns.size());
+
+          // Real least squares: rows Re then Im, columns scaled to unit norm.
+          A.resize(2 * n_lines, columns.size());
+          scale.resize(columns.size());
+          for (std::size_t c = 0; c < columns.size(); ++c)
+            {
+              scale[c] = columns[c].norm();
+              if (!(scale[c] > 0.))
+                scale[c] = 1.;
+              A.col(c).head(n_lines) = columns[c].real() / scale[c];
+              A.col(c).tail(n_lines) = columns[c].imag() / scale[c];
+            }
+          data.resize(2 * n_lines);
+          weights.resize(n_lines);
+          for (unsigned int k = 0; k < n_lines; ++k)
+            {
+              data[k]           = frf.values[k + first_line].real();
+              data[k + n_lines] = frf.values[k + first_line].imag();
+              weights[k]        = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
+            }
+          norm = 0.;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            norm += weights[k] * std::abs(frf.values[k + first_line]);
+        }
+
+        unsigned int
+        n_modes() const
+        {
+          return poles.size();
+        }
+
+        /// Least squares over all columns.
+        Eigen::VectorXd
+        solve_all() const
+        {
+          // Plain Householder QR: the scaled columns of distinct poles are
+          // well apart; a column-pivoted (rank-revealing) QR takes over when a
+          // diagonal of R says two of them nearly coincide.
+          Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
+          const auto                           &R   = qr.matrixQR();
+          double                                top = 0., low = INFINITY;
+          for (Eigen::Index i = 0; i < A.cols(); ++i)
+            {
+              top = std::max(top, std::abs(R(i, i)));
+              low = std::min(low, std::abs(R(i, i)));
+            }
+          if (A.cols() == 0 || low > 1e-10 * top)
+            return qr.solve(data);
+          Eigen::ColPivHouseholderQR<Eigen::MatrixXd> pivoted(A);
+          pivoted.setThreshold(1e-13);
+          return pivoted.solve(data);
+        }
+
+        /// E of Eq. (50) of a fitted vector A x.
+        double
+        error(const Eigen::VectorXd &fitted) const
+        {
+          const unsigned int n_lines = weights.size();
+          double             e       = 0.;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            e += weights[k] * std::hypot(data[k] - fitted[k], data[k + n_lines] - fitted[k + n_lines]);
+          return e / norm;
+        }
+
+        /// L1 norm over the lines of the FRF of mode m with coefficients x.
+        double
+        contribution(const Eigen::VectorXd &x, unsigned int m) const
+        {
+          const unsigned int n_lines = weights.size();
+          Eigen::VectorXd    part    = Eigen::VectorXd::Zero(2 * n_lines);
+          for (unsigned int c = first_column[m]; c < first_column[m + 1]; ++c)
+            part += A.col(c) * x[c];
+          double sum = 0.;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            sum += weights[k] * std::hypot(part[k], part[k + n_lines]);
+          return sum;
+        }
+
+        /**
+         * Fit the modes in @p order, prefix by prefix, from one QR: E for
+         * each number of modes 0..M (coefficients_of() gives the fit).
+         */
+        std::vector<double>
+        prefix_errors(const std::vector<unsigned int> &order) const
+        {
+          std::vector<unsigned int> columns;
+          for (unsigned int c = 0; c < n_residual; ++c)
+            columns.push_back(c);
+          std::vector<unsigned int> boundary = {static_cast<unsigned int>(columns.size())};
+          for (const unsigned int m : order)
+            {
+              for (unsigned int c = first_column[m]; c < first_column[m + 1]; ++c)
+                columns.push_back(c);
+              boundary.push_back(columns.size());
+            }
+          Eigen::MatrixXd P(A.rows(), columns.size());
+          for (std::size_t c = 0; c < columns.size(); ++c)
+            P.col(c) = A.col(columns[c]);
+          Eigen::HouseholderQR<Eigen::MatrixXd> qr(P);
+          triangle_ = qr.matrixQR().topRows(P.cols()).triangularView<Eigen::Upper>();
+          qtb_      = (qr.householderQ().transpose() * data).head(P.cols());
+          columns_  = columns;
+          boundary_ = boundary;
+          const double top = columns.empty() ? 1. : std::abs(triangle_(0, 0));
+
+          // E of each prefix: its coefficients by back-substitution, its fit
+          // from the prefix's columns alone.
+          std::vector<double> errors(boundary.size(), INFINITY);
+          for (std::size_t n = 0; n < boundary.size(); ++n)
+            {
+              const unsigned int m = boundary[n];
+              if (m > 0 && !(std::abs(triangle_(m - 1, m - 1)) > 1e-12 * top))
+                break; // a prefix with a dependent column, and all longer ones
+              const Eigen::VectorXd y = triangle_.topLeftCorner(m, m)
+                                          .triangularView<Eigen::Upper>()
+                                          .solve(qtb_.head(m));
+              errors[n] = error(P.leftCols(m) * y);
+            }
+          return errors;
+        }
+
+        /// The coefficients of prefix @p n of the last prefix_errors() call.
+        Eigen::VectorXd
+        coefficients_of(const std::size_t n) const
+        {
+          const unsigned int    m = boundary_[n];
+          const Eigen::VectorXd y = triangle_.topLeftCorner(m, m)
+                                      .triangularView<Eigen::Upper>()
+                                      .solve(qtb_.head(m));
+          Eigen::VectorXd x = Eigen::VectorXd::Zero(A.cols());
+          for (unsigned int i = 0; i < m; ++i)
+            x[columns_[i]] = y[i];
+          return x;
+        }
+
+        /// The modal model of coefficients x for the modes in @p modes.
+        convolution::ModalModel
+        model_of(const Eigen::VectorXd &x, const std::vector<unsigned int> &modes,
+                 double &lower, double &upper) const
+        {
+          lower = upper = 0.;
+          for (unsigned int c = 0; c < n_residual; ++c)
+            (residual_kind[c] == 0 ? lower : upper) = x[c] / scale[c];
+          convolution::ModalModel result;
+          for (const unsigned int m : modes)
+            {
+              const Pole        &pole = poles[m];
+              const unsigned int c    = first_column[m];
+              if (pole.real)
+                result.add_real(pole.lambda.real(), x[c] / scale[c]);
+              else if (model == ResidueModel::eq7)
+                // A / ((jw - l)(jw - conj l)): R = A / (l - conj l).
+                result.add_pair(pole.lambda,
+                                x[c] / scale[c] / std::complex<double>(0., 2. * pole.lambda.imag()));
+              else
+                result.add_pair(pole.lambda, {x[c] / scale[c], x[c + 1] / scale[c + 1]});
+            }
+          return result;
+        }
+
+        double
+        data_norm() const
+        {
+          return norm;
+        }
+
+      private:
+        const FrequencyResponse       &frf;
+        std::vector<Pole>              poles;
+        ResidueModel                   model;
+        unsigned int                   first_line;
+        std::size_t                    n_residual = 0;
+        std::vector<int>               residual_kind;
+        std::vector<unsigned int>      first_column;
+        Eigen::MatrixXd                A;
+        std::vector<double>            scale;
+        Eigen::VectorXd                data;
+        std::vector<double>            weights;
+        double                         norm = 0.;
+        // State of the last prefix_errors() call.
+        mutable Eigen::MatrixXd           triangle_;
+        mutable Eigen::VectorXd           qtb_;
+        mutable std::vector<unsigned int> columns_, boundary_;
+      };
+    } // namespace
+
+
+
+    namespace
+    {
+      /**
+       * Classify the roots of one band's polynomial and keep its physical
+       * poles: stable, inside the band's core [core_low, core_high) (Hz), and
+       * persistent (Newton on the polynomial of order p - 2 finds them
+       * again within the stabilisation tolerances).
+       */
+      template <typename Number>
+      void
+      band_poles(const ImpulseResponse<Number>  &h,
+                 const double                    shift, // rad/s, the band's first line
+                 const unsigned int              max_order,
+                 const double                    core_low,
+                 const double                    core_high,
+                 const IdentificationParameters &parameters,
+                 std::vector<Pole>              &poles,
+                 Identification                 &result)
+      {
+        constexpr bool             real_band = std::is_same_v<Number, double>;
+        const HankelSystem<Number> hankel(h, max_order);
+        BandReport                 report;
+        report.f_low  = core_low;
+        report.f_high = core_high;
+        // The numerical rank at the largest order tells how many exponentials
+        // the band holds; solve with a quarter more roots than that (spare
+        // roots absorb the ringing of the band's edges), not more: the cost
+        // of the roots grows with the cube of the order.
+        const unsigned int estimate = hankel.rank_estimate();
+        const unsigned int order =
+          std::min(max_order, std::max(4u, estimate + std::max(4u, estimate / 4)));
+        report.order = order;
+        const auto c = hankel.coefficients(order, report.rank, report.condition);
+        typename HankelSystem<Number>::Vector c_low;
+        if (order >= 4)
+          c_low = hankel.coefficients_pivoted(order - 2);
+        result.bands.push_back(report);
+
+        // ln z / dt, with the angle in [0, 2 pi) for a shifted sub-band.
+        const auto pole_of = [&](const std::complex<double> z) {
+          if (real_band)
+            return std::log(z) / h.dt;
+          double angle = std::arg(z);
+          if (angle < 0.)
+            angle += 2. * M_PI;
+          return std::complex<double>(std::log(std::abs(z)) / h.dt, shift + angle / h.dt);
+        };
+
+        for (const std::complex<double> z : companion_roots(c))
+          {
+            if (real_band && z.imag() < 0.)
+              continue; // its conjugate stands for the pair
+            ++result.poles.roots;
+            if (real_band && z.imag() == 0. && z.real() <= 0.)
+              {
+                ++result.poles.out_of_band; // a real z <= 0: the Nyquist frequency, or no pole
+                continue;
+              }
+            const std::complex<double> lambda = pole_of(z);
+            const bool                 real   = real_band && z.imag() == 0.;
+            const double               f      = lambda.imag() / (2. * M_PI);
+            if (!(lambda.real() < 0.) || !std::isfinite(lambda.real()))
+              {
+                ++result.poles.unstable;
+                continue;
+              }
+            if ((!real && (f < core_low || f >= core_high)) ||
+                (real && -lambda.real() > 2. * M_PI * core_high))
+              {
+                ++result.poles.out_of_band;
+                continue;
+              }
+            if (c_low.size() > 0)
+              {
+                std::complex<double> z_low = z;
+                bool                 found = newton_root(c_low, z_low);
+                if (found)
+                  {
+                    const std::complex<double> l      = pole_of(z_low);
+                    const double               xi     = -lambda.real() / std::abs(lambda);
+                    const double               xi_low = -l.real() / std::abs(l);
+                    found = std::abs(l - lambda) <=
+                              parameters.stability_frequency * std::abs(lambda) &&
+                            std::abs(xi_low - xi) <= parameters.stability_damping * xi + 1e-12;
+                  }
+                if (!found)
+                  {
+                    ++result.poles.spurious;
+                    continue;
+                  }
+              }
+            poles.push_back({real ? std::complex<double>(lambda.real(), 0.) : lambda, real});
+          }
+      }
+    } // namespace
+
+
+
+    namespace
+    {
+      Identification
+      identify_in_bands(const FrequencyResponse        &frf,
+                        const IdentificationParameters &parameters,
+                        const unsigned int              B)
+    {
+      Identification     result;
+      std::vector<Pole>  poles;
+      const double       f_max = frf.f_max();
+      const unsigned int K     = frf.values.size() - 1;
+      if (B == 1)
+        // Appendix A: the whole band at once, 2 N_max real roots.
+        band_poles(impulse_response(frf), 0., 2 * parameters.max_modes, 0.,
+                   parameters.band_edge * f_max, parameters, poles, result);
+      else
+        {
+          // Zoom LSCE: B cores tiling [0, band_edge f_max), each processed in a
+          // band a quarter of a core wider on each side, at most 2 N_max roots.
+          const double       width    = f_max / B;
+          const unsigned int capacity = parameters.max_modes;
+          for (unsigned int b = 0; b < B; ++b)
+            {
+              const double       core_low  = b * width;
+              const double       core_high = b + 1 == B ? parameters.band_edge * f_max : (b + 1) * width;
+              const unsigned int first =
+                b == 0 ? 0 : static_cast<unsigned int>(std::floor((core_low - 0.25 * width) / frf.df));
+              const unsigned int last = std::min<unsigned int>(
+                K, static_cast<unsigned int>(std::ceil((core_high + 0.25 * width) / frf.df)));
+              if (b == 0)
+                {
+                  const unsigned int order = std::min(2 * capacity, (2 * last - 2) / 2);
+                  band_poles(impulse_response(frf, last), 0., order - order % 2, core_low, core_high,
+                             parameters, poles, result);
+                }
+              else
+                {
+                  const unsigned int n_b   = last - first + 1;
+                  const unsigned int order = std::min(2 * capacity, (n_b - 2) / 2);
+                  band_poles(band_impulse_response(frf, first, last), 2. * M_PI * first * frf.df,
+                             order, core_low, core_high, parameters, poles, result);
+                }
+            }
+        }
+      for (const auto &band : result.bands)
+        {
+          result.order += band.order;
+          result.rank += band.rank;
+          result.condition = std::max(result.condition, band.condition);
+        }
+      result.poles.physical = poles.size();
+
+      // Residues of all physical modes, then the order by contribution.
+      const ResidueFit fit(frf, poles, parameters.residue_model, parameters.lower_residual,
+                           parameters.upper_residual);
+      if (!(fit.data_norm() > 0.))
+        throw InputError("the FRF is zero at every line: there is nothing to identify");
+      std::vector<unsigned int> ranking(poles.size());
+      std::iota(ranking.begin(), ranking.end(), 0u);
+      if (!poles.empty())
+        {
+          const Eigen::VectorXd x = fit.solve_all();
+          std::vector<double>   importance(poles.size());
+          for (unsigned int m = 0; m < poles.size(); ++m)
+            importance[m] = fit.contribution(x, m);
+          std::stable_sort(ranking.begin(), ranking.end(), [&](unsigned int a, unsigned int b) {
+            return importance[a] > importance[b];
+          });
+        }
+      const std::vector<double> errors = fit.prefix_errors(ranking);
+      result.best_error = *std::min_element(errors.begin(), errors.end());
+      unsigned int n    = 0;
+      while (!(errors[n] <= result.best_error + parameters.order_tolerance))
+        ++n;
+      result.n_modes = n;
+      const std::vector<unsigned int> chosen(ranking.begin(), ranking.begin() + n);
+      result.model = fit.model_of(fit.coefficients_of(n), chosen, result.lower_residual,
+                                  result.upper_residual);
+      result.error = modal_error(frf, result.model, result.lower_residual, result.upper_residual);
+
+      if (parameters.compare_models)
+        {
+          std::vector<Pole> kept;
+          for (const unsigned int m : chosen)
+            kept.push_back(poles[m]);
+          const ResidueModel other = parameters.residue_model == ResidueModel::eq7 ?
+                                       ResidueModel::general :
+                                       ResidueModel::eq7;
+          const ResidueFit   alternative(frf, kept, other, parameters.lower_residual,
+                                       parameters.upper_residual);
+          std::vector<unsigned int> all(kept.size());
+          std::iota(all.begin(), all.end(), 0u);
+          double     lower, upper;
+          const auto model = alternative.model_of(alternative.solve_all(), all, lower, upper);
+          result.other_model_error = modal_error(frf, model, lower, upper);
+        }
+      result.n_bands = B;
+      return result;
+    }
+    } // namespace
+
+
+
+    Identification
+    identify(const FrequencyResponse &frf, const IdentificationParameters &parameters)
+    {
+      if (parameters.bands > 0)
+        return identify_in_bands(frf, parameters, parameters.bands);
+      Identification result = identify_in_bands(frf, parameters, 1);
+      if (result.error > parameters.zoom_above_error)
+        {
+          // Zoom bands need room: a core of at least 16 lines.
+          const unsigned int lines = frf.values.size() - 1;
+          const unsigned int B     = std::min(8u, std::max(1u, lines / 16));
+          if (B > 1)
+            {
+              Identification zoomed = identify_in_bands(frf, parameters, B);
+              if (zoomed.error < result.error)
+                result = std::move(zoomed);
+            }
+        }
+      return result;
+    }
+
+
+
+    double
+    modal_error(const FrequencyResponse     &frf,
+                const convolution::ModalModel &model,
+                const double                   lower,
+                const double                   upper)
+    {
+      const unsigned int first = lower != 0. ? 1 : 0;
+      const unsigned int last  = frf.values.size() - 1;
+      double             difference = 0., norm = 0.;
+      for (unsigned int k = first; k <= last; ++k)
+        {
+          const double         w     = (k == first || k == last) ? 0.5 : 1.;
+          const double         omega = 2. * M_PI * k * frf.df;
+          std::complex<double> fit   = model.frequency_response(omega) + upper;
+          if (lower != 0.)
+            fit += -lower / (omega * omega);
+          difference += w * std::abs(frf.values[k] - fit);
+          norm += w * std::abs(frf.values[k]);
+        }
+      return norm > 0. ? difference / norm : INFINITY;
+    }
+
+
+
+    std::vector<Identification>
+    identify_all(const std::function<FrequencyResponse(std::size_t)> &get,
+                 const std::size_t                                    count,
+                 const IdentificationParameters                      &parameters,
+                 const bool                                           show_progress)
+    {
+      std::vector<Identification> results(count);
+      std::atomic<std::size_t>    next{0}, done{0};
+      std::atomic<bool>           stop{false};
+      std::exception_ptr          failure;
+      std::mutex                  failure_mutex;
+      const auto                  work = [&]() {
+        for (std::size_t n = next++; n < count && !stop; n = next++)
+          {
+            try
+              {
+                results[n] = identify(get(n), parameters);
+              }
+            catch (...)
+              {
+                std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure)
+                  failure = std::current_exception();
+                stop = true;
+              }
+            ++done;
+          }
+      };
+      const unsigned int n_threads =
+        std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), count));
+      std::vector<std::thread> threads;
+      for (unsigned int t = 0; t < n_threads; ++t)
+        threads.emplace_back(work);
+      // This thread only watches and reports.
+      base::Progress progress("identification", count);
+      while (done < count && !stop)
+        {
+          std::this_thread::sleep_for(std::chrono::milliseconds(50));
+          if (show_progress)
+            progress.update(done);
+        }
+      for (auto &t : threads)
+        t.join();
+      if (show_progress)
+        progress.finish();
+      if (failure)
+        std::rethrow_exception(failure);
+      return results;
+    }
+
+
+
+    std::vector<Identification>
+    identify_pairs(const FrequencyResponseMatrix                            &green,
+                   const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
+                   const IdentificationParameters                           &parameters,
+                   std::size_t                                              &reused,
+                   const bool                                                show_progress)
+    {
+      // For each pair, the index of an earlier pair with the same data by
+      // reciprocity (g_ji for g_ij), or itself.
+      std::map<std::pair<unsigned int, unsigned int>, std::size_t> index;
+      for (std::size_t n = 0; n < pairs.size(); ++n)
+        index.emplace(pairs[n], n);
+      std::vector<std::size_t> source(pairs.size());
+      std::vector<std::size_t> distinct;
+      for (std::size_t n = 0; n < pairs.size(); ++n)
+        {
+          source[n]        = n;
+          const auto [i, j] = pairs[n];
+          const auto mirror = index.find({j, i});
+          if (i != j && mirror != index.end() && mirror->second < n)
+            {
+              double difference = 0., size = 0.;
+              const auto  &values = green.values;
+              const unsigned int np = green.n_points();
+              for (unsigned int k = 0; k < green.n_lines; ++k)
+                {
+                  const auto a = values[(std::size_t(k) * np + i) * np + j];
+                  const auto b = values[(std::size_t(k) * np + j) * np + i];
+                  difference   = std::max(difference, std::abs(a - b));
+                  size         = std::max(size, std::abs(a));
+                }
+              if (difference <= 1e-12 * size)
+                source[n] = mirror->second;
+            }
+          if (source[n] == n)
+            distinct.push_back(n);
+        }
+      reused             = pairs.size() - distinct.size();
+      const auto results = identify_all(
+        [&](std::size_t d) {
+          return green.get(pairs[distinct[d]].first, pairs[distinct[d]].second);
+        },
+        distinct.size(), parameters, show_progress);
+      std::vector<Identification> all(pairs.size());
+      std::vector<std::size_t>    slot(pairs.size());
+      for (std::size_t d = 0; d < distinct.size(); ++d)
+        slot[distinct[d]] = d;
+      for (std::size_t n = 0; n < pairs.size(); ++n)
+        all[n] = results[slot[source[n]]];
+      return all;
+    }
+  } // namespace modal
+} // namespace greentread
