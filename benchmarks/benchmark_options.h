@@ -6,6 +6,7 @@
 #include <greentread/base/output.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <cstring>
 #include <filesystem>

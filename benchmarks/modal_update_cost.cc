@@ -43,7 +43,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   const auto   options = benchmark::parse(argc, argv, "modal_update_cost");
   const double dt      = 1e-5;
   const unsigned int n_steps  = options.quick ? 20000 : 200000;

@@ -53,7 +53,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   const auto options = benchmark::parse(argc, argv, "sdof_convergence");
 
   std::vector<double> dts = {1e-3, 3.7e-4, 1.37e-4, 3.7e-5, 1.37e-5, 3.7e-6, 1e-6};

@@ -18,7 +18,7 @@ using namespace greentread;
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   const auto options = benchmark::parse(argc, argv, "sdof_table_a2");
 
   struct Row

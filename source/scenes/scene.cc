@@ -1,6 +1,8 @@
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
+#include <greentread/modal/identification.h>
 #include <greentread/road/road_profile.h>
+#include <greentread/scenes/identify_scene.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/sdof_scene.h>
 #include <greentread/sdof/oscillator.h>
@@ -12,9 +14,10 @@ namespace greentread
     void
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Scene", "sdof", dealii::Patterns::Selection("sdof"),
+      prm.declare_entry("Scene", "sdof", dealii::Patterns::Selection("sdof|identify"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
-                        "sinusoidal road (paper, Section 3), with its exact solution.");
+                        "sinusoidal road (paper, Section 3), with its exact solution. "
+                        "'identify': modal identification (LSCE, Appendix A) of FRFs.");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
                         "paths are relative to the working directory.");
@@ -43,6 +46,7 @@ namespace greentread
       road::RoadParameters::declare_parameters(prm);
       contact::ContactParameters::declare_parameters(prm);
       convolution::ConvolutionParameters::declare_parameters(prm);
+      modal::IdentificationParameters::declare_parameters(prm);
     }
 
 
@@ -52,7 +56,9 @@ namespace greentread
     {
       GlobalParameters global;
       global.parse_parameters(prm);
-      // Only "sdof" exists so far; the Selection pattern has rejected the rest.
+      // The Selection pattern has rejected any other name.
+      if (global.scene == "identify")
+        return std::make_unique<IdentifyScene>(prm, global);
       return std::make_unique<SdofScene>(prm, global);
     }
   } // namespace scenes

@@ -35,6 +35,7 @@ namespace greentread
       road.parse_parameters(prm);
       contact.parse_parameters(prm);
       convolution.parse_parameters(prm);
+      identification.parse_parameters(prm);
     }
 
 
@@ -44,10 +45,11 @@ namespace greentread
     {
       namespace fs = std::filesystem;
       const fs::path directory = base::prepare_output_directory(global.output_directory);
-      const auto     record =
-        base::ParameterRecord::from(prm, "sdof",
-                                    {"Scene", "Output directory", "Oscillator", "Road",
-                                     "Contact", "Time stepping", "Convolution"});
+      std::vector<std::string> stages = {"Scene",   "Output directory", "Oscillator", "Road",
+                                         "Contact", "Time stepping",    "Convolution"};
+      if (oscillator.identified_green)
+        stages.push_back("Identification");
+      const auto record = base::ParameterRecord::from(prm, "sdof", stages);
 
       const sdof::Oscillator osc(oscillator);
       const auto             profile = road.create();
@@ -66,7 +68,35 @@ namespace greentread
                 << " m, V0 = " << format_number(oscillator.speed) << " m/s\n"
                 << "  time: dt = " << format_number(dt) << " s, " << n_steps << " steps\n";
 
-      auto conv = sdof::make_convolution(osc, convolution, dt, n_steps);
+      // The round trip: the Green's function from LSCE of the oscillator's FRF.
+      std::unique_ptr<modal::Identification> identified;
+      if (oscillator.identified_green)
+        {
+          const auto frf =
+            sdof::frequency_response(osc, oscillator.frf_max_frequency, oscillator.frf_line_spacing);
+          identified = std::make_unique<modal::Identification>(modal::identify(frf, identification));
+          const auto exact = osc.modal_model();
+          double     pole_error = INFINITY;
+          for (const auto &term : identified->model.terms())
+            pole_error = std::min(pole_error, std::abs(term.lambda - exact.terms()[0].lambda) /
+                                                std::abs(exact.terms()[0].lambda));
+          std::cout << "  Green's function: identified by LSCE from the oscillator's FRF, "
+                    << frf.values.size() << " lines to " << format_number(frf.f_max())
+                    << " Hz: N_m = " << identified->n_modes << ", E = "
+                    << fmt("%.3g", identified->error) << ", pole error "
+                    << fmt("%.3g", pole_error) << "\n";
+          modal::write_frf_csv(directory / "frf.csv", frf, record);
+          base::AtomicFile file(directory / "modal_parameters.csv");
+          file.stream().precision(16);
+          file.stream() << "i,j,lambda_re,lambda_im,R_re,R_im\n";
+          for (const auto &term : identified->model.terms())
+            file.stream() << "0,0," << term.lambda.real() << ',' << term.lambda.imag() << ','
+                          << term.residue.real() << ',' << term.residue.imag() << '\n';
+          record.write_comments(file.stream());
+          file.commit();
+        }
+      auto conv = sdof::make_convolution(osc, convolution, dt, n_steps,
+                                         identified ? &identified->model : nullptr);
       std::cout << "  contact: " << contact::to_string(contact.law);
       if (contact.law == contact::ContactLaw::penalty)
         std::cout << " (kc = " << format_number(contact.contact_stiffness) << " N/m)";
@@ -75,6 +105,16 @@ namespace greentread
                 << conv->size() << ")\n";
 
       const sdof::SdofRun run = sdof::solve(osc, track, *conv, contact);
+      double              round_trip = NAN;
+      if (identified)
+        {
+          // The same run with the exact modal form, for the round trip.
+          auto       exact_conv = sdof::make_convolution(osc, convolution, dt, n_steps);
+          const auto reference  = sdof::solve(osc, track, *exact_conv, contact, false);
+          round_trip            = 0.;
+          for (unsigned int n = 0; n <= n_steps; ++n)
+            round_trip = std::max(round_trip, std::abs(run.u[n] - reference.u[n]));
+        }
 
       const auto exact_start = std::chrono::steady_clock::now();
       const sdof::ExactSolution exact(osc, track, n_steps * dt);
@@ -179,6 +219,9 @@ namespace greentread
                 << " m\n"
                 << "  fraction of time in contact    = " << fmt("%.4f", e.contact_fraction)
                 << " (exact " << fmt("%.4f", e.exact_contact_fraction) << ")\n";
+      if (identified)
+        std::cout << "  max |u - u(exact modal form)|  = " << fmt("%.4g", round_trip)
+                  << " m (the round trip through LSCE)\n";
       if (contact.law == contact::ContactLaw::kinematic)
         {
           std::cout << "  contact steps by branch:";
@@ -192,7 +235,8 @@ namespace greentread
                   << fmt("%.3g", 1e9 * run.run_time / n_steps) << " ns per step), "
                   << fmt("%.3g", exact_time) << " s for the exact reference\n";
       std::cout << "Wrote time_history.csv, reference.csv, summary.csv, parameters.prm"
-                << (plotted ? ", time_history.png" : "") << " in "
+                << (plotted ? ", time_history.png" : "")
+                << (identified ? ", frf.csv, modal_parameters.csv" : "") << " in "
                 << directory.string() << "\n";
     }
   } // namespace scenes

@@ -27,6 +27,18 @@ namespace greentread
         prm.declare_entry("Speed", "0.1", RangePattern::positive("m/s"),
                           "Speed V0 at which the oscillator travels over the road. "
                           "Unit: m/s. Paper, Section 3: 0.1 m/s.");
+        prm.declare_entry("Green's function", "analytic",
+                          dealii::Patterns::Selection("analytic|identified"),
+                          "'analytic': the closed-form g(t) and its exact modal form. "
+                          "'identified': the modal model that LSCE (subsection "
+                          "Identification) finds from the oscillator's own FRF, sampled "
+                          "from 0 to 'FRF maximum frequency'; the scene then also reports "
+                          "the difference from the run with the exact modal form.");
+        prm.declare_entry("FRF maximum frequency", "1000", RangePattern::positive("Hz"),
+                          "Highest line of the FRF identified when Green's function = "
+                          "identified. Unit: Hz.");
+        prm.declare_entry("FRF line spacing", "1", RangePattern::positive("Hz"),
+                          "Line spacing of that FRF. Unit: Hz.");
       }
       prm.leave_subsection();
     }
@@ -43,8 +55,16 @@ namespace greentread
         damping_ratio = prm.get_double("Damping ratio");
         gravity       = prm.get_double("Gravity");
         speed         = prm.get_double("Speed");
+        identified_green  = prm.get("Green's function") == "identified";
+        frf_max_frequency = prm.get_double("FRF maximum frequency");
+        frf_line_spacing  = prm.get_double("FRF line spacing");
       }
       prm.leave_subsection();
+      require_parameter(frf_line_spacing <= 0.5 * frf_max_frequency &&
+                          frf_max_frequency / frf_line_spacing <= 1e6,
+                        "Oscillator/FRF line spacing", frf_line_spacing,
+                        "a spacing that gives from 2 to 1e6 lines up to 'FRF maximum "
+                        "frequency' = " + format_number(frf_max_frequency) + " Hz");
     }
 
 

@@ -17,27 +17,53 @@ namespace greentread
     make_convolution(const Oscillator                          &oscillator,
                      const convolution::ConvolutionParameters &parameters,
                      const double                              dt,
-                     const unsigned int                        n_steps)
+                     const unsigned int                        n_steps,
+                     const convolution::ModalModel            *model)
     {
       using namespace convolution;
       switch (parameters.method)
         {
           case Method::direct:
             {
-              const auto g  = [&](double t) { return oscillator.green(t); };
-              const auto dg = [&](double t) { return oscillator.green_derivative(t); };
+              std::function<double(double)> g, dg;
+              double                        rate;
+              if (model)
+                {
+                  g    = [model](double t) { return model->impulse_response(t); };
+                  dg   = [model](double t) { return model->impulse_response_derivative(t); };
+                  rate = model->max_modulus();
+                }
+              else
+                {
+                  g    = [&oscillator](double t) { return oscillator.green(t); };
+                  dg   = [&oscillator](double t) { return oscillator.green_derivative(t); };
+                  rate = oscillator.natural_frequency() * (oscillator.damping_ratio() + 1.);
+                }
               const unsigned int n_g =
                 truncation_length(g, dt, parameters.truncation_threshold, n_steps);
-              const double rate = oscillator.natural_frequency() *
-                                  (oscillator.damping_ratio() + 1.);
               return std::make_unique<DirectConvolution>(g, dg, dt, n_g, n_steps, rate);
             }
           case Method::modal_paper:
-            return std::make_unique<ModalPaperConvolution>(oscillator.modal_model(), dt);
+            return std::make_unique<ModalPaperConvolution>(model ? *model : oscillator.modal_model(),
+                                                           dt);
           case Method::modal_recursive:
-            return std::make_unique<ModalRecursiveConvolution>(oscillator.modal_model(), dt);
+            return std::make_unique<ModalRecursiveConvolution>(
+              model ? *model : oscillator.modal_model(), dt);
         }
       return nullptr;
+    }
+
+
+
+    modal::FrequencyResponse
+    frequency_response(const Oscillator &oscillator, const double f_max, const double df)
+    {
+      modal::FrequencyResponse frf;
+      frf.df                 = df;
+      const unsigned int n   = static_cast<unsigned int>(std::llround(f_max / df)) + 1;
+      for (unsigned int k = 0; k < n; ++k)
+        frf.values.push_back(oscillator.frequency_response(2. * M_PI * k * df));
+      return frf;
     }
 
 
@@ -248,11 +274,13 @@ namespace greentread
              const road::RoadProfile                   &road,
              const contact::ContactParameters          &contact,
              const convolution::ConvolutionParameters &convolution,
-             const bool                                show_progress)
+             const bool                                show_progress,
+             const convolution::ModalModel            *model)
     {
       const Oscillator      oscillator(oscillator_parameters);
       const road::RoadTrack track{road, oscillator_parameters.speed, 0.};
-      auto conv = make_convolution(oscillator, convolution, contact.time_step, contact.n_steps());
+      auto                  conv =
+        make_convolution(oscillator, convolution, contact.time_step, contact.n_steps(), model);
       SdofOutcome outcome;
       outcome.run = solve(oscillator, track, *conv, contact, show_progress);
       const ExactSolution exact(oscillator, track, contact.n_steps() * contact.time_step);

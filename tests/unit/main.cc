@@ -10,7 +10,7 @@ struct MpiFixture
   MpiFixture()
     : mpi(boost::unit_test::framework::master_test_suite().argc,
           boost::unit_test::framework::master_test_suite().argv,
-          1)
+          dealii::numbers::invalid_unsigned_int)
   {}
   dealii::Utilities::MPI::MPI_InitFinalize mpi;
 };

@@ -24,6 +24,10 @@ namespace greentread
       double damping_ratio = 0.02;
       double gravity       = 9.81;
       double speed         = 0.1;
+      /// Take the Green's function from LSCE of the oscillator's own FRF.
+      bool   identified_green = false;
+      double frf_max_frequency = 1000.;
+      double frf_line_spacing  = 1.;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

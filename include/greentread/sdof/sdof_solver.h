@@ -4,6 +4,7 @@
 #include <greentread/contact/kinematic_contact.h>
 #include <greentread/convolution/convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
+#include <greentread/modal/frequency_response.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/sdof/exact_solution.h>
 #include <greentread/sdof/oscillator.h>
@@ -70,12 +71,17 @@ namespace greentread
     /**
      * @brief The convolution of the oscillator's Green's function by the
      * chosen method, for a run of @p n_steps steps of @p dt.
+     *
+     * @param[in] model If given, a modal model used instead of the
+     * oscillator's own (an identified one): the modal methods convolve with
+     * it, and the direct method with its impulse response.
      */
     std::unique_ptr<convolution::Convolution>
     make_convolution(const Oscillator                          &oscillator,
                      const convolution::ConvolutionParameters &parameters,
                      double                                    dt,
-                     unsigned int                              n_steps);
+                     unsigned int                              n_steps,
+                     const convolution::ModalModel            *model = nullptr);
 
     /**
      * @brief Run the contact problem: gravity and contact load convolved with
@@ -121,6 +127,13 @@ namespace greentread
              const road::RoadProfile                   &road,
              const contact::ContactParameters          &contact,
              const convolution::ConvolutionParameters &convolution,
-             bool                                      show_progress = false);
+             bool                                      show_progress = false,
+             const convolution::ModalModel            *model         = nullptr);
+
+    /**
+     * @brief The oscillator's FRF (Eq. 3) on lines 0, df, ..., up to f_max.
+     */
+    modal::FrequencyResponse
+    frequency_response(const Oscillator &oscillator, double f_max, double df);
   } // namespace sdof
 } // namespace greentread
