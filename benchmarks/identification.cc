@@ -100,6 +100,16 @@ main(int argc, char **argv)
           pole_error = std::max(pole_error, best);
         }
     }
+  const std::size_t worst =
+    std::max_element(results.begin(), results.end(),
+                     [](const auto &a, const auto &b) { return a.error < b.error; }) -
+    results.begin();
+  // The worst FRF again with an upper residual: how much of its E is the
+  // stiffness left in the band by the modes above it.
+  auto with_residual           = parameters;
+  with_residual.upper_residual = true;
+  const auto worst_again       = modal::identify(
+    green.frf(pairs[worst].first, pairs[worst].second, 4., 1001), with_residual);
   std::sort(errors.begin(), errors.end());
   std::sort(modes.begin(), modes.end());
   const auto pct = [&](double q) { return errors[std::size_t(q * (errors.size() - 1))]; };
@@ -110,6 +120,8 @@ main(int argc, char **argv)
               dealii::MultithreadInfo::n_threads(), reused, n_frf, seconds / identified * n_frf);
   std::printf("E (Eq. 50): min %.3g, median %.3g, 95%% %.3g, max %.3g\n", errors.front(), pct(0.5),
               pct(0.95), errors.back());
+  std::printf("Worst: g_%u,%u with E = %.3g (%.3g with an upper residual term)\n",
+              pairs[worst].first, pairs[worst].second, results[worst].error, worst_again.error);
   std::printf("N_m: min %.0f, median %.0f, max %.0f; zoom LSCE used for %u FRFs\n", modes.front(),
               modes[modes.size() / 2], modes.back(), zoomed);
   std::printf("Largest relative error of an identified pole, over the modes below 3.6 kHz that\n"
