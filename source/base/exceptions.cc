@@ -31,6 +31,16 @@ namespace greentread
 
 
 
+  std::string
+  format_printf(const char *format, const double value)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), format, value);
+    return buffer;
+  }
+
+
+
   void
   require_parameter(const bool         condition,
                     const std::string &path,

@@ -16,13 +16,6 @@ namespace greentread
   {
     namespace
     {
-      std::string
-      fmt(const char *format, const double value)
-      {
-        char buffer[64];
-        std::snprintf(buffer, sizeof(buffer), format, value);
-        return buffer;
-      }
 
       /// The (i, j) pairs named by 'Identification/Pairs' for n points.
       std::vector<std::pair<unsigned int, unsigned int>>
@@ -228,7 +221,7 @@ namespace greentread
       const std::string title =
         "g_{" + std::to_string(pairs[worst].first) + "," + std::to_string(pairs[worst].second) +
         "}: N_m = " + std::to_string(worst_id.n_modes) + ", E = " +
-        fmt("%.3g", 100. * worst_id.error) + " %";
+        format_printf("%.3g", 100. * worst_id.error) + " %";
       const bool plotted = base::plot_png(
         directory / "identification_worst.png",
         "set datafile separator ','\nset multiplot layout 2,1 title 'GreenTread identify, worst "
@@ -246,9 +239,9 @@ namespace greentread
       const std::string other_name = identification.residue_model == modal::ResidueModel::eq7 ?
                                        "general" :
                                        "eq7";
-      std::cout << "Error E (Eq. 50): min " << fmt("%.4g", *std::min_element(errors.begin(), errors.end()))
-                << ", median " << fmt("%.4g", median(errors)) << ", max "
-                << fmt("%.4g", errors[worst]) << " (worst: i = " << pairs[worst].first
+      std::cout << "Error E (Eq. 50): min " << format_printf("%.4g", *std::min_element(errors.begin(), errors.end()))
+                << ", median " << format_printf("%.4g", median(errors)) << ", max "
+                << format_printf("%.4g", errors[worst]) << " (worst: i = " << pairs[worst].first
                 << ", j = " << pairs[worst].second << ")\n"
                 << "Modes N_m: min " << *std::min_element(modes.begin(), modes.end())
                 << ", median " << median(modes) << ", max "
@@ -256,14 +249,14 @@ namespace greentread
       if (!other.empty())
         std::cout << "Residue models on the same poles: median E "
                   << modal::to_string(identification.residue_model) << " "
-                  << fmt("%.4g", median(errors)) << ", " << other_name << " "
-                  << fmt("%.4g", median(other)) << "; " << other_name << " fits better on "
+                  << format_printf("%.4g", median(errors)) << ", " << other_name << " "
+                  << format_printf("%.4g", median(other)) << "; " << other_name << " fits better on "
                   << other_better << " of " << other.size() << "\n";
       std::cout << "Roots of the LSCE polynomials: " << poles.roots << "; rejected "
                 << poles.unstable << " unstable, " << poles.out_of_band << " out of band, "
                 << poles.spurious << " spurious (not stable across orders); "
                 << poles.physical << " physical\n"
-                << "Largest condition estimate of a Hankel matrix: " << fmt("%.3g", condition)
+                << "Largest condition estimate of a Hankel matrix: " << format_printf("%.3g", condition)
                 << "\n";
       if (identification.bands == 0)
         std::cout << "Zoom LSCE (8 bands) used for " << bands_used << " of " << pairs.size()
@@ -273,8 +266,8 @@ namespace greentread
         std::cout << "Reciprocity: " << reused << " FRFs g_ij equal to g_ji were identified once "
                   << "for both\n";
       if (global.print_timings)
-        std::cout << "Run time: " << fmt("%.3g", seconds) << " s, "
-                  << fmt("%.3g", 1e3 * seconds / (pairs.size() - reused))
+        std::cout << "Run time: " << format_printf("%.3g", seconds) << " s, "
+                  << format_printf("%.3g", 1e3 * seconds / (pairs.size() - reused))
                   << " ms per FRF identified\n";
       std::cout << "Wrote modal_parameters.csv, identification_report.csv, "
                 << (identification.lower_residual || identification.upper_residual ?

@@ -14,19 +14,6 @@ namespace greentread
 {
   namespace scenes
   {
-    namespace
-    {
-      std::string
-      fmt(const char *format, const double value)
-      {
-        char buffer[64];
-        std::snprintf(buffer, sizeof(buffer), format, value);
-        return buffer;
-      }
-    } // namespace
-
-
-
     SdofScene::SdofScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
       : prm(prm_)
       , global(global_)
@@ -62,7 +49,7 @@ namespace greentread
                 << "  oscillator: M = " << format_number(osc.mass())
                 << " kg, K = " << format_number(osc.stiffness())
                 << " N/m, xi = " << format_number(osc.damping_ratio())
-                << ", f0 = " << fmt("%.4g", osc.natural_frequency() / (2 * M_PI)) << " Hz\n"
+                << ", f0 = " << format_printf("%.4g", osc.natural_frequency() / (2 * M_PI)) << " Hz\n"
                 << "  road: A0 = " << format_number(road.amplitude)
                 << " m, lambda_r = " << format_number(road.wavelength)
                 << " m, V0 = " << format_number(oscillator.speed) << " m/s\n"
@@ -83,8 +70,8 @@ namespace greentread
           std::cout << "  Green's function: identified by LSCE from the oscillator's FRF, "
                     << frf.values.size() << " lines to " << format_number(frf.f_max())
                     << " Hz: N_m = " << identified->n_modes << ", E = "
-                    << fmt("%.3g", identified->error) << ", pole error "
-                    << fmt("%.3g", pole_error) << "\n";
+                    << format_printf("%.3g", identified->error) << ", pole error "
+                    << format_printf("%.3g", pole_error) << "\n";
           modal::write_frf_csv(directory / "frf.csv", frf, record);
           base::AtomicFile file(directory / "modal_parameters.csv");
           file.stream().precision(16);
@@ -206,21 +193,21 @@ namespace greentread
       const double a0 = road.amplitude;
       std::cout << "Errors against the exact piecewise-analytic solution ("
                 << exact.n_impacts() << " impacts, " << exact.n_phases() << " phases):\n"
-                << "  max |u - u_exact|              = " << fmt("%.4g", e.max_u_error) << " m"
-                << (a0 > 0 ? " (" + fmt("%.4g", 100. * e.max_u_error / a0) + " % of A0)" : "")
+                << "  max |u - u_exact|              = " << format_printf("%.4g", e.max_u_error) << " m"
+                << (a0 > 0 ? " (" + format_printf("%.4g", 100. * e.max_u_error / a0) + " % of A0)" : "")
                 << "\n"
-                << "  max |v - v_exact|              = " << fmt("%.4g", e.max_v_error) << " m/s\n"
-                << "  max |F - F_exact| (step means) = " << fmt("%.4g", e.max_force_error)
-                << " N (peak contact force " << fmt("%.4g", e.peak_contact_force) << " N)\n"
-                << "  total impulse error            = " << fmt("%.4g", e.impulse_error) << "\n"
-                << "  max penetration at time steps  = " << fmt("%.4g", e.max_penetration_grid)
+                << "  max |v - v_exact|              = " << format_printf("%.4g", e.max_v_error) << " m/s\n"
+                << "  max |F - F_exact| (step means) = " << format_printf("%.4g", e.max_force_error)
+                << " N (peak contact force " << format_printf("%.4g", e.peak_contact_force) << " N)\n"
+                << "  total impulse error            = " << format_printf("%.4g", e.impulse_error) << "\n"
+                << "  max penetration at time steps  = " << format_printf("%.4g", e.max_penetration_grid)
                 << " m\n"
-                << "  max penetration inside steps   = " << fmt("%.4g", e.max_penetration_step)
+                << "  max penetration inside steps   = " << format_printf("%.4g", e.max_penetration_step)
                 << " m\n"
-                << "  fraction of time in contact    = " << fmt("%.4f", e.contact_fraction)
-                << " (exact " << fmt("%.4f", e.exact_contact_fraction) << ")\n";
+                << "  fraction of time in contact    = " << format_printf("%.4f", e.contact_fraction)
+                << " (exact " << format_printf("%.4f", e.exact_contact_fraction) << ")\n";
       if (identified)
-        std::cout << "  max |u - u(exact modal form)|  = " << fmt("%.4g", round_trip)
+        std::cout << "  max |u - u(exact modal form)|  = " << format_printf("%.4g", round_trip)
                   << " m (the round trip through LSCE)\n";
       if (contact.law == contact::ContactLaw::kinematic)
         {
@@ -231,9 +218,9 @@ namespace greentread
           std::cout << '\n';
         }
       if (global.print_timings)
-        std::cout << "Run time: " << fmt("%.4g", run.run_time) << " s for the time loop ("
-                  << fmt("%.3g", 1e9 * run.run_time / n_steps) << " ns per step), "
-                  << fmt("%.3g", exact_time) << " s for the exact reference\n";
+        std::cout << "Run time: " << format_printf("%.4g", run.run_time) << " s for the time loop ("
+                  << format_printf("%.3g", 1e9 * run.run_time / n_steps) << " ns per step), "
+                  << format_printf("%.3g", exact_time) << " s for the exact reference\n";
       std::cout << "Wrote time_history.csv, reference.csv, summary.csv, parameters.prm"
                 << (plotted ? ", time_history.png" : "")
                 << (identified ? ", frf.csv, modal_parameters.csv" : "") << " in "

@@ -50,6 +50,13 @@ namespace greentread
   format_short(double value);
 
   /**
+   * @brief Format one number with a printf conversion, e.g. "%.3e", for
+   * reports laid out in columns.
+   */
+  std::string
+  format_printf(const char *format, double value);
+
+  /**
    * @brief Throw an InputError naming a parameter unless @p condition holds.
    *
    * @param[in] condition What must be true of the value.
