@@ -26,6 +26,7 @@ packages=(
   libeigen3-dev         # Eigen 3.4
   libboost-test-dev     # Boost.Test for tests/unit
   libgmsh-dev gmsh      # gmsh API for the tyre section
+  calculix-ccx          # independent check of the tyre model (tests/unit/test_calculix.cc)
   numdiff               # deal.II-style regression tests
   gnuplot-nox           # PNG plots
   openmpi-bin           # mpirun

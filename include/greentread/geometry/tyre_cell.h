@@ -1,0 +1,170 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The tyre cell: a parametric section (a gmsh .geo file, geometry/), meshed
+ * with quadrilaterals and revolved by 2 pi / N about the tyre axis (z) into
+ * one periodic cell of hexahedra.
+ */
+
+namespace greentread
+{
+  namespace geometry
+  {
+    /// Boundary ids of the cell.
+    enum BoundaryId : unsigned char
+    {
+      free_surface    = 0, ///< every untagged outer face
+      rim_seat        = 1, ///< clamped to the rim
+      inner_surface   = 2, ///< carries the inflation pressure
+      tread_surface   = 3, ///< touches the road
+      periodic_first  = 4, ///< the section at theta = 0
+      periodic_second = 5  ///< the section at theta = 2 pi / N
+    };
+
+    /**
+     * @brief Subsection "Geometry".
+     *
+     * The named dimensions are handed to the .geo file as the ONELAB numbers
+     * "Parameters/<name>" (its DefineConstant defaults apply when it is
+     * opened by hand); a new design may use other names through
+     * 'Other constants'.
+     */
+    struct GeometryParameters
+    {
+      std::string  geo_file           = "geometry/tyre_165_65_r13.geo";
+      double       rim_diameter       = 0.3302;
+      double       section_height     = 0.10725;
+      double       tread_width        = 0.165;
+      double       section_width      = 0.175;
+      double       rim_width          = 0.1143;
+      double       tread_thickness    = 0.008;
+      double       belt_thickness     = 0.006;
+      double       sidewall_thickness = 0.006;
+      double       bead_width         = 0.008;
+      double       bead_height        = 0.008;
+      double       bulge_height       = 0.5;
+      double       mesh_size          = 0.008;
+      unsigned int n_cells            = 256;
+      std::string  other_constants;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * @throws InputError for an impossible geometry (layers that overlap or
+       * do not fit), naming the parameters.
+       */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /// The cell angle 2 pi / N [rad].
+      double
+      angle() const;
+
+      /// The ONELAB numbers handed to the .geo file.
+      std::map<std::string, double>
+      onelab_numbers() const;
+    };
+
+    /**
+     * @brief One block of the section, for the analytic volume: its corners
+     * in (radius, axial) order around it, and whether all its edges are
+     * straight.
+     */
+    struct SectionBlock
+    {
+      unsigned int                       material_id;
+      std::vector<std::array<double, 2>> corners;
+      bool                               straight;
+    };
+
+    /**
+     * @brief The meshed cell and its section.
+     */
+    class TyreCell
+    {
+    public:
+      /**
+       * @brief Mesh the section of @p parameters with gmsh, revolve it and
+       * build the deal.II triangulations.
+       * @throws InputError for a missing or broken .geo file, a gmsh error, a
+       * mesh that is not all hexahedra, or missing physical groups.
+       */
+      explicit TyreCell(const GeometryParameters &parameters);
+
+      /// The cell: hexahedra, material ids of MaterialId, boundary ids of BoundaryId.
+      const dealii::Triangulation<3> &
+      cell() const
+      {
+        return cell_triangulation;
+      }
+
+      /// The section in the (radius, axial) plane, with material ids.
+      const dealii::Triangulation<2> &
+      section() const
+      {
+        return section_triangulation;
+      }
+
+      /// The blocks of the section, as the .geo defines them.
+      const std::vector<SectionBlock> &
+      blocks() const
+      {
+        return section_blocks;
+      }
+
+      double
+      angle() const
+      {
+        return cell_angle;
+      }
+
+      unsigned int
+      n_cells() const
+      {
+        return ring_cells;
+      }
+
+      /**
+       * @brief Pappus: the volume of the layer @p material_id in the cell,
+       * angle x integral of the radius over the section [m^3], or nothing
+       * if a block of that layer has a curved edge (the formula would only
+       * see its corners).
+       */
+      std::optional<double>
+      analytic_volume(unsigned int material_id) const;
+
+    private:
+      dealii::Triangulation<3>  cell_triangulation;
+      dealii::Triangulation<2>  section_triangulation;
+      std::vector<SectionBlock> section_blocks;
+      double                    cell_angle;
+      unsigned int              ring_cells;
+    };
+
+    /**
+     * @brief The full ring: N rotated copies of @p cell merged (coinciding
+     * vertices joined), with the cylindrical manifold attached. Meant for
+     * coarse checks (rigid-body modes, CalculiX comparisons).
+     */
+    void
+    make_ring(const dealii::Triangulation<3> &cell,
+              double                          angle,
+              unsigned int                    n_cells,
+              dealii::Triangulation<3>       &ring);
+
+    /// Attach the cylindrical manifold about the z-axis to every cell.
+    void
+    attach_cylindrical_manifold(dealii::Triangulation<3> &triangulation);
+  } // namespace geometry
+} // namespace greentread
