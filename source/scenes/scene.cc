@@ -1,10 +1,13 @@
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
+#include <greentread/fe/material.h>
+#include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/scenes/identify_scene.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/sdof_scene.h>
+#include <greentread/scenes/tyre_cell_scene.h>
 #include <greentread/sdof/oscillator.h>
 
 namespace greentread
@@ -14,10 +17,13 @@ namespace greentread
     void
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Scene", "sdof", dealii::Patterns::Selection("sdof|identify"),
+      prm.declare_entry("Scene", "sdof",
+                        dealii::Patterns::Selection("sdof|identify|geometry-study|tire-cell"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
                         "sinusoidal road (paper, Section 3), with its exact solution. "
-                        "'identify': modal identification (LSCE, Appendix A) of FRFs.");
+                        "'identify': modal identification (LSCE, Appendix A) of FRFs. "
+                        "'geometry-study': the tyre section and cell, masses and inflation. "
+                        "'tire-cell': the same and the cell matrices K, M, C, Kp.");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
                         "paths are relative to the working directory.");
@@ -47,6 +53,9 @@ namespace greentread
       contact::ContactParameters::declare_parameters(prm);
       convolution::ConvolutionParameters::declare_parameters(prm);
       modal::IdentificationParameters::declare_parameters(prm);
+      geometry::GeometryParameters::declare_parameters(prm);
+      fe::MaterialParameters::declare_parameters(prm);
+      InflationParameters::declare_parameters(prm);
     }
 
 
@@ -59,6 +68,8 @@ namespace greentread
       // The Selection pattern has rejected any other name.
       if (global.scene == "identify")
         return std::make_unique<IdentifyScene>(prm, global);
+      if (global.scene == "geometry-study" || global.scene == "tire-cell")
+        return std::make_unique<TyreCellScene>(prm, global);
       return std::make_unique<SdofScene>(prm, global);
     }
   } // namespace scenes
