@@ -480,13 +480,15 @@ namespace greentread
     void
     ElasticModel::write_vtu(const Vector<double> &u, const std::filesystem::path &file) const
     {
+      // The postprocessor first: DataOut keeps a pointer to it and must be
+      // destroyed before it.
+      StressPostprocessor      stress_output(*this);
       DataOut<3>               out;
       out.attach_dof_handler(dofs);
       std::vector<std::string> names(3, "displacement");
       std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(
         3, DataComponentInterpretation::component_is_part_of_vector);
       out.add_data_vector(u, names, DataOut<3>::type_dof_data, kinds);
-      StressPostprocessor stress_output(*this);
       out.add_data_vector(u, stress_output);
       out.build_patches(map, fe.degree, DataOut<3>::curved_inner_cells);
       base::AtomicFile vtu(file);

@@ -38,6 +38,11 @@ namespace greentread
       if (!cylindrical_axes)
         return stiffness;
       const double rho = std::hypot(p[0], p[1]);
+      // On the axis the cylindrical axes are undefined (0 / 0).
+      if (!(rho > 1e-12 * (std::abs(p[2]) + 1.)))
+        throw InputError("the " + name + " has cylindrical material axes, which are undefined "
+                         "on the tyre axis, but a point of it lies there: the section must "
+                         "stay at a radius > 0");
       // Columns: e_r, e_theta, e_z in global components.
       const double c = p[0] / rho, s = p[1] / rho;
       const double Q[3][3] = {{c, -s, 0.}, {s, c, 0.}, {0., 0., 1.}};

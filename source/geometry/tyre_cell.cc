@@ -175,9 +175,18 @@ namespace greentread
       {
         GmshSession()
         {
-          gmsh::initialize();
-          gmsh::option::setNumber("General.Terminal", 0);
-          gmsh::logger::start();
+          // No user option files: the same .geo gives the same mesh anywhere.
+          gmsh::initialize(0, nullptr, false);
+          try
+            {
+              gmsh::option::setNumber("General.Terminal", 0);
+              gmsh::logger::start();
+            }
+          catch (...)
+            {
+              gmsh::finalize();
+              throw;
+            }
         }
         ~GmshSession()
         {
@@ -299,7 +308,8 @@ namespace greentread
                 throw InputError("geometry file '" + file + "': physical surface '" + name +
                                  "' is not a material GreenTread knows; allowed: tread, belt, "
                                  "sidewall, bead");
-              surfaces_of_material[m->second] = entities;
+              auto &surfaces = surfaces_of_material[m->second];
+              surfaces.insert(surfaces.end(), entities.begin(), entities.end());
             }
           else if (dim == 1)
             {
@@ -308,11 +318,29 @@ namespace greentread
                 throw InputError("geometry file '" + file + "': physical curve '" + name +
                                  "' is not a boundary GreenTread knows; allowed: rim seat, inner "
                                  "surface, tread surface (leave interfaces untagged)");
-              curves_of_boundary[b->second] = entities;
+              auto &curves = curves_of_boundary[b->second];
+              curves.insert(curves.end(), entities.begin(), entities.end());
             }
         }
       if (surfaces_of_material.empty())
         throw InputError("geometry file '" + file + "' defines no physical surface (material)");
+      // Every surface in exactly one material: a surface left out would
+      // silently cut a hole in the section.
+      {
+        std::map<int, unsigned int> groups_of_surface;
+        for (const auto &[material, surfaces] : surfaces_of_material)
+          for (const int s : surfaces)
+            ++groups_of_surface[s];
+        gmsh::vectorpair entities;
+        gmsh::model::getEntities(entities, 2);
+        for (const auto &[dim, s] : entities)
+          if (groups_of_surface[s] != 1)
+            throw InputError("geometry file '" + file + "': surface " + std::to_string(s) +
+                             (groups_of_surface[s] == 0 ? " is in no physical surface" :
+                                                          " is in more than one physical surface") +
+                             "; each surface must be in exactly one of tread, belt, sidewall, "
+                             "bead");
+      }
       for (const auto &[name, id] : boundary_names)
         if (curves_of_boundary.count(id) == 0)
           throw InputError("geometry file '" + file + "' has no physical curve '" + name + "'");
@@ -336,7 +364,13 @@ namespace greentread
                 gmsh::vectorpair ends;
                 gmsh::model::getBoundary({{1, signed_curve}}, ends, false, true, false);
                 std::vector<double> xyz;
-                gmsh::model::getValue(0, ends.front().second, {}, xyz);
+                if (!ends.empty())
+                  gmsh::model::getValue(0, ends.front().second, {}, xyz);
+                if (xyz.size() != 3)
+                  throw InputError("geometry file '" + file + "': curve " +
+                                   std::to_string(std::abs(signed_curve)) + " of surface " +
+                                   std::to_string(s) + " has no end points; the section must be "
+                                   "made of quadrilateral blocks bounded by open curves");
                 block.corners.push_back({{xyz[0], xyz[2]}});
               }
             section_blocks.push_back(block);
@@ -554,11 +588,24 @@ namespace greentread
                               std::llround(c[2] / scale));
       };
       std::map<std::pair<long long, long long>, dealii::types::boundary_id> ids;
+      std::size_t outer_faces = 0, ring_faces = 0;
       for (const auto &cell_iterator : cell.active_cell_iterators())
         for (const auto &face : cell_iterator->face_iterators())
           if (face->at_boundary() && face->boundary_id() != periodic_first &&
               face->boundary_id() != periodic_second)
-            ids[key(*face)] = face->boundary_id();
+            {
+              ids[key(*face)] = face->boundary_id();
+              ++outer_faces;
+            }
+      for (const auto &cell_iterator : ring.active_cell_iterators())
+        for (const auto &face : cell_iterator->face_iterators())
+          ring_faces += face->at_boundary();
+      // Every seam closed: a vertex left unmerged would leave a slit.
+      if (ring_faces != n_cells * outer_faces)
+        throw NumericalError("the ring of " + std::to_string(n_cells) + " cells has " +
+                             std::to_string(ring_faces) + " boundary faces, not " +
+                             std::to_string(n_cells * outer_faces) +
+                             ": the periodic faces of the cell do not match when rotated");
       for (const auto &cell_iterator : ring.active_cell_iterators())
         for (const auto &face : cell_iterator->face_iterators())
           if (face->at_boundary())
