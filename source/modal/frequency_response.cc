@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace greentread
@@ -151,6 +152,49 @@ namespace greentread
 
 
 
+    std::vector<std::pair<unsigned int, unsigned int>>
+    parse_point_pairs(const std::string &text,
+                      const unsigned int n,
+                      const std::string &parameter)
+    {
+      std::vector<std::pair<unsigned int, unsigned int>> pairs;
+      if (text == "all")
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              pairs.emplace_back(i, j);
+          return pairs;
+        }
+      if (text == "diagonal")
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            pairs.emplace_back(i, i);
+          return pairs;
+        }
+      const std::regex item("^\\s*([0-9]+)\\s*:\\s*([0-9]+)\\s*$");
+      std::size_t      begin = 0;
+      while (begin <= text.size())
+        {
+          const std::size_t comma = std::min(text.find(',', begin), text.size());
+          const std::string part  = text.substr(begin, comma - begin);
+          std::smatch       m;
+          if (!std::regex_match(part, m, item))
+            throw InputError("parameter '" + parameter + "' = " + text +
+                             " is not allowed; allowed: 'all', 'diagonal' or a list "
+                             "'i:j, i:j, ...' of 0-based point indices ('" + part + "')");
+          const unsigned int i = std::stoul(m[1]), j = std::stoul(m[2]);
+          if (i >= n || j >= n)
+            throw InputError("parameter '" + parameter + "' names the pair " + part +
+                             ", but there are only " + std::to_string(n) +
+                             " points (indices 0 to " + std::to_string(n - 1) + ")");
+          pairs.emplace_back(i, j);
+          begin = comma + 1;
+        }
+      return pairs;
+    }
+
+
+
     FrequencyResponse
     FrequencyResponseMatrix::get(const unsigned int i, const unsigned int j) const
     {
@@ -258,10 +302,43 @@ namespace greentread
 
 
 
+    std::string
+    read_green_stage_key(const std::string &file)
+    {
+      if (!std::filesystem::exists(file))
+        return {};
+      // Silence HDF5's own error printing: a file without the attribute, or
+      // not an HDF5 file at all, simply has no key.
+      H5E_auto2_t handler;
+      void       *data;
+      H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+      std::string key;
+      if (H5Fis_hdf5(file.c_str()) > 0)
+        {
+          const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+          if (id >= 0)
+            {
+              const bool has_key = H5Aexists(id, "stage_key") > 0;
+              H5Fclose(id);
+              if (has_key)
+                {
+                  dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
+                  key = h5.get_attribute<std::string>("stage_key");
+                }
+            }
+        }
+      H5Eset_auto2(H5E_DEFAULT, handler, data);
+      return key;
+    }
+
+
+
     void
     write_green_hdf5(const std::filesystem::path  &file,
                      const FrequencyResponseMatrix &green,
-                     const base::ParameterRecord  &record)
+                     const base::ParameterRecord  &record,
+                     const std::string            &stage_key)
     {
       // HDF5 writes through its own file handle: reserve the temporary name
       // with an AtomicFile, let HDF5 fill it, then rename.
@@ -282,6 +359,8 @@ namespace greentread
             "green", {green.n_lines, green.points.size(), green.points.size()})
           .write(green.values);
         h5.set_attribute("parameters", record.text());
+        if (!stage_key.empty())
+          h5.set_attribute("stage_key", stage_key);
       }
       target.commit();
     }

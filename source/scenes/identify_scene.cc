@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <regex>
 
 namespace greentread
 {
@@ -16,46 +15,6 @@ namespace greentread
   {
     namespace
     {
-
-      /// The (i, j) pairs named by 'Identification/Pairs' for n points.
-      std::vector<std::pair<unsigned int, unsigned int>>
-      parse_pairs(const std::string &text, const unsigned int n)
-      {
-        std::vector<std::pair<unsigned int, unsigned int>> pairs;
-        if (text == "all")
-          {
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                pairs.emplace_back(i, j);
-            return pairs;
-          }
-        if (text == "diagonal")
-          {
-            for (unsigned int i = 0; i < n; ++i)
-              pairs.emplace_back(i, i);
-            return pairs;
-          }
-        const std::regex item("^\\s*([0-9]+)\\s*:\\s*([0-9]+)\\s*$");
-        std::size_t      begin = 0;
-        while (begin <= text.size())
-          {
-            const std::size_t comma = std::min(text.find(',', begin), text.size());
-            const std::string part  = text.substr(begin, comma - begin);
-            std::smatch       m;
-            if (!std::regex_match(part, m, item))
-              throw InputError("parameter 'Identification/Pairs' = " + text +
-                               " is not allowed; allowed: 'all', 'diagonal' or a list "
-                               "'i:j, i:j, ...' of 0-based point indices ('" + part + "')");
-            const unsigned int i = std::stoul(m[1]), j = std::stoul(m[2]);
-            if (i >= n || j >= n)
-              throw InputError("parameter 'Identification/Pairs' names the pair " + part +
-                               ", but the Green's function file has only " + std::to_string(n) +
-                               " points (indices 0 to " + std::to_string(n - 1) + ")");
-            pairs.emplace_back(i, j);
-            begin = comma + 1;
-          }
-        return pairs;
-      }
 
       double
       median(std::vector<double> values)
@@ -104,7 +63,8 @@ namespace greentread
       else
         {
           green  = modal::read_green_hdf5(identification.green_file);
-          pairs  = parse_pairs(identification.pairs, green.n_points());
+          pairs  = modal::parse_point_pairs(identification.pairs, green.n_points(),
+                                            "Identification/Pairs");
           source = identification.green_file;
         }
       const double df      = single.values.empty() ? green.df : single.df;

@@ -89,6 +89,17 @@ namespace greentread
     };
 
     /**
+     * @brief The pairs (i, j) of 0-based point indices named by @p text:
+     * "all", "diagonal", or a list "i:j, i:j, ...".
+     * @throws InputError naming @p parameter if the text is malformed or an
+     * index is not below @p n_points.
+     */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    parse_point_pairs(const std::string &text,
+                      unsigned int       n_points,
+                      const std::string &parameter);
+
+    /**
      * @brief Read a Green's function file, an HDF5 file with the layout
      * - `/frequency`: double[n_f], the lines in Hz, uniform from 0;
      * - `/points`: double[n_p][3], the contact points in m;
@@ -102,11 +113,21 @@ namespace greentread
 
     /**
      * @brief Write a Green's function file in the layout of read_green_hdf5(),
-     * under a temporary name renamed when complete.
+     * under a temporary name renamed when complete. The root attributes
+     * `parameters` (the record, for people) and, if not empty, `stage_key`
+     * (what the result depends on, for the stage cache) are written too.
      */
     void
     write_green_hdf5(const std::filesystem::path  &file,
                      const FrequencyResponseMatrix &green,
-                     const base::ParameterRecord  &record);
+                     const base::ParameterRecord  &record,
+                     const std::string            &stage_key = {});
+
+    /**
+     * @brief The `stage_key` attribute of a Green's function file, or an
+     * empty string if the file, or its key, does not exist.
+     */
+    std::string
+    read_green_stage_key(const std::string &file);
   } // namespace modal
 } // namespace greentread

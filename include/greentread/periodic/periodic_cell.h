@@ -1,0 +1,94 @@
+#pragma once
+
+#include <greentread/fe/elastic_model.h>
+
+#include <Eigen/Sparse>
+
+#include <array>
+#include <complex>
+#include <vector>
+
+/**
+ * @file
+ * The reference cell of the paper's periodic model (Section 4.2, Eqs. 42-45):
+ * the cell's matrices in cylindrical components, so that every cell of the
+ * ring has the same ones, with its DoFs split into the left face (theta = 0),
+ * the interior and the right face (theta = 2 pi / N).
+ */
+
+namespace greentread
+{
+  namespace periodic
+  {
+    using Complex       = std::complex<double>;
+    using SparseReal    = Eigen::SparseMatrix<double>;
+    using SparseComplex = Eigen::SparseMatrix<Complex>;
+
+    /// Where a DoF of the reference cell sits and which component it is.
+    struct CellDof
+    {
+      double       radius;    ///< of its node [m]
+      double       axial;     ///< z of its node [m]
+      double       angle;     ///< theta of its node, 0 on the left face [rad]
+      unsigned int component; ///< 0 radial, 1 circumferential, 2 axial
+      bool         on_tread;  ///< its node is on the tread surface
+    };
+
+    /**
+     * @brief One cell of a ring of N identical cells, in cylindrical
+     * components (Eqs. 43-44), with the DoFs ordered [L, I, R]: the n_face
+     * DoFs of the left face, the n_interior DoFs inside, and the n_face DoFs
+     * of the right face, R[i] being L[i] rotated by the cell angle. Clamped
+     * DoFs (the rim seat) are left out.
+     */
+    struct PeriodicCell
+    {
+      double       angle   = 0.; ///< 2 pi / N [rad]
+      unsigned int n_cells = 0;  ///< N
+      unsigned int n_face = 0, n_interior = 0;
+
+      /// K + Kp, C and M over [L, I, R].
+      SparseReal stiffness, damping, mass;
+
+      /// For each DoF of [L, I, R].
+      std::vector<CellDof> dofs;
+
+      /// The nodes of [L, I] whose DoFs are all clamped: radius, axial,
+      /// angle (for plots of the whole ring).
+      std::vector<std::array<double, 3>> held_nodes;
+
+      unsigned int
+      size() const
+      {
+        return 2 * n_face + n_interior;
+      }
+
+      /// D(w) = K + Kp + j w C - w^2 M of Eq. (45).
+      SparseComplex
+      dynamic_stiffness(double omega) const;
+    };
+
+    /**
+     * @brief Build the reference cell from the assembled @p model of a cell
+     * revolved by @p angle about the z-axis.
+     *
+     * @param[in] model         K, M, C assembled; Kp too if
+     *                          @p with_prestress.
+     * @param[in] angle         The cell angle 2 pi / N.
+     * @param[in] n_cells       N.
+     * @param[in] clamped       Boundary id whose DoFs are held (the rim seat).
+     * @param[in] tread         Boundary id of the tread surface (marks
+     *                          CellDof::on_tread).
+     * @param[in] with_prestress Add Kp to K.
+     * @throws InputError if a node of one periodic face has no partner on
+     * the other (the faces do not match), naming the node.
+     */
+    PeriodicCell
+    make_periodic_cell(const fe::ElasticModel    &model,
+                       double                     angle,
+                       unsigned int               n_cells,
+                       dealii::types::boundary_id clamped,
+                       dealii::types::boundary_id tread,
+                       bool                       with_prestress);
+  } // namespace periodic
+} // namespace greentread

@@ -1,0 +1,568 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/periodic/green_solvers.h>
+
+#include <Eigen/LU>
+#include <Eigen/SparseLU>
+#include <Eigen/UmfPackSupport>
+
+#include <algorithm>
+#include <cmath>
+
+namespace greentread
+{
+  namespace periodic
+  {
+    Method
+    parse_method(const std::string &name)
+    {
+      if (name == "bloch")
+        return Method::bloch;
+      if (name == "doubling")
+        return Method::doubling;
+      if (name == "full-ring")
+        return Method::full_ring;
+      throw InputError("parameter 'Green's functions/Method' = " + name +
+                       " is not allowed; allowed: bloch, doubling, full-ring");
+    }
+
+
+
+    namespace
+    {
+      // The Bloch cell problems: Eigen's supernodal LU with COLAMD was the
+      // fastest on the tyre cell (AMD: 70 times slower, measured). The long
+      // chains of cells (the full ring, Eq. 49): UMFPACK, whose ordering
+      // suits them far better.
+      using SparseLU = Eigen::SparseLU<SparseComplex, Eigen::COLAMDOrdering<int>>;
+      using ChainLU  = Eigen::UmfPackLU<SparseComplex>;
+      using Dense    = Eigen::MatrixXcd;
+
+      std::string
+      at_frequency(const double omega)
+      {
+        return "f = " + format_short(omega / (2. * M_PI)) + " Hz";
+      }
+
+      /// Throw unless the factorisation worked.
+      template <typename LU>
+      void
+      require_factorised(const LU &lu, const double omega, const std::string &what)
+      {
+        if (lu.info() != Eigen::Success)
+          throw NumericalError("the dynamic stiffness " + what + " is singular at " +
+                               at_frequency(omega) +
+                               ": an undamped resonance? Give the materials a loss factor or "
+                               "move the frequency grid");
+      }
+
+      /// |z| without std::abs's overflow guard (hypot), which dominated
+      /// the checks; the entries here are far from overflow.
+      inline double
+      magnitude(const Complex z)
+      {
+        return std::sqrt(z.real() * z.real() + z.imag() * z.imag());
+      }
+
+      /// The largest column sum of |A| (the 1-norm).
+      double
+      norm_1(const SparseComplex &A)
+      {
+        double largest = 0.;
+        for (int c = 0; c < A.outerSize(); ++c)
+          {
+            double sum = 0.;
+            for (SparseComplex::InnerIterator it(A, c); it; ++it)
+              sum += magnitude(it.value());
+            largest = std::max(largest, sum);
+          }
+        return largest;
+      }
+
+      /**
+       * Check A X = B for unit-vector columns B, on one combination of the
+       * columns, x = X w and b = B w with weights w_j = 1 + j / n (a single
+       * sparse product instead of one per column: a wrong column shows in it
+       * unless it cancels against the others, which these weights make all
+       * but impossible):
+       * - the normwise backward error |A x - b| / (|A|_1 |x| + |b|), which a
+       *   stable LU keeps near round-off however ill-conditioned A is;
+       * - the condition lower bound |A|_1 max_j |X_j|_1 (each X_j a column
+       *   of A^{-1}): the forward error is about their product.
+       * Throws past the limits.
+       */
+      void
+      check_solution(const SparseComplex    &A,
+                     const Dense            &X,
+                     const Dense            &B,
+                     const double            omega,
+                     const std::string      &what,
+                     SolveDiagnostics       &diagnostics)
+      {
+        Eigen::VectorXcd w(X.cols());
+        for (int j = 0; j < X.cols(); ++j)
+          w(j) = 1. + double(j) / X.cols();
+        const Eigen::VectorXcd b      = B * w;
+        const Eigen::VectorXcd x      = X * w;
+        const double           A_norm = norm_1(A);
+        Eigen::VectorXcd       r      = A * x;
+        r -= b;
+        const double residual = r.norm() / (A_norm * x.norm() + b.norm());
+        double       inverse  = 0.;
+        for (int j = 0; j < X.cols(); ++j)
+          {
+            double sum = 0.;
+            for (int i = 0; i < X.rows(); ++i)
+              sum += magnitude(X(i, j));
+            inverse = std::max(inverse, sum);
+          }
+        const double condition = A_norm * inverse;
+        if (!std::isfinite(residual) || !std::isfinite(condition))
+          throw NumericalError("the solve of " + what + " at " + at_frequency(omega) +
+                               " gave NaN or inf");
+        if (condition > condition_limit || residual > residual_limit)
+          throw NumericalError("the dynamic stiffness " + what + " is nearly singular at " +
+                               at_frequency(omega) + ": condition number >= " +
+                               format_short(condition) + ", backward error " +
+                               format_short(residual) +
+                               ": an undamped resonance? Give the materials a loss factor or "
+                               "move the frequency grid");
+        diagnostics.max_residual  = std::max(diagnostics.max_residual, residual);
+        diagnostics.max_condition = std::max(diagnostics.max_condition, condition);
+      }
+
+      /// The distinct reference DoFs of the contact points, and each point's slot.
+      void
+      contact_slots(const ContactPatch         &patch,
+                    std::vector<unsigned int>  &dofs,
+                    std::vector<unsigned int>  &slot)
+      {
+        for (const auto &p : patch.points)
+          dofs.push_back(p.dof);
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        for (const auto &p : patch.points)
+          slot.push_back(static_cast<unsigned int>(
+            std::lower_bound(dofs.begin(), dofs.end(), p.dof) - dofs.begin()));
+      }
+
+
+
+      /**
+       * Bloch: the ring's response to a unit force at cell n is
+       * (1/N) sum_k e^{i phi_k (m - n)} D_k^{-1} e_b, phi_k = 2 pi k / N.
+       */
+      class BlochSolver : public GreenSolver
+      {
+      public:
+        BlochSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
+          : cell(cell_)
+          , patch(patch_)
+          , bloch(cell_)
+        {
+          contact_slots(patch, contact_dofs, slot);
+        }
+
+        Dense
+        solve(const double omega, SolveDiagnostics &diagnostics) override
+        {
+          bloch.set_frequency(omega);
+          const unsigned int N = cell.n_cells, n_slots = contact_dofs.size();
+          Dense              B = Dense::Zero(bloch.size(), n_slots);
+          for (unsigned int s = 0; s < n_slots; ++s)
+            B(contact_dofs[s], s) = 1.;
+          const unsigned int P = patch.points.size();
+          Dense              g = Dense::Zero(P, P);
+          // k and N - k: D_{N-k} = D_k^T, so H_{N-k} = H_k^T.
+          for (unsigned int k = 0; 2 * k <= N; ++k)
+            {
+              const double         phi = 2. * M_PI * k / N;
+              const SparseComplex &D_k = bloch.assemble(phi);
+              if (!analysed)
+                {
+                  lu.analyzePattern(D_k);
+                  analysed = true;
+                }
+              lu.factorize(D_k);
+              require_factorised(lu, omega, "of Bloch wavenumber " + std::to_string(k));
+              const Dense X = lu.solve(B);
+              check_solution(D_k, X, B, omega, "of Bloch wavenumber " + std::to_string(k),
+                             diagnostics);
+              const bool paired = k != 0 && 2 * k != N;
+              // e^{i phi d} for the cell distances d = c_p - c_q.
+              const int            n_c = static_cast<int>(patch.n_contact_cells);
+              std::vector<Complex> phase(2 * n_c + 1);
+              for (int d = -n_c; d <= n_c; ++d)
+                phase[d + n_c] = std::polar(1., phi * d);
+              for (unsigned int p = 0; p < P; ++p)
+                for (unsigned int q = 0; q < P; ++q)
+                  {
+                    const int     d = static_cast<int>(patch.points[p].cell) -
+                                  static_cast<int>(patch.points[q].cell);
+                    const Complex e = phase[d + n_c];
+                    g(p, q) += e * X(contact_dofs[slot[p]], slot[q]);
+                    if (paired)
+                      g(p, q) += std::conj(e) * X(contact_dofs[slot[q]], slot[p]);
+                  }
+            }
+          return g / static_cast<double>(N);
+        }
+
+      private:
+        const PeriodicCell       &cell;
+        const ContactPatch       &patch;
+        BlochCell                 bloch;
+        std::vector<unsigned int> contact_dofs, slot;
+        SparseLU                  lu;
+        bool                      analysed = false;
+      };
+
+
+
+      /**
+       * A chain of cells: unknowns are the faces 0 .. n_faces - 1, then the
+       * interiors 0 .. n_chain - 1. Cell m joins face m, interior m and face
+       * (m + 1) mod n_faces: an open chain has n_chain + 1 faces, a closed
+       * ring n_chain.
+       */
+      struct Chain
+      {
+        unsigned int n_face, n_interior, n_chain, n_faces;
+
+        unsigned int
+        size() const
+        {
+          return n_faces * n_face + n_chain * n_interior;
+        }
+        /// The chain index of DoF i of cell m's [L, I, R].
+        unsigned int
+        index(const unsigned int m, const unsigned int i) const
+        {
+          if (i < n_face)
+            return m * n_face + i;
+          if (i < n_face + n_interior)
+            return n_faces * n_face + m * n_interior + (i - n_face);
+          return ((m + 1) % n_faces) * n_face + (i - n_face - n_interior);
+        }
+        void
+        add(const SparseComplex &D, std::vector<Eigen::Triplet<Complex>> &entries) const
+        {
+          for (unsigned int m = 0; m < n_chain; ++m)
+            for (int c = 0; c < D.outerSize(); ++c)
+              for (SparseComplex::InnerIterator it(D, c); it; ++it)
+                entries.emplace_back(index(m, it.row()), index(m, it.col()), it.value());
+        }
+        /// Unit radial loads at the contact points' DoFs.
+        Dense
+        loads(const ContactPatch &patch) const
+        {
+          Dense B = Dense::Zero(size(), patch.points.size());
+          for (unsigned int q = 0; q < patch.points.size(); ++q)
+            B(index(patch.points[q].cell, patch.points[q].dof), q) = 1.;
+          return B;
+        }
+        /// g(p, q) from the solutions X of the loads.
+        Dense
+        at_points(const ContactPatch &patch, const Dense &X) const
+        {
+          const unsigned int P = patch.points.size();
+          Dense              g(P, P);
+          for (unsigned int p = 0; p < P; ++p)
+            g.row(p) = X.row(index(patch.points[p].cell, patch.points[p].dof));
+          return g;
+        }
+      };
+
+
+
+      /// The reference: all N cells assembled, one sparse solve.
+      class FullRingSolver : public GreenSolver
+      {
+      public:
+        FullRingSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
+          : cell(cell_)
+          , patch(patch_)
+          , ring{cell_.n_face, cell_.n_interior, cell_.n_cells, cell_.n_cells}
+        {}
+
+        Dense
+        solve(const double omega, SolveDiagnostics &diagnostics) override
+        {
+          std::vector<Eigen::Triplet<Complex>> entries;
+          ring.add(cell.dynamic_stiffness(omega), entries);
+          SparseComplex A(ring.size(), ring.size());
+          A.setFromTriplets(entries.begin(), entries.end());
+          A.makeCompressed();
+          if (!analysed)
+            {
+              lu.analyzePattern(A);
+              analysed = true;
+            }
+          lu.factorize(A);
+          require_factorised(lu, omega, "of the full ring");
+          const Dense B = ring.loads(patch);
+          const Dense X = lu.solve(B);
+          check_solution(A, X, B, omega, "of the full ring", diagnostics);
+          return ring.at_points(patch, X);
+        }
+
+      private:
+        const PeriodicCell &cell;
+        const ContactPatch &patch;
+        const Chain         ring;
+        ChainLU             lu;
+        bool                analysed = false;
+      };
+
+
+
+      /// A stretch of cells condensed onto its two end faces (Eq. 46).
+      struct SuperElement
+      {
+        Dense LL, LR, RL, RR;
+      };
+
+      /// Eq. (47): A followed by B, the face between them eliminated.
+      SuperElement
+      join(const SuperElement &A,
+           const SuperElement &B,
+           const double        omega,
+           SolveDiagnostics   &diagnostics)
+      {
+        const Eigen::PartialPivLU<Dense> S(A.RR + B.LL);
+        const double condition = 1. / S.rcond();
+        if (!std::isfinite(condition) || condition > condition_limit)
+          throw NumericalError("the doubling (Eq. 47) meets a nearly singular D_RR + D_LL at " +
+                               at_frequency(omega) + ": condition number about " +
+                               format_short(condition) +
+                               ": an undamped resonance? Give the materials a loss factor or "
+                               "move the frequency grid");
+        diagnostics.max_condition = std::max(diagnostics.max_condition, condition);
+        const Dense X1 = S.solve(A.RL);
+        const Dense X2 = S.solve(B.LR);
+        return {A.LL - A.LR * X1, -A.LR * X2, -B.RL * X1, B.RR - B.RL * X2};
+      }
+
+
+
+      /// The paper's method: doubling for the free part, then Eq. (49).
+      class DoublingSolver : public GreenSolver
+      {
+      public:
+        DoublingSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
+          : cell(cell_)
+          , patch(patch_)
+          , contact{cell_.n_face, cell_.n_interior, patch_.n_contact_cells,
+                    patch_.n_contact_cells + 1}
+        {}
+
+        Dense
+        solve(const double omega, SolveDiagnostics &diagnostics) override
+        {
+          const SparseComplex D  = cell.dynamic_stiffness(omega);
+          const unsigned int  nf = cell.n_face, ni = cell.n_interior;
+
+          // The cell condensed onto its faces: S = D_bb - D_bI D_II^-1 D_Ib.
+          SuperElement one;
+          {
+            SparseComplex D_II = D.block(nf, nf, ni, ni);
+            D_II.makeCompressed();
+            SparseLU interior;
+            interior.analyzePattern(D_II);
+            interior.factorize(D_II);
+            require_factorised(interior, omega, "of the cell's interior");
+            Dense D_Ib(ni, 2 * nf);
+            D_Ib << Dense(D.block(nf, 0, ni, nf)), Dense(D.block(nf, nf + ni, ni, nf));
+            const Dense Y = interior.solve(D_Ib);
+            // The backward error, as check_solution() measures it.
+            const double residual = (D_II * Y - D_Ib).norm() /
+                                    (norm_1(D_II) * Y.norm() + D_Ib.norm() + 1e-300);
+            if (!(residual < residual_limit))
+              throw NumericalError("the condensation of the cell's interior at " +
+                                   at_frequency(omega) + " left a backward error of " +
+                                   format_short(residual));
+            diagnostics.max_residual = std::max(diagnostics.max_residual, residual);
+            const auto rows = [&](const int first, const int columns_first, const int n_columns) {
+              return Dense(D.block(first, columns_first, nf, n_columns));
+            };
+            const Dense DL_I = rows(0, nf, ni), DR_I = rows(nf + ni, nf, ni);
+            one.LL = rows(0, 0, nf) - DL_I * Y.leftCols(nf);
+            one.LR = rows(0, nf + ni, nf) - DL_I * Y.rightCols(nf);
+            one.RL = rows(nf + ni, 0, nf) - DR_I * Y.leftCols(nf);
+            one.RR = rows(nf + ni, nf + ni, nf) - DR_I * Y.rightCols(nf);
+          }
+
+          // The free part, N_l cells, along the binary digits of N_l (Eq. 48).
+          const unsigned int n_free = cell.n_cells - patch.n_contact_cells;
+          SuperElement       power = one, free_part;
+          bool               started = false;
+          for (unsigned int bits = n_free; bits != 0; bits >>= 1)
+            {
+              if (bits & 1u)
+                {
+                  free_part = started ? join(free_part, power, omega, diagnostics) : power;
+                  started   = true;
+                }
+              if (bits >> 1)
+                power = join(power, power, omega, diagnostics);
+            }
+
+          // Eq. (49): the contact cells, then the free part from the last
+          // contact face back round to the first.
+          std::vector<Eigen::Triplet<Complex>> entries;
+          contact.add(D, entries);
+          const unsigned int first = 0, last = patch.n_contact_cells * nf;
+          for (unsigned int i = 0; i < nf; ++i)
+            for (unsigned int j = 0; j < nf; ++j)
+              {
+                entries.emplace_back(last + i, last + j, free_part.LL(i, j));
+                entries.emplace_back(last + i, first + j, free_part.LR(i, j));
+                entries.emplace_back(first + i, last + j, free_part.RL(i, j));
+                entries.emplace_back(first + i, first + j, free_part.RR(i, j));
+              }
+          SparseComplex A(contact.size(), contact.size());
+          A.setFromTriplets(entries.begin(), entries.end());
+          A.makeCompressed();
+          ChainLU lu;
+          lu.analyzePattern(A);
+          lu.factorize(A);
+          require_factorised(lu, omega, "of the ring (Eq. 49)");
+          const Dense B = contact.loads(patch);
+          const Dense X = lu.solve(B);
+          check_solution(A, X, B, omega, "of the ring (Eq. 49)", diagnostics);
+          return contact.at_points(patch, X);
+        }
+
+      private:
+        const PeriodicCell &cell;
+        const ContactPatch &patch;
+        const Chain         contact;
+      };
+    } // namespace
+
+
+
+    BlochCell::BlochCell(const PeriodicCell &cell)
+      : n_reduced(cell.n_face + cell.n_interior)
+    {
+      // Fold R onto L. Phase class 0: none; 1: e^{i phi} (column on R);
+      // 2: e^{-i phi} (row on R).
+      const auto fold = [&](const int i, bool &on_right) {
+        on_right = i >= static_cast<int>(n_reduced);
+        return on_right ? i - static_cast<int>(n_reduced) : i;
+      };
+      const SparseReal *matrices[3] = {&cell.stiffness, &cell.damping, &cell.mass};
+      std::vector<Eigen::Triplet<Complex>> entries;
+      for (const SparseReal *A : matrices)
+        for (int c = 0; c < A->outerSize(); ++c)
+          for (SparseReal::InnerIterator it(*A, c); it; ++it)
+            {
+              bool row_right, column_right;
+              entries.emplace_back(fold(it.row(), row_right), fold(it.col(), column_right), 1.);
+            }
+      matrix.resize(n_reduced, n_reduced);
+      matrix.setFromTriplets(entries.begin(), entries.end());
+      matrix.makeCompressed();
+      for (auto &per_matrix : parts)
+        for (auto &per_class : per_matrix)
+          per_class.assign(matrix.nonZeros(), 0.);
+      for (unsigned int m = 0; m < 3; ++m)
+        for (int c = 0; c < matrices[m]->outerSize(); ++c)
+          for (SparseReal::InnerIterator it(*matrices[m], c); it; ++it)
+            {
+              bool      row_right, column_right;
+              const int r = fold(it.row(), row_right), col = fold(it.col(), column_right);
+              const int phase = row_right == column_right ? 0 : (column_right ? 1 : 2);
+              parts[m][phase][position(r, col)] += it.value();
+            }
+    }
+
+
+
+    void
+    BlochCell::set_frequency(const double omega)
+    {
+      for (unsigned int t = 0; t < 3; ++t)
+        {
+          at_frequency[t].resize(matrix.nonZeros());
+          for (std::size_t e = 0; e < at_frequency[t].size(); ++e)
+            at_frequency[t][e] =
+              Complex(parts[0][t][e] - omega * omega * parts[2][t][e], omega * parts[1][t][e]);
+        }
+    }
+
+
+
+    const SparseComplex &
+    BlochCell::assemble(const double phi)
+    {
+      const Complex phase = std::polar(1., phi);
+      Complex      *out   = matrix.valuePtr();
+      for (std::size_t e = 0; e < at_frequency[0].size(); ++e)
+        out[e] = at_frequency[0][e] + phase * at_frequency[1][e] +
+                 std::conj(phase) * at_frequency[2][e];
+      return matrix;
+    }
+
+
+
+    std::size_t
+    BlochCell::position(const int row, const int column) const
+    {
+      const int *begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column];
+      const int *end   = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column + 1];
+      return std::lower_bound(begin, end, row) - matrix.innerIndexPtr();
+    }
+
+
+
+    Eigen::MatrixXcd
+    ring_response(const PeriodicCell &cell,
+                  const double        omega,
+                  const unsigned int  force_cell,
+                  const unsigned int  dof,
+                  SolveDiagnostics   &diagnostics)
+    {
+      BlochCell bloch(cell);
+      bloch.set_frequency(omega);
+      const unsigned int N = cell.n_cells, n = bloch.size();
+      Dense              b = Dense::Zero(n, 1);
+      b(dof, 0)            = 1.;
+      Dense    u           = Dense::Zero(n, N);
+      SparseLU lu;
+      // All N wavenumbers, one factorisation each: this is one frequency,
+      // and the transposed solves D_{N-k} = D_k^T would save only half.
+      for (unsigned int k = 0; k < N; ++k)
+        {
+          const double         phi = 2. * M_PI * k / N;
+          const SparseComplex &D_k = bloch.assemble(phi);
+          if (k == 0)
+            lu.analyzePattern(D_k);
+          lu.factorize(D_k);
+          require_factorised(lu, omega, "of Bloch wavenumber " + std::to_string(k));
+          const Dense x = lu.solve(b);
+          check_solution(D_k, x, b, omega, "of Bloch wavenumber " + std::to_string(k),
+                         diagnostics);
+          for (unsigned int m = 0; m < N; ++m)
+            u.col(m) += std::polar(1., phi * (static_cast<double>(m) - force_cell)) * x.col(0);
+        }
+      return u / static_cast<double>(N);
+    }
+
+
+
+    std::unique_ptr<GreenSolver>
+    make_green_solver(const Method method, const PeriodicCell &cell, const ContactPatch &patch)
+    {
+      switch (method)
+        {
+          case Method::bloch:
+            return std::make_unique<BlochSolver>(cell, patch);
+          case Method::doubling:
+            return std::make_unique<DoublingSolver>(cell, patch);
+          case Method::full_ring:
+            return std::make_unique<FullRingSolver>(cell, patch);
+        }
+      throw NumericalError("make_green_solver: unknown method");
+    }
+  } // namespace periodic
+} // namespace greentread
