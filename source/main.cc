@@ -112,19 +112,27 @@ main(int argc, char **argv)
       auto scene = greentread::scenes::create_scene(prm);
       scene->run();
     }
+  // Bad input and numerical failures are found by every rank alike (the
+  // parallel stage shares its failures): rank 0 reports them.
   catch (const greentread::InputError &e)
     {
-      std::cerr << "greentread: error: " << e.what() << std::endl;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "greentread: error: " << e.what() << std::endl;
       return 2;
     }
   catch (const greentread::NumericalError &e)
     {
-      std::cerr << "greentread: numerical failure: " << e.what() << std::endl;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "greentread: numerical failure: " << e.what() << std::endl;
       return 3;
     }
   catch (const std::exception &e)
     {
+      // Possibly on one rank only: stop the others rather than leave them
+      // waiting.
       std::cerr << "greentread: internal error: " << e.what() << std::endl;
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;
     }
   return 0;

@@ -1,9 +1,12 @@
+#include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
+#include <greentread/periodic/green_functions.h>
 #include <greentread/road/road_profile.h>
+#include <greentread/scenes/green_scene.h>
 #include <greentread/scenes/identify_scene.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/sdof_scene.h>
@@ -18,15 +21,21 @@ namespace greentread
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.declare_entry("Scene", "sdof",
-                        dealii::Patterns::Selection("sdof|identify|geometry-study|tire-cell"),
+                        dealii::Patterns::Selection("sdof|identify|geometry-study|tire-cell|tire-green"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
                         "sinusoidal road (paper, Section 3), with its exact solution. "
                         "'identify': modal identification (LSCE, Appendix A) of FRFs. "
                         "'geometry-study': the tyre section and cell, masses and inflation. "
-                        "'tire-cell': the same and the cell matrices K, M, C, Kp.");
+                        "'tire-cell': the same and the cell matrices K, M, C, Kp. "
+                        "'tire-green': the Green's functions of the inflated ring at the "
+                        "contact points (Section 4.2), over the MPI ranks.");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
                         "paths are relative to the working directory.");
+      prm.declare_entry("Reuse saved results", "true", dealii::Patterns::Bool(),
+                        "Reuse a stage's saved output (green_functions.h5) when it was "
+                        "computed from the same parameters and program version; 'false' "
+                        "always recomputes.");
       prm.declare_entry("Print timings", "true", dealii::Patterns::Bool(),
                         "Print run times on screen. Regression tests switch this off so "
                         "that their output is reproducible.");
@@ -40,6 +49,7 @@ namespace greentread
       scene            = prm.get("Scene");
       output_directory = prm.get("Output directory");
       print_timings    = prm.get_bool("Print timings");
+      reuse            = prm.get_bool("Reuse saved results");
     }
 
 
@@ -56,6 +66,7 @@ namespace greentread
       geometry::GeometryParameters::declare_parameters(prm);
       fe::MaterialParameters::declare_parameters(prm);
       InflationParameters::declare_parameters(prm);
+      periodic::GreenParameters::declare_parameters(prm);
     }
 
 
@@ -65,6 +76,14 @@ namespace greentread
     {
       GlobalParameters global;
       global.parse_parameters(prm);
+      // Only the Green's functions are spread over MPI ranks.
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      if (n_ranks > 1 && global.scene != "tire-green")
+        throw InputError("scene '" + global.scene + "' runs on one process, and this run has " +
+                         std::to_string(n_ranks) +
+                         " MPI ranks: run it without mpirun (only 'tire-green' uses MPI)");
+      if (global.scene == "tire-green")
+        return std::make_unique<GreenScene>(prm, global);
       // The Selection pattern has rejected any other name.
       if (global.scene == "identify")
         return std::make_unique<IdentifyScene>(prm, global);

@@ -64,6 +64,23 @@ namespace greentread
 
 
 
+    dealii::Vector<double>
+    solve_inflation(const fe::ElasticModel   &model,
+                    const geometry::TyreCell &cell,
+                    const double              pressure)
+    {
+      // The cell closed into the ring by rotational periodicity.
+      dealii::AffineConstraints<double> constraints;
+      model.add_clamp(geometry::rim_seat, constraints);
+      model.add_rotational_periodicity(geometry::periodic_first, geometry::periodic_second,
+                                       cell.angle(), constraints);
+      constraints.close();
+      return model.solve_static(constraints,
+                                model.pressure_load(geometry::inner_surface, pressure));
+    }
+
+
+
     TyreCellScene::TyreCellScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
       : prm(prm_)
       , global(global_)
@@ -92,15 +109,7 @@ namespace greentread
       model.assemble();
       const double assembly_time = clock.lap();
 
-      // Inflation: rim seat clamped, the cell closed into the ring by
-      // rotational periodicity, the pressure on the inner surface.
-      dealii::AffineConstraints<double> constraints;
-      model.add_clamp(geometry::rim_seat, constraints);
-      model.add_rotational_periodicity(geometry::periodic_first, geometry::periodic_second,
-                                       cell->angle(), constraints);
-      constraints.close();
-      const auto u = model.solve_static(
-        constraints, model.pressure_load(geometry::inner_surface, inflation.pressure));
+      const auto   u              = solve_inflation(model, *cell, inflation.pressure);
       const double inflation_time = clock.lap();
 
       double kp_time = 0.;

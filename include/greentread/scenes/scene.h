@@ -24,6 +24,7 @@ namespace greentread
       std::string scene            = "sdof";
       std::string output_directory = "output";
       bool        print_timings    = true;
+      bool        reuse            = true;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

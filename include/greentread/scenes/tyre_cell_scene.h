@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/fe/elastic_model.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/scenes/scene.h>
@@ -20,6 +21,15 @@ namespace greentread
       void
       parse_parameters(dealii::ParameterHandler &prm);
     };
+
+    /**
+     * @brief The static inflation of the cell in the ring: rim seat clamped,
+     * rotational periodicity, @p pressure on the inner surface. Returns the
+     * displacement; @p model must be assembled.
+     * @throws NumericalError if the static system is singular.
+     */
+    dealii::Vector<double>
+    solve_inflation(const fe::ElasticModel &model, const geometry::TyreCell &cell, double pressure);
 
     /**
      * @brief Scenes "geometry-study" and "tire-cell": the tyre's periodic

@@ -1,0 +1,259 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
+#include <greentread/periodic/green_functions.h>
+
+#include <deal.II/base/multithread_info.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace greentread
+{
+  namespace periodic
+  {
+    using base::RangePattern;
+
+    void
+    GreenParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Green's functions");
+      {
+        prm.declare_entry("Maximum frequency", "4000", RangePattern::positive("Hz"),
+                          "f_max, the last line of the grid. Unit: Hz. Paper, Section 5.1: "
+                          "4000 Hz.");
+        prm.declare_entry("Frequency step", "15.625", RangePattern::positive("Hz"),
+                          "df, the line spacing: the grid is 0, df, ..., f_max, and f_max / df "
+                          "must be a whole number. The impulse responses LSCE fits are 1 / df "
+                          "long. Unit: Hz. The default, 4000 / 256, gives 64 ms responses on "
+                          "a grid that suits FFTs.");
+        prm.declare_entry("Method", "bloch",
+                          dealii::Patterns::Selection("bloch|doubling|full-ring"),
+                          "'bloch': a discrete Fourier transform over the N identical cells, "
+                          "N/2 + 1 sparse cell solves per frequency (exact, the fastest). "
+                          "'doubling': the paper's recursive doubling of the condensed cell "
+                          "(Eqs. 46-49; exact, dense). 'full-ring': all N cells in one sparse "
+                          "solve (the reference; coarse meshes only).");
+        prm.declare_entry("Patch length", "0.06", RangePattern::positive("m"),
+                          "L_c, the contact patch along the rolling direction x. Unit: m. "
+                          "Section 5.2: 6 cm.");
+        prm.declare_entry("Patch width", "0.08", RangePattern::positive("m"),
+                          "l_c, the contact patch across the tread (y). Unit: m. Section 5.2: "
+                          "8 cm.");
+        prm.declare_entry("Points along", "10", dealii::Patterns::Integer(1, 1000),
+                          "N_x, contact points along x. Section 5.2: 10.");
+        prm.declare_entry("Points across", "12", dealii::Patterns::Integer(1, 1000),
+                          "N_y, contact points across y. Section 5.2: 12.");
+        prm.declare_entry("Pairs", "auto", dealii::Patterns::Anything(),
+                          "The g_ij written as green_<i>_<j>.csv and plotted: 'auto' (the "
+                          "driving point at the patch centre, and its transfer to the next "
+                          "point along x and across y), or 'i:j, i:j, ...' (0-based points, "
+                          "p = i_x N_y + i_y).");
+        prm.declare_entry("Deflection shape frequency", "500",
+                          dealii::Patterns::Double(-1.),
+                          "The frequency of the operating deflection shape of the ring "
+                          "(ring_deflection.vtu) under a unit radial force at the patch "
+                          "centre; a negative value writes none. Unit: Hz.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    GreenParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Green's functions");
+      {
+        max_frequency        = prm.get_double("Maximum frequency");
+        frequency_step       = prm.get_double("Frequency step");
+        method               = prm.get("Method");
+        patch.length         = prm.get_double("Patch length");
+        patch.width          = prm.get_double("Patch width");
+        patch.points_along   = prm.get_integer("Points along");
+        patch.points_across  = prm.get_integer("Points across");
+        pairs                = prm.get("Pairs");
+        deflection_frequency = prm.get_double("Deflection shape frequency");
+      }
+      prm.leave_subsection();
+      require_parameter(frequency_step <= max_frequency, "Green's functions/Frequency step",
+                        frequency_step,
+                        "at most 'Maximum frequency' = " + format_number(max_frequency) + " Hz");
+      const double lines = max_frequency / frequency_step;
+      require_parameter(std::abs(lines - std::round(lines)) < 1e-9 * lines,
+                        "Green's functions/Frequency step", frequency_step,
+                        "a whole fraction of 'Maximum frequency' = " +
+                          format_number(max_frequency) + " Hz (f_max / df = " +
+                          format_short(lines) + ")");
+      require_parameter(lines <= 1e6, "Green's functions/Frequency step", frequency_step,
+                        "at least f_max / 1e6");
+      require_parameter(deflection_frequency <= max_frequency,
+                        "Green's functions/Deflection shape frequency", deflection_frequency,
+                        "at most 'Maximum frequency' = " + format_number(max_frequency) +
+                          " Hz, or negative for none");
+    }
+
+
+
+    unsigned int
+    GreenParameters::n_lines() const
+    {
+      return static_cast<unsigned int>(std::lround(max_frequency / frequency_step)) + 1;
+    }
+
+
+
+    std::vector<std::pair<unsigned int, unsigned int>>
+    GreenParameters::csv_pairs(const ContactPatch &contact) const
+    {
+      const unsigned int n = contact.points.size();
+      if (pairs != "auto")
+        return modal::parse_point_pairs(pairs, n, "Green's functions/Pairs");
+      const unsigned int nx = contact.points_along, ny = contact.points_across;
+      const unsigned int centre = (nx / 2) * ny + ny / 2;
+      std::vector<std::pair<unsigned int, unsigned int>> result = {{centre, centre}};
+      if (nx > 1)
+        result.emplace_back(centre, centre - ny);
+      if (ny > 1)
+        result.emplace_back(centre, centre - 1);
+      return result;
+    }
+
+
+
+    modal::FrequencyResponseMatrix
+    compute_green_functions(const PeriodicCell &cell,
+                            const ContactPatch &patch,
+                            const Method        method,
+                            const double        df,
+                            const unsigned int  n_lines,
+                            const MPI_Comm      comm,
+                            const bool          show_progress,
+                            GreenRunReport     &report)
+    {
+      const auto         start   = std::chrono::steady_clock::now();
+      const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int P       = patch.points.size();
+
+      // This rank's lines: k = rank, rank + n_ranks, ...
+      std::vector<unsigned int> lines;
+      for (unsigned int k = rank; k < n_lines; k += n_ranks)
+        lines.push_back(k);
+      const unsigned int n_threads =
+        std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), lines.size()));
+
+      std::vector<double>       values(2 * std::size_t(n_lines) * P * P, 0.);
+      std::atomic<unsigned int> next{0}, done{0};
+      std::mutex                mutex;
+      std::string               failure;
+      SolveDiagnostics          diagnostics;
+      base::Progress            progress(n_ranks == 1 ?
+                                "Green's functions (" + std::to_string(n_lines) +
+                                  " frequencies)" :
+                                "Green's functions (rank 0's " + std::to_string(lines.size()) +
+                                  " of " + std::to_string(n_lines) + " frequencies)",
+                              lines.size());
+      const auto work = [&]() {
+        try
+          {
+            auto             solver = make_green_solver(method, cell, patch);
+            SolveDiagnostics mine;
+            for (unsigned int l = next++; l < lines.size(); l = next++)
+              {
+                {
+                  std::lock_guard<std::mutex> lock(mutex);
+                  if (!failure.empty())
+                    return;
+                }
+                const unsigned int k = lines[l];
+                const auto         g = solver->solve(2. * M_PI * k * df, mine);
+                double            *out = values.data() + 2 * std::size_t(k) * P * P;
+                for (unsigned int i = 0; i < P; ++i)
+                  for (unsigned int j = 0; j < P; ++j)
+                    {
+                      out[2 * (i * P + j)]     = g(i, j).real();
+                      out[2 * (i * P + j) + 1] = g(i, j).imag();
+                    }
+                ++done;
+              }
+            std::lock_guard<std::mutex> lock(mutex);
+            diagnostics.merge(mine);
+          }
+        catch (const std::exception &e)
+          {
+            std::lock_guard<std::mutex> lock(mutex);
+            if (failure.empty())
+              failure = e.what();
+          }
+      };
+      std::vector<std::thread> threads;
+      for (unsigned int t = 1; t < n_threads; ++t)
+        threads.emplace_back(work);
+      if (show_progress && rank == 0)
+        {
+          // The main thread works too, and reports between its lines.
+          std::thread main_worker(work);
+          while (done < lines.size())
+            {
+              {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (!failure.empty())
+                  break;
+              }
+              progress.update(done);
+              std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            }
+          main_worker.join();
+          progress.finish();
+        }
+      else
+        work();
+      for (auto &t : threads)
+        t.join();
+
+      // Every rank learns whether any failed; the lowest failing rank's
+      // message is the one reported.
+      const unsigned int failed_rank = dealii::Utilities::MPI::min(
+        failure.empty() ? dealii::numbers::invalid_unsigned_int : rank, comm);
+      if (failed_rank != dealii::numbers::invalid_unsigned_int)
+        {
+          const std::string message =
+            dealii::Utilities::MPI::broadcast(comm, failure, failed_rank);
+          throw NumericalError("Green's functions: " + message);
+        }
+
+      modal::FrequencyResponseMatrix green;
+      green.df      = df;
+      green.n_lines = n_lines;
+      if (n_ranks > 1)
+        {
+          std::vector<double> sum(rank == 0 ? values.size() : 0);
+          MPI_Reduce(values.data(), sum.data(), static_cast<int>(values.size()), MPI_DOUBLE,
+                     MPI_SUM, 0, comm);
+          values.swap(sum);
+        }
+      report.diagnostics.max_residual =
+        dealii::Utilities::MPI::max(diagnostics.max_residual, comm);
+      report.diagnostics.max_condition =
+        dealii::Utilities::MPI::max(diagnostics.max_condition, comm);
+      report.ranks   = n_ranks;
+      report.threads = n_threads;
+      report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (rank == 0)
+        {
+          for (const auto &p : patch.points)
+            green.points.push_back({{p.x, p.y, p.radius}});
+          green.values.resize(std::size_t(n_lines) * P * P);
+          for (std::size_t e = 0; e < green.values.size(); ++e)
+            green.values[e] = {values[2 * e], values[2 * e + 1]};
+        }
+      return green;
+    }
+  } // namespace periodic
+} // namespace greentread
