@@ -113,6 +113,7 @@ namespace greentread
                     const std::filesystem::path     &h5,
                     const base::ParameterRecord     &record,
                     const bool                       reuse_saved,
+                    const bool                       show_progress,
                     const MPI_Comm                   comm)
     {
       const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
@@ -131,7 +132,7 @@ namespace greentread
         }
       result.green = periodic::compute_green_functions(
         tyre.periodic_cell, tyre.patch, periodic::parse_method(parameters.method),
-        parameters.frequency_step, parameters.n_lines(), comm, true, result.report);
+        parameters.frequency_step, parameters.n_lines(), comm, show_progress, result.report);
       if (rank == 0)
         modal::write_green_hdf5(h5, result.green, record, key);
       return result;
@@ -197,7 +198,7 @@ namespace greentread
 
       const fs::path h5 = directory / "green_functions.h5";
       const auto result = run_green_stage(tyre, green, green_stage_key(prm, geometry.geo_file), h5,
-                                          record, global.reuse, comm);
+                                          record, global.reuse, global.print_timings, comm);
       if (result.reused)
         out << "Reusing " << h5.string()
             << ": it was computed with the same geometry, materials, inflation and "
@@ -288,17 +289,17 @@ namespace greentread
         if (std::abs(driving.values[k]) > std::abs(driving.values[peak]))
           peak = k;
       // In um/N, so that the regression tests' absolute tolerance sees them.
-      const auto   transfer = result.green.get(pairs.back().first, pairs.back().second);
+      const auto transfer = result.green.get(pairs.back().first, pairs.back().second);
       out << "Driving point " << pairs.front().first << ": static receptance "
           << format_printf("%.6g", 1e6 * driving.values[0].real()) << " um/N, largest |g| "
           << format_printf("%.6g", 1e6 * std::abs(driving.values[peak])) << " um/N at "
           << format_number(peak * driving.df) << " Hz; g at f_max "
           << format_printf("%.6g", 1e6 * driving.values.back().real()) << " "
           << format_printf("%+.6g", 1e6 * driving.values.back().imag()) << "j um/N\n"
-          << "Transfer g_" << pairs.back().first << "," << pairs.back().second
-          << ": static " << format_printf("%.6g", 1e6 * transfer.values[0].real())
-          << " um/N, at f_max " << format_printf("%.6g", 1e6 * transfer.values.back().real())
-          << " " << format_printf("%+.6g", 1e6 * transfer.values.back().imag()) << "j um/N\n";
+          << "Transfer g_" << pairs.back().first << "," << pairs.back().second << ": static "
+          << format_printf("%.6g", 1e6 * transfer.values[0].real()) << " um/N, at f_max "
+          << format_printf("%.6g", 1e6 * transfer.values.back().real()) << " "
+          << format_printf("%+.6g", 1e6 * transfer.values.back().imag()) << "j um/N\n";
       if (with_deflection)
         out << "Deflection shape at " << format_number(green.deflection_frequency)
             << " Hz under a unit radial force at point " << centre << ": largest backward error "

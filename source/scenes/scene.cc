@@ -37,8 +37,9 @@ namespace greentread
                         "computed from the same parameters and program version; 'false' "
                         "always recomputes.");
       prm.declare_entry("Print timings", "true", dealii::Patterns::Bool(),
-                        "Print run times on screen. Regression tests switch this off so "
-                        "that their output is reproducible.");
+                        "Print run times, and the progress of long loops, on screen. "
+                        "Regression tests switch this off so that their output is "
+                        "reproducible.");
     }
 
 

@@ -53,7 +53,8 @@ namespace greentread
      * @brief The Green's-function stage with its cache: if @p reuse, @p h5
      * exists and its `stage_key` equals @p key, it is read back (on rank 0) and
      * nothing is computed; otherwise the frequencies are computed over the
-     * ranks of @p comm and written to @p h5 by rank 0.
+     * ranks of @p comm and written to @p h5 by rank 0, with progress on
+     * rank 0 if @p show_progress.
      *
      * Ranks other than 0 return an empty matrix.
      */
@@ -71,6 +72,7 @@ namespace greentread
                     const std::filesystem::path     &h5,
                     const base::ParameterRecord     &record,
                     bool                             reuse,
+                    bool                             show_progress,
                     MPI_Comm                         comm);
 
     /**
