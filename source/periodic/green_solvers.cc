@@ -275,6 +275,37 @@ namespace greentread
 
 
       /// The reference: all N cells assembled, one sparse solve.
+      /// Factorise the chain's matrix @p A (analysed already), solve for
+      /// unit loads at the contact points, check, and read g off.
+      Dense
+      solve_chain(ChainLU            &lu,
+                  const SparseComplex &A,
+                  const Chain         &chain,
+                  const ContactPatch  &patch,
+                  const double         omega,
+                  const std::string   &what,
+                  SolveDiagnostics    &diagnostics)
+      {
+        lu.factorize(A);
+        if (lu.info() != Eigen::Success && lu.umfpackFactorizeReturncode() != UMFPACK_OK &&
+            lu.umfpackFactorizeReturncode() != UMFPACK_WARNING_singular_matrix)
+          throw NumericalError(
+            "UMFPACK could not factorise the dynamic stiffness " + what + " at " +
+            at_frequency(omega) + " (UMFPACK status " +
+            std::to_string(lu.umfpackFactorizeReturncode()) +
+            (lu.umfpackFactorizeReturncode() == UMFPACK_ERROR_out_of_memory ?
+               ": out of memory; its 32-bit indices cap the factors near 2^31 entries" :
+               std::string()) +
+            "): the ring is too large for a direct solve; use Method = bloch");
+        require_factorised(lu, omega, what);
+        const Dense B = chain.loads(patch);
+        const Dense X = lu.solve(B);
+        check_solution(A, X, B, omega, what, diagnostics);
+        return chain.at_points(patch, X);
+      }
+
+
+
       class FullRingSolver : public GreenSolver
       {
       public:
@@ -297,12 +328,7 @@ namespace greentread
               lu.analyzePattern(A);
               analysed = true;
             }
-          lu.factorize(A);
-          require_factorised(lu, omega, "of the full ring");
-          const Dense B = ring.loads(patch);
-          const Dense X = lu.solve(B);
-          check_solution(A, X, B, omega, "of the full ring", diagnostics);
-          return ring.at_points(patch, X);
+          return solve_chain(lu, A, ring, patch, omega, "of the full ring", diagnostics);
         }
 
       private:
@@ -424,12 +450,7 @@ namespace greentread
           A.makeCompressed();
           ChainLU lu;
           lu.analyzePattern(A);
-          lu.factorize(A);
-          require_factorised(lu, omega, "of the ring (Eq. 49)");
-          const Dense B = contact.loads(patch);
-          const Dense X = lu.solve(B);
-          check_solution(A, X, B, omega, "of the ring (Eq. 49)", diagnostics);
-          return contact.at_points(patch, X);
+          return solve_chain(lu, A, contact, patch, omega, "of the ring (Eq. 49)", diagnostics);
         }
 
       private:
