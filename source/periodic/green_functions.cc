@@ -112,7 +112,15 @@ namespace greentread
     {
       const unsigned int n = contact.points.size();
       if (pairs != "auto")
-        return modal::parse_point_pairs(pairs, n, "Green's functions/Pairs");
+        {
+          // Each pair is a CSV file and a curve in one plot: a few, not all.
+          const auto chosen = modal::parse_point_pairs(pairs, n, "Green's functions/Pairs");
+          require_parameter(chosen.size() <= 12, "Green's functions/Pairs", pairs,
+                            "'auto' or at most 12 pairs i:j (this names " +
+                              std::to_string(chosen.size()) +
+                              "); the whole matrix is in green_functions.h5");
+          return chosen;
+        }
       const unsigned int nx = contact.points_along, ny = contact.points_across;
       const unsigned int centre = (nx / 2) * ny + ny / 2;
       std::vector<std::pair<unsigned int, unsigned int>> result = {{centre, centre}};
