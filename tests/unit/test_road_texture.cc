@@ -1,0 +1,103 @@
+// Road textures against closed forms: the texture spectrum and the MPD of a
+// cosine, the one-third-octave band edges, and synthetic textures that must
+// reproduce their target spectra.
+#include <greentread/base/exceptions.h>
+#include <greentread/road/texture.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace greentread;
+
+namespace
+{
+  /// A cos(2 pi x / lambda) along x, the same on every profile, sampled at
+  /// the cell centres x_i = (i + 1/2) dx: over whole periods it is
+  /// symmetric about the middle, so its least-squares line is exactly flat.
+  road::Texture
+  cosine(const double A, const double lambda, const double dx, const unsigned int nx)
+  {
+    road::Texture t;
+    t.dx = t.dy = dx;
+    t.nx        = nx;
+    t.ny        = 3;
+    for (unsigned int j = 0; j < t.ny; ++j)
+      for (unsigned int i = 0; i < nx; ++i)
+        t.z.push_back(A * std::cos(2. * M_PI * (i + 0.5) * dx / lambda));
+    return t;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(road_texture)
+
+BOOST_AUTO_TEST_CASE(band_edges_follow_iec_61260_base_10)
+{
+  const auto bands = road::wavelength_bands(2e-3, 0.1);
+  BOOST_TEST(bands.size() == 18u);
+  BOOST_TEST(bands.front().nominal == 2e-3, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(bands[5].nominal == 6.3e-3, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(bands.back().nominal == 0.1, boost::test_tools::tolerance(1e-12));
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    {
+      BOOST_TEST(bands[b].upper / bands[b].lower == std::pow(10., 0.1),
+                 boost::test_tools::tolerance(1e-12));
+      if (b > 0) // contiguous
+        BOOST_TEST(bands[b].lower == bands[b - 1].upper, boost::test_tools::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(spectrum_and_mpd_of_a_cosine)
+{
+  // 10 mm (the centre of its band) and amplitude 0.5 mm: mean square
+  // A^2 / 2 in that band alone.
+  const double A = 5e-4, lambda = 1e-2, dx = lambda / 32.;
+  const auto   t     = cosine(A, lambda, dx, 32 * 80); // 0.8 m, whole periods
+  const auto   bands = road::wavelength_bands(2e-3, 0.1);
+  const auto   level = road::texture_spectrum(t, bands);
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    if (bands[b].nominal == 1e-2)
+      BOOST_TEST(level[b] == 10. * std::log10(A * A / 2. / 1e-12),
+                 boost::test_tools::tolerance(1e-9));
+    else
+      BOOST_TEST(level[b] < -100.);
+
+  // MPD: each 100 mm segment holds whole periods, its line is flat, and
+  // both halves peak at the sample nearest a crest, half a step away.
+  const double mpd = road::mean_profile_depth(t);
+  BOOST_TEST(mpd == A * std::cos(M_PI * dx / lambda), boost::test_tools::tolerance(1e-12));
+
+  // Too short for one segment: a clear error.
+  BOOST_CHECK_THROW(road::mean_profile_depth(cosine(A, lambda, dx, 100)), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(synthetic_textures_match_their_presets)
+{
+  for (const std::string name : {"road-A", "road-B"})
+    BOOST_TEST_CONTEXT(name)
+    {
+      std::vector<road::WavelengthBand> bands;
+      std::vector<double>               target;
+      road::texture_preset(name, bands, target);
+      // 384 um sampling (Section 5.2), 1.57 m x 98 mm.
+      const auto t     = road::synthetic_texture(bands, target, 384e-6, 4096, 256, 42, 1.);
+      const auto level = road::texture_spectrum(t, bands);
+      double     worst = 0.;
+      for (std::size_t b = 0; b < bands.size(); ++b)
+        worst = std::max(worst, std::abs(level[b] - target[b]));
+      BOOST_TEST_MESSAGE(name << ": worst band " << worst << " dB off target, MPD "
+                              << 1e3 * road::mean_profile_depth(t) << " mm");
+      BOOST_TEST(worst < 1.);
+
+      // Reproducible with its seed, different with another.
+      const auto again = road::synthetic_texture(bands, target, 384e-6, 4096, 256, 42, 1.);
+      BOOST_TEST(again.z == t.z);
+      const auto other = road::synthetic_texture(bands, target, 384e-6, 4096, 256, 43, 1.);
+      BOOST_TEST(other.z != t.z);
+    }
+  std::vector<road::WavelengthBand> bands;
+  std::vector<double>               levels;
+  BOOST_CHECK_THROW(road::texture_preset("road-C", bands, levels), InputError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
