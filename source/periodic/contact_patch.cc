@@ -121,6 +121,20 @@ namespace greentread
 
       patch.dx = qx * half_cell;
       patch.dy = ny > 1 ? (z[last_y] - z[first_y]) / (ny - 1) : 0.;
+      // The tread nodes need not be evenly spaced (a coarse mesh grades
+      // towards the shoulders): the grid must be, within 1%.
+      for (unsigned int j = 0; j + 1 < ny; ++j)
+        {
+          const double step = z[first_y + (j + 1) * qy] - z[first_y + j * qy];
+          if (std::abs(step - patch.dy) > 0.01 * patch.dy)
+            throw InputError("parameter 'Green's functions/Patch width' = " +
+                             format_number(request.width) + " with " + std::to_string(ny) +
+                             " points across: the tread nodes under it are not evenly spaced "
+                             "(a step of " + format_short(1e3 * step) + " mm against the mean " +
+                             format_short(1e3 * patch.dy) +
+                             " mm); allowed: a patch within the evenly meshed crown, or a "
+                             "smaller 'Geometry/Mesh size'");
+        }
       for (unsigned int i = 0; i < nx; ++i)
         {
           const long s = i * qx;

@@ -50,14 +50,14 @@ namespace greentread
                           "N_y, contact points across y. Section 5.2: 12.");
         prm.declare_entry("Pairs", "auto", dealii::Patterns::Anything(),
                           "The g_ij written as green_<i>_<j>.csv and plotted: 'auto' (the "
-                          "driving point at the patch centre, and its transfer to the next "
-                          "point along x and across y), or 'i:j, i:j, ...' (0-based points, "
-                          "p = i_x N_y + i_y).");
-        prm.declare_entry("Deflection shape frequency", "500",
-                          dealii::Patterns::Double(-1.),
+                          "driving point p = (N_x/2) N_y + N_y/2 nearest the patch centre, and "
+                          "its transfers to the previous point along x and across y), or up "
+                          "to 12 pairs 'i:j, i:j, ...' (0-based points, p = i_x N_y + i_y).");
+        prm.declare_entry("Deflection shape frequency", "500", dealii::Patterns::Double(-1.),
                           "The frequency of the operating deflection shape of the ring "
-                          "(ring_deflection.vtu) under a unit radial force at the patch "
-                          "centre; a negative value writes none. Unit: Hz.");
+                          "(ring_deflection.vtu) under a unit radial force at point j of the "
+                          "first pair (with 'auto', the driving point); a negative value "
+                          "writes none. Unit: Hz.");
       }
       prm.leave_subsection();
     }

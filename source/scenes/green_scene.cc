@@ -30,24 +30,65 @@ namespace greentread
       }
 
       /// FNV-1a of a file's bytes, as 16 hex digits: stable across runs and
-      /// builds, unlike std::hash.
+      /// builds, unlike std::hash. An empty string if it cannot be read.
       std::string
       file_digest(const std::string &file)
       {
         std::ifstream in(file, std::ios::binary);
         if (!in)
-          throw InputError("parameter 'Geometry/Geometry file' = " + file +
-                           ": the file cannot be read");
-        std::uint64_t hash = 1469598103934665603ull;
-        char          c;
-        while (in.get(c))
+          return {};
+        std::uint64_t     hash = 1469598103934665603ull;
+        std::vector<char> buffer(1 << 20);
+        while (in)
           {
-            hash ^= static_cast<unsigned char>(c);
-            hash *= 1099511628211ull;
+            in.read(buffer.data(), buffer.size());
+            for (std::streamsize i = 0; i < in.gcount(); ++i)
+              {
+                hash ^= static_cast<unsigned char>(buffer[i]);
+                hash *= 1099511628211ull;
+              }
           }
         std::ostringstream hex;
         hex << std::hex << std::setw(16) << std::setfill('0') << hash;
         return hex.str();
+      }
+
+      /**
+       * Run @p work on every rank; if it throws InputError or
+       * NumericalError on any rank, every rank throws the lowest failing
+       * rank's error, so that no rank waits for the others in a later
+       * collective call.
+       */
+      template <typename Work>
+      void
+      collectively(const MPI_Comm comm, Work &&work)
+      {
+        std::string message;
+        int         kind = 0; // 1 input, 2 numerical
+        try
+          {
+            work();
+          }
+        catch (const InputError &e)
+          {
+            message = e.what();
+            kind    = 1;
+          }
+        catch (const NumericalError &e)
+          {
+            message = e.what();
+            kind    = 2;
+          }
+        const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(comm);
+        const unsigned int failed = dealii::Utilities::MPI::min(
+          kind != 0 ? rank : dealii::numbers::invalid_unsigned_int, comm);
+        if (failed == dealii::numbers::invalid_unsigned_int)
+          return;
+        message = dealii::Utilities::MPI::broadcast(comm, message, failed);
+        kind    = dealii::Utilities::MPI::broadcast(comm, kind, failed);
+        if (kind == 1)
+          throw InputError(message);
+        throw NumericalError(message);
       }
     } // namespace
 
@@ -93,8 +134,15 @@ namespace greentread
     green_stage_key(const dealii::ParameterHandler &prm, const std::string &geo_file)
     {
       std::ostringstream key;
+      // The revision is taken when CMake configures, and says nothing of
+      // uncommitted edits: the digest of the running program itself does.
+      const std::string geo_digest = file_digest(geo_file);
+      if (geo_digest.empty())
+        throw InputError("parameter 'Geometry/Geometry file' = " + geo_file +
+                         ": the file cannot be read");
       key << "greentread " << GREENTREAD_VERSION << " (" << GREENTREAD_GIT_REVISION << ")\n"
-          << "geo file digest " << file_digest(geo_file) << '\n';
+          << "program digest " << file_digest("/proc/self/exe") << '\n'
+          << "geo file digest " << geo_digest << '\n';
       const auto record = base::ParameterRecord::from(
         prm, "", {"Geometry", "Materials", "Inflation", "Green's functions"});
       for (const auto &[path, value] : record.entries)
@@ -161,28 +209,28 @@ namespace greentread
       dealii::ConditionalOStream out(std::cout, rank == 0);
       const auto                 start = std::chrono::steady_clock::now();
 
-      // Check the output directory (rank 0) before any work; every rank
-      // learns the outcome.
-      std::string directory_name, problem;
-      if (rank == 0)
-        try
-          {
-            directory_name = base::prepare_output_directory(global.output_directory).string();
-          }
-        catch (const InputError &e)
-          {
-            problem = e.what();
-          }
-      problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
-      if (!problem.empty())
-        throw InputError(problem);
+      // Check the output directory (rank 0) before any work.
+      std::string directory_name;
+      collectively(comm, [&]() {
+        if (rank == 0)
+          directory_name = base::prepare_output_directory(global.output_directory).string();
+      });
       const fs::path directory = dealii::Utilities::MPI::broadcast(comm, directory_name, 0);
       const auto     record    = base::ParameterRecord::from(
                prm, global.scene,
                {"Scene", "Output directory", "Geometry", "Materials", "Inflation", "Green's functions"});
 
-      const InflatedTyre tyre(geometry, materials, inflation, green.patch);
-      const auto         pairs = green.csv_pairs(tyre.patch);
+      // Every rank builds the tyre; a rank that fails (a file it cannot
+      // read) must not leave the others waiting in the frequency loop.
+      std::unique_ptr<InflatedTyre>                      built;
+      std::vector<std::pair<unsigned int, unsigned int>> pairs;
+      std::string                                        key;
+      collectively(comm, [&]() {
+        built = std::make_unique<InflatedTyre>(geometry, materials, inflation, green.patch);
+        pairs = green.csv_pairs(built->patch);
+        key   = green_stage_key(prm, geometry.geo_file);
+      });
+      const InflatedTyre &tyre = *built;
       const auto        &pc    = tyre.periodic_cell;
       out << "GreenTread: scene 'tire-green', Green's functions of the inflated ring at the "
              "contact points (Meftah et al. 2013, Section 4.2)\n"
@@ -197,7 +245,7 @@ namespace greentread
           << " lines), method '" << green.method << "'\n";
 
       const fs::path h5 = directory / "green_functions.h5";
-      const auto result = run_green_stage(tyre, green, green_stage_key(prm, geometry.geo_file), h5,
+      const auto result = run_green_stage(tyre, green, key, h5,
                                           record, global.reuse, global.print_timings, comm);
       if (result.reused)
         out << "Reusing " << h5.string()

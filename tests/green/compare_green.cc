@@ -30,6 +30,11 @@ main(int argc, char **argv)
       double largest = 0., difference = 0.;
       for (std::size_t e = 0; e < a.values.size(); ++e)
         {
+          if (!std::isfinite(std::abs(a.values[e])) || !std::isfinite(std::abs(b.values[e])))
+            {
+              std::cerr << "value " << e << " is not finite\n";
+              return 1;
+            }
           largest    = std::max(largest, std::abs(a.values[e]));
           difference = std::max(difference, std::abs(a.values[e] - b.values[e]));
         }
