@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/output.h>
 #include <greentread/road/texture.h>
 
 #include <unsupported/Eigen/FFT>
@@ -6,8 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <map>
 #include <random>
+#include <sstream>
 
 namespace greentread
 {
@@ -57,6 +62,291 @@ namespace greentread
                                   -std::numeric_limits<double>::infinity();
       }
     } // namespace
+
+
+
+    namespace
+    {
+      /// Throw unless the texture read is usable.
+      void
+      check_texture(const Texture &t, const std::string &file)
+      {
+        if (!(t.dx > 0.) || !(t.dy > 0.) || !std::isfinite(t.dx) || !std::isfinite(t.dy))
+          throw InputError("texture file '" + file + "': the spacings dx = " + format_short(t.dx) +
+                           " m, dy = " + format_short(t.dy) + " m must be finite and > 0");
+        if (t.nx < 2 || t.ny < 1)
+          throw InputError("texture file '" + file + "' has " + std::to_string(t.nx) + " x " +
+                           std::to_string(t.ny) + " points; at least 2 x 1 are needed");
+        for (std::size_t e = 0; e < t.z.size(); ++e)
+          if (!std::isfinite(t.z[e]))
+            throw InputError("texture file '" + file + "': height " + std::to_string(e % t.nx) +
+                             " of profile " + std::to_string(e / t.nx) + " is not a finite number");
+      }
+
+      template <typename T>
+      T
+      take(const std::string &bytes, std::size_t &at)
+      {
+        T value;
+        std::memcpy(&value, bytes.data() + at, sizeof(T));
+        at += sizeof(T);
+        return value;
+      }
+
+      Texture
+      read_binary_sdf(const std::string &bytes, const std::string &file)
+      {
+        constexpr std::size_t header = 8 + 10 + 12 + 12 + 2 + 2 + 4 * 8 + 3;
+        if (bytes.size() < header)
+          throw InputError("SDF file '" + file + "' is shorter than its 81-byte header");
+        std::size_t at = 8 + 10 + 12 + 12;
+        Texture     t;
+        t.nx                = take<std::uint16_t>(bytes, at);
+        t.ny                = take<std::uint16_t>(bytes, at);
+        t.dx                = take<double>(bytes, at);
+        t.dy                = take<double>(bytes, at);
+        const double zscale = take<double>(bytes, at);
+        at += 8; // Zresolution
+        const unsigned compression = take<std::uint8_t>(bytes, at);
+        const unsigned type        = take<std::uint8_t>(bytes, at);
+        at += 1; // CheckType
+        if (compression != 0)
+          throw InputError("SDF file '" + file + "': Compression = " + std::to_string(compression) +
+                           " is not supported; allowed: 0");
+        const std::size_t size[8] = {1, 2, 4, 4, 1, 2, 4, 8};
+        if (type > 7)
+          throw InputError("SDF file '" + file + "': DataType = " + std::to_string(type) +
+                           " is not allowed; allowed: 0 to 7 (ISO 25178-71)");
+        const std::size_t n = std::size_t(t.nx) * t.ny;
+        if (bytes.size() < header + n * size[type])
+          throw InputError("SDF file '" + file + "' is truncated: " + std::to_string(n) +
+                           " values of " + std::to_string(size[type]) + " bytes need " +
+                           std::to_string(header + n * size[type]) + " bytes, it has " +
+                           std::to_string(bytes.size()));
+        t.z.resize(n);
+        for (std::size_t e = 0; e < n; ++e)
+          {
+            double v = 0.;
+            switch (type)
+              {
+                case 0:
+                  v = take<std::uint8_t>(bytes, at);
+                  break;
+                case 1:
+                  v = take<std::uint16_t>(bytes, at);
+                  break;
+                case 2:
+                  v = take<std::uint32_t>(bytes, at);
+                  break;
+                case 3:
+                  v = take<float>(bytes, at);
+                  break;
+                case 4:
+                  v = take<std::int8_t>(bytes, at);
+                  break;
+                case 5:
+                  v = take<std::int16_t>(bytes, at);
+                  break;
+                case 6:
+                  v = take<std::int32_t>(bytes, at);
+                  break;
+                default:
+                  v = take<double>(bytes, at);
+                  break;
+              }
+            t.z[e] = v * zscale;
+          }
+        return t;
+      }
+
+      Texture
+      read_ascii_sdf(const std::string &text, const std::string &file)
+      {
+        std::istringstream            in(text);
+        std::string                   line;
+        std::map<std::string, double> header;
+        unsigned int                  number = 0;
+        std::getline(in, line); // aISO-1.0
+        ++number;
+        bool star = false;
+        while (std::getline(in, line))
+          {
+            ++number;
+            if (line.find('*') != std::string::npos)
+              {
+                star = true;
+                break;
+              }
+            const auto equal = line.find('=');
+            if (equal == std::string::npos)
+              continue;
+            std::string key = line.substr(0, equal);
+            key.erase(key.find_last_not_of(" \t") + 1);
+            key.erase(0, key.find_first_not_of(" \t"));
+            std::istringstream value(line.substr(equal + 1));
+            double             v;
+            if (value >> v)
+              header[key] = v;
+          }
+        if (!star)
+          throw InputError("SDF file '" + file + "': no line '*' ends its header");
+        for (const char *key : {"NumPoints", "NumProfiles", "Xscale", "Yscale", "Zscale"})
+          if (header.count(key) == 0)
+            throw InputError("SDF file '" + file + "': the header has no number " + key);
+        if (header.count("Compression") && header["Compression"] != 0.)
+          throw InputError("SDF file '" + file + "': Compression = " +
+                           format_number(header["Compression"]) + " is not supported; allowed: 0");
+        Texture t;
+        t.nx                     = static_cast<unsigned int>(header["NumPoints"]);
+        t.ny                     = static_cast<unsigned int>(header["NumProfiles"]);
+        t.dx                     = header["Xscale"];
+        t.dy                     = header["Yscale"];
+        const double      zscale = header["Zscale"];
+        const std::size_t n      = std::size_t(t.nx) * t.ny;
+        t.z.reserve(n);
+        std::string word;
+        while (t.z.size() < n && in >> word)
+          {
+            if (word == "*")
+              break;
+            char        *end = nullptr;
+            const double v   = std::strtod(word.c_str(), &end);
+            if (end == word.c_str() || *end != '\0')
+              throw InputError("SDF file '" + file + "': value " + std::to_string(t.z.size()) +
+                               " '" + word + "' is not a number");
+            t.z.push_back(v * zscale);
+          }
+        if (t.z.size() != n)
+          throw InputError(
+            "SDF file '" + file + "' holds " + std::to_string(t.z.size()) +
+            " values; its header announces NumPoints x NumProfiles = " + std::to_string(n));
+        return t;
+      }
+
+      Texture
+      read_grid(const std::string &text, const std::string &file)
+      {
+        std::istringstream in(text);
+        std::string        line;
+        unsigned int       number = 0;
+        Texture            t;
+        bool               spacing = false;
+        while (std::getline(in, line))
+          {
+            ++number;
+            const auto first = line.find_first_not_of(" \t\r");
+            if (first == std::string::npos || line[first] == '#')
+              continue;
+            std::istringstream  values(line);
+            std::vector<double> row;
+            std::string         word;
+            while (values >> word)
+              {
+                char        *end = nullptr;
+                const double v   = std::strtod(word.c_str(), &end);
+                if (end == word.c_str() || *end != '\0')
+                  throw InputError("texture file '" + file + "', line " + std::to_string(number) +
+                                   ": '" + word +
+                                   "' is not a number (the plain grid: a line 'dx dy', then "
+                                   "one line of heights per profile, in m)");
+                row.push_back(v);
+              }
+            if (!spacing)
+              {
+                if (row.size() != 2)
+                  throw InputError("texture file '" + file + "', line " + std::to_string(number) +
+                                   ": the first line must be 'dx dy' (m), two numbers");
+                t.dx    = row[0];
+                t.dy    = row[1];
+                spacing = true;
+                continue;
+              }
+            if (t.ny == 0)
+              t.nx = row.size();
+            else if (row.size() != t.nx)
+              throw InputError("texture file '" + file + "', line " + std::to_string(number) +
+                               ": " + std::to_string(row.size()) +
+                               " heights where the first "
+                               "profile has " +
+                               std::to_string(t.nx));
+            t.z.insert(t.z.end(), row.begin(), row.end());
+            ++t.ny;
+          }
+        if (!spacing)
+          throw InputError("texture file '" + file + "' is empty");
+        return t;
+      }
+    } // namespace
+
+
+
+    Texture
+    read_texture(const std::string &file)
+    {
+      std::ifstream in(file, std::ios::binary);
+      if (!in)
+        throw InputError("texture file '" + file + "' does not exist or cannot be read");
+      const std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+      Texture           t;
+      if (bytes.compare(0, 8, "bISO-1.0") == 0)
+        t = read_binary_sdf(bytes, file);
+      else if (bytes.compare(0, 8, "aISO-1.0") == 0)
+        t = read_ascii_sdf(bytes, file);
+      else
+        t = read_grid(bytes, file);
+      check_texture(t, file);
+      return t;
+    }
+
+
+
+    void
+    write_sdf(const std::string &file, const Texture &t, const bool binary)
+    {
+      if (t.nx > 65535 || t.ny > 65535)
+        throw InputError("SDF file '" + file + "': " + std::to_string(t.nx) + " x " +
+                         std::to_string(t.ny) + " points; SDF allows at most 65535 each");
+      base::AtomicFile out(file, std::ios::binary);
+      auto            &o = out.stream();
+      if (binary)
+        {
+          const auto put = [&](const auto value) {
+            o.write(reinterpret_cast<const char *>(&value), sizeof(value));
+          };
+          o.write("bISO-1.0", 8);
+          o.write("GreenTread", 10);
+          o.write("000000000000", 12);
+          o.write("000000000000", 12);
+          put(std::uint16_t(t.nx));
+          put(std::uint16_t(t.ny));
+          put(t.dx);
+          put(t.dy);
+          put(1.);
+          put(-1.);
+          put(std::uint8_t(0));
+          put(std::uint8_t(7));
+          put(std::uint8_t(0));
+          for (const double z : t.z)
+            put(z);
+        }
+      else
+        {
+          o.precision(17);
+          o << "aISO-1.0\nManufacID   = GreenTread\nNumPoints   = " << t.nx
+            << "\nNumProfiles = " << t.ny << "\nXscale      = " << t.dx
+            << "\nYscale      = " << t.dy
+            << "\nZscale      = 1\nZresolution = -1\nCompression = 0\nDataType    = 7\n"
+               "CheckType   = 0\n*\n";
+          for (unsigned int j = 0; j < t.ny; ++j)
+            {
+              for (unsigned int i = 0; i < t.nx; ++i)
+                o << t(i, j) << (i + 1 < t.nx ? ' ' : '\n');
+            }
+          o << "*\n";
+        }
+      out.commit();
+    }
 
 
 
@@ -203,6 +493,11 @@ namespace greentread
             across[j] =
               std::pow(10., target[c] / 20.) / std::sqrt(1. / bands[c].lower - 1. / bands[c].upper);
         }
+      if (std::all_of(across.begin(), across.end(), [](const double a) { return a == 0.; }))
+        throw InputError("synthetic texture: the grid is " + format_short(Ly) +
+                         " m wide across y, too narrow for any band from " +
+                         format_number(1e3 * bands.front().nominal) + " to " +
+                         format_number(1e3 * bands.back().nominal) + " mm");
       std::vector<int>    along(nx, -1);
       std::vector<double> M(B, 0.);
       const double        scale = 1. / (double(nx) * nx * double(ny) * ny);

@@ -7,6 +7,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 
 using namespace greentread;
 
@@ -98,6 +102,95 @@ BOOST_AUTO_TEST_CASE(synthetic_textures_match_their_presets)
   std::vector<road::WavelengthBand> bands;
   std::vector<double>               levels;
   BOOST_CHECK_THROW(road::texture_preset("road-C", bands, levels), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
+{
+  namespace fs   = std::filesystem;
+  const auto dir = fs::temp_directory_path() / "greentread-texture";
+  fs::create_directories(dir);
+  std::vector<road::WavelengthBand> bands;
+  std::vector<double>               target;
+  road::texture_preset("road-B", bands, target);
+  const auto t = road::synthetic_texture(bands, target, 384e-6, 1024, 64, 7, 5.);
+
+  // SDF, binary and ASCII: the same heights, spacings and sizes back.
+  for (const bool binary : {true, false})
+    {
+      const auto file = (dir / (binary ? "b.sdf" : "a.sdf")).string();
+      road::write_sdf(file, t, binary);
+      const auto back = road::read_texture(file);
+      BOOST_TEST(back.nx == t.nx);
+      BOOST_TEST(back.ny == t.ny);
+      BOOST_TEST(back.dx == t.dx);
+      BOOST_TEST(back.dy == t.dy);
+      BOOST_TEST(back.z == t.z); // 17 digits in ASCII: exact
+    }
+
+  // Binary int16 heights (DataType 5) with Zscale 1 um, written by hand.
+  {
+    std::string bytes = "bISO-1.0";
+    bytes += std::string(10 + 12 + 12, 'x');
+    const auto put = [&bytes](const auto value) {
+      bytes.append(reinterpret_cast<const char *>(&value), sizeof(value));
+    };
+    put(std::uint16_t(3));
+    put(std::uint16_t(2));
+    put(1e-3);
+    put(2e-3);
+    put(1e-6);
+    put(-1.);
+    put(std::uint8_t(0));
+    put(std::uint8_t(5));
+    put(std::uint8_t(0));
+    for (const std::int16_t v : {-3, 0, 7, 100, -100, 1})
+      put(v);
+    std::ofstream(dir / "i16.sdf", std::ios::binary) << bytes;
+    const auto back = road::read_texture((dir / "i16.sdf").string());
+    BOOST_TEST(back.nx == 3u);
+    BOOST_TEST(back.ny == 2u);
+    BOOST_TEST(back.dy == 2e-3);
+    BOOST_TEST(back(2, 0) == 7e-6, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(back(1, 1) == -100e-6, boost::test_tools::tolerance(1e-12));
+    // Cut short: refused.
+    std::ofstream(dir / "short.sdf", std::ios::binary) << bytes.substr(0, bytes.size() - 2);
+    BOOST_CHECK_THROW(road::read_texture((dir / "short.sdf").string()), InputError);
+  }
+
+  // The plain grid.
+  std::ofstream(dir / "grid.txt") << "# two profiles\n0.5e-3 1e-3\n0 1e-4 2e-4\n3e-4 4e-4 5e-4\n";
+  const auto grid = road::read_texture((dir / "grid.txt").string());
+  BOOST_TEST(grid.nx == 3u);
+  BOOST_TEST(grid.ny == 2u);
+  BOOST_TEST(grid.dx == 0.5e-3);
+  BOOST_TEST(grid(1, 1) == 4e-4);
+
+  const auto refused = [&dir](const std::string &name, const std::string &text,
+                              const std::string &message) {
+    std::ofstream(dir / name) << text;
+    BOOST_CHECK_EXCEPTION(road::read_texture((dir / name).string()), InputError,
+                          [&](const InputError &e) {
+                            const bool found =
+                              std::string(e.what()).find(message) != std::string::npos;
+                            if (!found)
+                              BOOST_TEST_MESSAGE("message: " << e.what());
+                            return found;
+                          });
+  };
+  refused("ragged.txt", "1e-3 1e-3\n1 2 3\n1 2\n", "2 heights where the first profile has 3");
+  refused("word.txt", "1e-3 1e-3\n1 x 3\n", "'x' is not a number");
+  refused("nan.txt", "1e-3 1e-3\n1 nan 3\n", "is not a finite number");
+  refused("spacing.txt", "0 1e-3\n1 2 3\n", "must be finite and > 0");
+  refused("star.sdf", "aISO-1.0\nNumPoints = 2\n", "no line '*' ends its header");
+  refused("count.sdf",
+          "aISO-1.0\nNumPoints = 2\nNumProfiles = 2\nXscale = 1\nYscale = 1\nZscale = 1\n*\n1 2 "
+          "3\n*\n",
+          "holds 3 values; its header announces NumPoints x NumProfiles = 4");
+  BOOST_CHECK_EXCEPTION(road::read_texture((dir / "missing.sdf").string()), InputError,
+                        [](const InputError &e) {
+                          return std::string(e.what()).find("does not exist") !=
+                                 std::string::npos;
+                        });
 }
 
 BOOST_AUTO_TEST_SUITE_END()

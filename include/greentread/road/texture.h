@@ -53,6 +53,35 @@ namespace greentread
       double lower, upper; ///< edges [m]
     };
 
+    /**
+     * @brief Read a texture file, recognised by its first bytes:
+     * - `aISO-1.0`: SDF (ISO 25178-71), ASCII: `Key = value` header lines
+     *   (NumPoints along x, NumProfiles across y, Xscale, Yscale, Zscale in
+     *   m), a line `*`, NumPoints x NumProfiles values profile by profile,
+     *   and `*`;
+     * - `bISO-1.0`: SDF, binary little-endian: the 81-byte header (version
+     *   8, ManufacID 10, CreateDate 12, ModDate 12 characters; NumPoints,
+     *   NumProfiles uint16; Xscale, Yscale, Zscale, Zresolution double;
+     *   Compression, DataType, CheckType uint8) and the values of DataType
+     *   0 uint8, 1 uint16, 2 uint32, 3 float, 4 int8, 5 int16, 6 int32,
+     *   7 double; height = value x Zscale;
+     * - anything else: the plain height grid: `#` comment lines, then a line
+     *   `dx dy` (m), then one line per profile along x, each with the same
+     *   number of heights (m).
+     * @throws InputError naming the file (and line) and what is wrong:
+     * missing, unreadable, truncated, unknown data type, compression, a
+     * non-finite height, spacings not > 0, or fewer than 2 x 1 points.
+     */
+    Texture
+    read_texture(const std::string &file);
+
+    /**
+     * @brief Write @p texture as SDF, ASCII or binary (DataType 7, Zscale
+     * 1), under a temporary name renamed when complete.
+     */
+    void
+    write_sdf(const std::string &file, const Texture &texture, bool binary);
+
     /// The bands whose nominal centre lies in [@p shortest, @p longest] [m].
     std::vector<WavelengthBand>
     wavelength_bands(double shortest, double longest);
