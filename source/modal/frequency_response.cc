@@ -211,6 +211,31 @@ namespace greentread
 
     namespace
     {
+      /// Silences HDF5's own error printing while it lives (and restores
+      /// it on every exit, exceptions included).
+      class QuietHdf5
+      {
+      public:
+        QuietHdf5()
+        {
+          H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+          H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        }
+        ~QuietHdf5()
+        {
+          H5Eset_auto2(H5E_DEFAULT, handler, data);
+        }
+        QuietHdf5(const QuietHdf5 &) = delete;
+        QuietHdf5 &
+        operator=(const QuietHdf5 &) = delete;
+
+      private:
+        H5E_auto2_t handler;
+        void       *data;
+      };
+
+
+
       /**
        * Check with the HDF5 C API that @p file is an HDF5 file holding the
        * datasets @p names, before deal.II's wrappers open it: they do not
@@ -219,28 +244,25 @@ namespace greentread
       void
       check_hdf5_layout(const std::string &file, const std::vector<std::string> &names)
       {
-        // Silence HDF5's own error printing during the checks.
-        H5E_auto2_t handler;
-        void       *data;
-        H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
         std::string problem;
-        if (H5Fis_hdf5(file.c_str()) <= 0)
-          problem = "it is not an HDF5 file";
-        else
-          {
-            const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-            if (id < 0)
-              problem = "HDF5 cannot open it";
-            else
-              {
-                for (const auto &name : names)
-                  if (problem.empty() && H5Lexists(id, name.c_str(), H5P_DEFAULT) <= 0)
-                    problem = "it has no dataset /" + name;
-                H5Fclose(id);
-              }
-          }
-        H5Eset_auto2(H5E_DEFAULT, handler, data);
+        {
+          const QuietHdf5 quiet;
+          if (H5Fis_hdf5(file.c_str()) <= 0)
+            problem = "it is not an HDF5 file";
+          else
+            {
+              const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+              if (id < 0)
+                problem = "HDF5 cannot open it";
+              else
+                {
+                  for (const auto &name : names)
+                    if (problem.empty() && H5Lexists(id, name.c_str(), H5P_DEFAULT) <= 0)
+                      problem = "it has no dataset /" + name;
+                  H5Fclose(id);
+                }
+            }
+        }
         if (!problem.empty())
           throw InputError("Green's function file '" + file + "' cannot be read: " + problem +
                            "; expected the layout /frequency [n_f], /points [n_p][3], /green "
@@ -307,13 +329,10 @@ namespace greentread
     {
       if (!std::filesystem::exists(file))
         return {};
-      // Silence HDF5's own error printing: a file without the attribute, or
-      // not an HDF5 file at all, simply has no key.
-      H5E_auto2_t handler;
-      void       *data;
-      H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-      std::string key;
+      // A file without the attribute, or not an HDF5 file at all, simply
+      // has no key: HDF5 need not print its errors.
+      const QuietHdf5 quiet;
+      std::string     key;
       if (H5Fis_hdf5(file.c_str()) > 0)
         {
           const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -328,7 +347,6 @@ namespace greentread
                 }
             }
         }
-      H5Eset_auto2(H5E_DEFAULT, handler, data);
       return key;
     }
 

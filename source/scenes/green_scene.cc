@@ -113,16 +113,7 @@ namespace greentread
       model->assemble_geometric_stiffness(u);
       inflation_seconds = seconds_since(start);
 
-      // The growth of the tread surface, as the tire-cell scene reports it.
-      const double outer = 0.5 * geometry.rim_diameter + geometry.section_height;
-      for (const auto &node : fe::nodes(model->dof_handler(), model->mapping()))
-        {
-          const double r = std::hypot(node.position[0], node.position[1]);
-          if (std::abs(r - outer) < 1e-9 * outer)
-            tread_growth = std::max(
-              tread_growth,
-              (node.position[0] * u[node.dofs[0]] + node.position[1] * u[node.dofs[1]]) / r);
-        }
+      tread_growth = scenes::tread_growth(*model, u, geometry).first;
       periodic_cell = periodic::make_periodic_cell(
         *model, cell->angle(), cell->n_cells(), geometry::rim_seat, geometry::tread_surface, true);
       patch = periodic::place_contact_points(periodic_cell, patch_request);

@@ -81,6 +81,31 @@ namespace greentread
 
 
 
+    std::pair<double, double>
+    tread_growth(const fe::ElasticModel             &model,
+                 const dealii::Vector<double>       &u,
+                 const geometry::GeometryParameters &geometry)
+    {
+      // The radial displacement of the nodes on the outer radius.
+      const double outer = 0.5 * geometry.rim_diameter + geometry.section_height;
+      double       largest = 0., crown = 0.;
+      for (const auto &node : fe::nodes(model.dof_handler(), model.mapping()))
+        {
+          const double r = std::hypot(node.position[0], node.position[1]);
+          if (std::abs(r - outer) < 1e-9 * outer)
+            {
+              const double u_r =
+                (node.position[0] * u[node.dofs[0]] + node.position[1] * u[node.dofs[1]]) / r;
+              largest = std::max(largest, u_r);
+              if (std::abs(node.position[2]) < 1e-9)
+                crown = u_r;
+            }
+        }
+      return {largest, crown};
+    }
+
+
+
     TyreCellScene::TyreCellScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
       : prm(prm_)
       , global(global_)
@@ -119,21 +144,7 @@ namespace greentread
           kp_time = clock.lap();
         }
 
-      // The growth of the tread: radial displacement on the tread surface.
-      const double R_out = 0.5 * geometry.rim_diameter + geometry.section_height;
-      double       crown = 0., growth = 0.;
-      for (const auto &node : fe::nodes(model.dof_handler(), model.mapping()))
-        {
-          const double r = std::hypot(node.position[0], node.position[1]);
-          const double u_r =
-            (node.position[0] * u[node.dofs[0]] + node.position[1] * u[node.dofs[1]]) / r;
-          if (std::abs(r - R_out) < 1e-9 * R_out)
-            {
-              growth = std::max(growth, u_r);
-              if (std::abs(node.position[2]) < 1e-9)
-                crown = u_r;
-            }
-        }
+      const auto [growth, crown] = tread_growth(model, u, geometry);
 
       // Outputs.
       {

@@ -5,6 +5,8 @@
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/scenes/scene.h>
 
+#include <utility>
+
 namespace greentread
 {
   namespace scenes
@@ -30,6 +32,15 @@ namespace greentread
      */
     dealii::Vector<double>
     solve_inflation(const fe::ElasticModel &model, const geometry::TyreCell &cell, double pressure);
+
+    /**
+     * @brief The inflated tread's radial growth: the largest over the tread
+     * surface, and at the crown (z = 0) [m].
+     */
+    std::pair<double, double>
+    tread_growth(const fe::ElasticModel             &model,
+                 const dealii::Vector<double>       &u,
+                 const geometry::GeometryParameters &geometry);
 
     /**
      * @brief Scenes "geometry-study" and "tire-cell": the tyre's periodic
