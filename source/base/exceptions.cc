@@ -1,5 +1,7 @@
 #include <greentread/base/exceptions.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -61,5 +63,24 @@ namespace greentread
     if (!condition)
       throw InputError("parameter '" + path + "' = " + value +
                        " is not allowed; allowed: " + allowed);
+  }
+
+
+
+  void
+  throw_if_any_rank_failed(const MPI_Comm     comm,
+                           const RankFailure  failure,
+                           const std::string &message)
+  {
+    const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int failed = dealii::Utilities::MPI::min(
+      failure != RankFailure::none ? rank : dealii::numbers::invalid_unsigned_int, comm);
+    if (failed == dealii::numbers::invalid_unsigned_int)
+      return;
+    const std::string text = dealii::Utilities::MPI::broadcast(comm, message, failed);
+    const int         kind = dealii::Utilities::MPI::broadcast(comm, int(failure), failed);
+    if (kind == int(RankFailure::input))
+      throw InputError(text);
+    throw NumericalError(text);
   }
 } // namespace greentread

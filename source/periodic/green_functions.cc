@@ -226,14 +226,8 @@ namespace greentread
 
       // Every rank learns whether any failed; the lowest failing rank's
       // message is the one reported.
-      const unsigned int failed_rank = dealii::Utilities::MPI::min(
-        failure.empty() ? dealii::numbers::invalid_unsigned_int : rank, comm);
-      if (failed_rank != dealii::numbers::invalid_unsigned_int)
-        {
-          const std::string message =
-            dealii::Utilities::MPI::broadcast(comm, failure, failed_rank);
-          throw NumericalError("Green's functions: " + message);
-        }
+      throw_if_any_rank_failed(comm, failure.empty() ? RankFailure::none : RankFailure::numerical,
+                               "Green's functions: " + failure);
 
       modal::FrequencyResponseMatrix green;
       green.df      = df;

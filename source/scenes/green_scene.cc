@@ -53,42 +53,29 @@ namespace greentread
         return hex.str();
       }
 
-      /**
-       * Run @p work on every rank; if it throws InputError or
-       * NumericalError on any rank, every rank throws the lowest failing
-       * rank's error, so that no rank waits for the others in a later
-       * collective call.
-       */
+      /// Run @p work on every rank; an InputError or NumericalError on any
+      /// rank is thrown on all of them (throw_if_any_rank_failed()).
       template <typename Work>
       void
       collectively(const MPI_Comm comm, Work &&work)
       {
+        RankFailure failure = RankFailure::none;
         std::string message;
-        int         kind = 0; // 1 input, 2 numerical
         try
           {
             work();
           }
         catch (const InputError &e)
           {
+            failure = RankFailure::input;
             message = e.what();
-            kind    = 1;
           }
         catch (const NumericalError &e)
           {
+            failure = RankFailure::numerical;
             message = e.what();
-            kind    = 2;
           }
-        const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(comm);
-        const unsigned int failed = dealii::Utilities::MPI::min(
-          kind != 0 ? rank : dealii::numbers::invalid_unsigned_int, comm);
-        if (failed == dealii::numbers::invalid_unsigned_int)
-          return;
-        message = dealii::Utilities::MPI::broadcast(comm, message, failed);
-        kind    = dealii::Utilities::MPI::broadcast(comm, kind, failed);
-        if (kind == 1)
-          throw InputError(message);
-        throw NumericalError(message);
+        throw_if_any_rank_failed(comm, failure, message);
       }
     } // namespace
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mpi.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -76,4 +78,21 @@ namespace greentread
                     const std::string &path,
                     const std::string &value,
                     const std::string &allowed);
+
+  /// What one MPI rank has to report, for throw_if_any_rank_failed().
+  enum class RankFailure
+  {
+    none,
+    input,
+    numerical
+  };
+
+  /**
+   * @brief Collective on @p comm: if any rank has a failure, every rank
+   * throws the lowest failing rank's error (InputError or NumericalError,
+   * with its @p message), so that no rank is left waiting in a later
+   * collective call.
+   */
+  void
+  throw_if_any_rank_failed(MPI_Comm comm, RankFailure failure, const std::string &message);
 } // namespace greentread
