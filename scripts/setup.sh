@@ -32,6 +32,7 @@ packages=(
   openmpi-bin           # mpirun: the tire-green scene and its MPI test
   libsuitesparse-dev    # UMFPACK headers: the full-ring reference solve
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
+  libsiconos-numerics-dev # Siconos' LCP solvers: the reference of tests/unit/test_lcp.cc
 )
 
 missing=()
