@@ -1,0 +1,136 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * One-third-octave band spectra of uniformly sampled time signals (IEC
+ * 61260-1 base-10 bands), e.g. of a contact force or a sound pressure, and
+ * their CSV output.
+ */
+
+namespace greentread
+{
+  namespace analysis
+  {
+    /**
+     * @brief One one-third-octave band of frequency, base 10 (IEC 61260-1):
+     * exact centre 1000 x 10^(k/10) Hz, edges at 10^(+-1/20) times the
+     * centre, labelled with its nominal centre (..., 100, 125, 160, 200,
+     * 250, 315, 400, 500, 630, 800, 1000, ... Hz).
+     *
+     * The edges are computed as 1000 x 10^((2k +- 1)/20) Hz, so that the
+     * upper edge of one band is bit for bit the lower edge of the next.
+     */
+    struct FrequencyBand
+    {
+      double nominal; ///< nominal centre [Hz], the band's label
+      double centre;  ///< exact centre 1000 x 10^(k/10) [Hz]
+      double lower;   ///< lower edge centre x 10^(-1/20) [Hz], in the band
+      double upper;   ///< upper edge centre x 10^(+1/20) [Hz], not in it
+    };
+
+    /**
+     * @brief The base-10 one-third-octave bands whose nominal centres lie in
+     * [@p f_low, @p f_high] [Hz] (both inclusive, to a relative 1e-9), in
+     * increasing order. The default 100 Hz to 5 kHz gives the 18 bands of
+     * tyre/road noise.
+     * @throws InputError naming the values unless 0 < f_low <= f_high are
+     * finite and at least one nominal centre lies between them.
+     */
+    std::vector<FrequencyBand>
+    third_octave_bands(double f_low = 100., double f_high = 5000.);
+
+    /**
+     * @brief The level given to a band whose rms is at most 1e-10 times the
+     * reference (in particular a zero rms): -200 dB, instead of -inf.
+     */
+    constexpr double level_floor = -200.;
+
+    /**
+     * @brief A one-third-octave band spectrum: per band, the rms of the
+     * signal's content in the band and its level.
+     */
+    struct BandSpectrum
+    {
+      std::vector<FrequencyBand> bands; ///< the bands, increasing
+      std::vector<double>        rms;   ///< rms in each band [signal unit]
+      /// 20 log10(rms / reference) [dB], at least level_floor.
+      std::vector<double> level;
+      double              reference; ///< reference rms of the levels [signal unit]
+      /**
+       * Number of discrete Fourier lines in the lowest (narrowest) band, at
+       * least 1: the spectrum's resolution. With the Hann window a pure
+       * tone's power lies on the two to four lines nearest its frequency, so
+       * a tone within about one line spacing 1 / (N dt) of a band edge
+       * shares its power with the neighbouring band (in a band of few lines
+       * that is most of the band).
+       */
+      unsigned int lines_in_lowest_band;
+    };
+
+    /**
+     * @brief The one-third-octave band spectrum of the real signal
+     * x_n = x(n dt), n = 0, ..., N - 1.
+     *
+     * The record's mean is removed and the periodic Hann window
+     * w_n = (1 - cos(2 pi n / N)) / 2 applied; the windowed record is
+     * zero-padded to the smallest length M >= N of the form 2^a 3^b 5^c
+     * and Fourier transformed (Eigen's FFT), Y_k. The mean square in a band
+     * is the one-sided power of the lines k > 0 whose frequency k / (M dt)
+     * lies in [lower, upper),
+     * @f[
+     *   \langle x^2 \rangle_b = \frac{2}{M \sum_n w_n^2}
+     *                           \sum_{k \in b} |Y_k|^2 ,
+     * @f]
+     * normalised by the window's energy (sum_n w_n^2 = 3N/8): by Parseval,
+     * summed over all lines this is the windowed record's mean square
+     * divided by that of the window, so a stationary signal keeps its rms
+     * (the "energy correction", 8/3 in power). A sine of amplitude A whose
+     * frequency lies well inside one band gives A / sqrt(2) there; the
+     * sum over the bands of a broadband signal is its mean square between
+     * the lowest band's lower and the highest band's upper edge.
+     *
+     * The levels are 20 log10(rms / @p reference), and level_floor (-200 dB)
+     * for an rms of at most 1e-10 @p reference.
+     *
+     * @param[in] x         The signal, N samples [any unit].
+     * @param[in] dt        Sample interval [s].
+     * @param[in] reference The rms of 0 dB, in the unit of @p x (e.g. 2e-5
+     *                      for a sound pressure in Pa).
+     * @param[in] f_low, f_high The nominal centres of the lowest and highest
+     *                      bands [Hz], as third_octave_bands().
+     *
+     * @throws InputError naming the value: dt or the reference not finite and
+     * > 0; bad band limits; the highest band's upper edge above the Nyquist
+     * frequency 1 / (2 dt) (the message gives the largest dt allowed); a
+     * record shorter than 1 / (upper - lower) of the lowest band, the
+     * duration that guarantees a Fourier line in every band (the message
+     * names the record, the band and the duration needed).
+     * @throws NumericalError naming the index of the first sample that is
+     * not a finite number, or if a band's rms overflows.
+     */
+    BandSpectrum
+    third_octave_spectrum(const std::vector<double> &x,
+                          double                     dt,
+                          double                     reference,
+                          double                     f_low  = 100.,
+                          double                     f_high = 5000.);
+
+    /**
+     * @brief Write @p spectrum as CSV, under a temporary name renamed when
+     * complete (base::AtomicFile): a comment line `# ...` naming
+     * @p quantity_and_unit (e.g. "sound pressure [Pa]"), the reference and
+     * the level floor, the header
+     * `nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB`, and one row per
+     * band, 12 significant digits.
+     * @throws InputError if the file cannot be written.
+     */
+    void
+    write_band_spectrum_csv(const std::filesystem::path &file,
+                            const BandSpectrum          &spectrum,
+                            const std::string           &quantity_and_unit);
+  } // namespace analysis
+} // namespace greentread

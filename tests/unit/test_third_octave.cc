@@ -1,0 +1,352 @@
+// One-third-octave band spectra of time signals against analytic references:
+// the IEC 61260-1 band table, the rms of pure tones (A / sqrt(2) in their
+// band), superposition of two tones, the mean square of white noise per
+// unit bandwidth, the level floor, the CSV file, and refused inputs.
+#include <greentread/analysis/third_octave.h>
+#include <greentread/base/exceptions.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+
+using namespace greentread;
+
+namespace
+{
+  /// fs = 25.6 kHz: the 5 kHz band's upper edge, 5.62 kHz, is well below
+  /// the Nyquist frequency 12.8 kHz.
+  constexpr double dt = 1. / 25600.;
+
+  /// A sin(2 pi f n dt + phase), n = 0, ..., n_samples - 1.
+  std::vector<double>
+  sine(const double A, const double f, const std::size_t n_samples, const double phase = 0.3)
+  {
+    std::vector<double> x(n_samples);
+    for (std::size_t n = 0; n < n_samples; ++n)
+      x[n] = A * std::sin(2. * M_PI * f * n * dt + phase);
+    return x;
+  }
+
+  /// Does @p call throw an @p Error whose message contains @p text?
+  template <typename Error, typename Call>
+  bool
+  throws_with(const Call &call, const std::string &text)
+  {
+    try
+      {
+        call();
+      }
+    catch (const Error &e)
+      {
+        const bool found = std::string(e.what()).find(text) != std::string::npos;
+        BOOST_TEST_MESSAGE("message: " << e.what());
+        return found;
+      }
+    catch (const std::exception &e)
+      {
+        BOOST_TEST_MESSAGE("wrong exception: " << e.what());
+        return false;
+      }
+    return false;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(third_octave)
+
+BOOST_AUTO_TEST_CASE(band_table_follows_iec_61260_base_10)
+{
+  const auto                bands   = analysis::third_octave_bands();
+  const std::vector<double> nominal = {100.,  125.,  160.,  200.,  250.,  315.,
+                                       400.,  500.,  630.,  800.,  1000., 1250.,
+                                       1600., 2000., 2500., 3150., 4000., 5000.};
+  BOOST_TEST_REQUIRE(bands.size() == nominal.size());
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    {
+      BOOST_TEST(bands[b].nominal == nominal[b]); // the labels, exactly
+      const double centre = 1000. * std::pow(10., (int(b) - 10) / 10.);
+      BOOST_TEST(bands[b].centre == centre, boost::test_tools::tolerance(1e-14));
+      BOOST_TEST(bands[b].lower == centre * std::pow(10., -0.05),
+                 boost::test_tools::tolerance(1e-14));
+      BOOST_TEST(bands[b].upper == centre * std::pow(10., 0.05),
+                 boost::test_tools::tolerance(1e-14));
+      // Nominal labels are the exact centres rounded (within 1.2 %).
+      BOOST_TEST(std::abs(bands[b].nominal / bands[b].centre - 1.) < 0.012);
+      if (b > 0) // contiguous, bit for bit
+        BOOST_TEST(bands[b].lower == bands[b - 1].upper);
+    }
+  BOOST_TEST(bands[10].centre == 1000.); // exactly
+
+  // Other ranges: the audio range has 31 bands; single bands; sub-Hz labels.
+  BOOST_TEST(analysis::third_octave_bands(20., 20000.).size() == 31u);
+  const auto one = analysis::third_octave_bands(3150., 3150.);
+  BOOST_TEST_REQUIRE(one.size() == 1u);
+  BOOST_TEST(one[0].nominal == 3150.);
+  const auto low = analysis::third_octave_bands(0.8, 1.6);
+  BOOST_TEST_REQUIRE(low.size() == 4u);
+  BOOST_TEST(low[0].nominal == 0.8);
+  BOOST_TEST(low[3].nominal == 1.6);
+
+  // Refused, naming the values.
+  BOOST_TEST(throws_with<InputError>(
+    [] {
+      analysis::third_octave_bands(200., 100.);
+    },
+    "f_low = 200 Hz to f_high = 100 Hz"));
+  BOOST_TEST(throws_with<InputError>(
+    [] {
+      analysis::third_octave_bands(0., 100.);
+    },
+    "f_low = 0"));
+  BOOST_TEST(throws_with<InputError>(
+    [] {
+      analysis::third_octave_bands(-100., 100.);
+    },
+    "f_low = -100"));
+  BOOST_TEST(throws_with<InputError>(
+    [] {
+      analysis::third_octave_bands(100., std::numeric_limits<double>::infinity());
+    },
+    "f_high = inf"));
+  BOOST_TEST(throws_with<InputError>(
+    [] {
+      analysis::third_octave_bands(110., 120.);
+    },
+    "no nominal band centre"));
+}
+
+BOOST_AUTO_TEST_CASE(a_tone_at_a_band_centre_gives_its_rms_in_that_band)
+{
+  // 1 s (lines 1 Hz apart, 23 in the 100 Hz band), and 20011 samples, a
+  // prime, zero-padded to 20250 = 2 3^4 5^3.
+  const double A = 2., reference = 1e-3, expected = 20. * std::log10(A / std::sqrt(2.) / reference);
+  for (const std::size_t n_samples : {std::size_t(25600), std::size_t(20011)})
+    {
+      const auto bands       = analysis::third_octave_bands();
+      double     worst_error = 0., worst_neighbour = -1e3, worst_two_away = -1e3;
+      for (std::size_t b = 0; b < bands.size(); ++b)
+        BOOST_TEST_CONTEXT("N = " << n_samples << ", tone at " << bands[b].centre << " Hz")
+        {
+          const auto s =
+            analysis::third_octave_spectrum(sine(A, bands[b].centre, n_samples), dt, reference);
+          BOOST_TEST_REQUIRE(s.level.size() == bands.size());
+          BOOST_TEST(s.reference == reference);
+          BOOST_TEST(std::abs(s.level[b] - expected) < 0.1);
+          BOOST_TEST(s.rms[b] == A / std::sqrt(2.), boost::test_tools::tolerance(0.012));
+          worst_error = std::max(worst_error, std::abs(s.level[b] - expected));
+          for (std::size_t c = 0; c < bands.size(); ++c)
+            {
+              const std::size_t distance = b > c ? b - c : c - b;
+              if (distance >= 2)
+                BOOST_TEST(s.level[c] <= s.level[b] - 30.);
+              if (distance >= 2)
+                worst_two_away = std::max(worst_two_away, s.level[c] - s.level[b]);
+              if (distance == 1)
+                worst_neighbour = std::max(worst_neighbour, s.level[c] - s.level[b]);
+            }
+        }
+      const auto s = analysis::third_octave_spectrum(sine(A, 1000., n_samples), dt, reference);
+      // Lines k / (M dt) in [89.13, 112.2) Hz: 90..112 Hz, or 71..88 x 1.264 Hz.
+      BOOST_TEST(s.lines_in_lowest_band == (n_samples == 25600 ? 23u : 18u));
+      BOOST_TEST_MESSAGE("N = " << n_samples << ": worst in-band error " << worst_error
+                                << " dB, neighbours at most " << worst_neighbour
+                                << " dB, bands two away at most " << worst_two_away << " dB");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(two_tones_in_different_bands_superpose)
+{
+  // 240 Hz (250 Hz band) and 1900 Hz (2000 Hz band), off the centres and
+  // off the Fourier lines.
+  const std::size_t   N  = 25600;
+  const double        A1 = 3., f1 = 240.37, A2 = 0.2, f2 = 1900.61;
+  std::vector<double> x  = sine(A1, f1, N, 0.1);
+  const auto          x2 = sine(A2, f2, N, 1.7);
+  for (std::size_t n = 0; n < N; ++n)
+    x[n] += x2[n];
+  const auto        both = analysis::third_octave_spectrum(x, dt, 1.);
+  const auto        one  = analysis::third_octave_spectrum(sine(A1, f1, N, 0.1), dt, 1.);
+  const auto        two  = analysis::third_octave_spectrum(sine(A2, f2, N, 1.7), dt, 1.);
+  const std::size_t b1 = 4, b2 = 13;
+  BOOST_TEST_REQUIRE(both.bands[b1].nominal == 250.);
+  BOOST_TEST_REQUIRE(both.bands[b2].nominal == 2000.);
+  BOOST_TEST(std::abs(both.level[b1] - 20. * std::log10(A1 / std::sqrt(2.))) < 0.1);
+  BOOST_TEST(std::abs(both.level[b2] - 20. * std::log10(A2 / std::sqrt(2.))) < 0.1);
+  // Each band's mean square is the sum of the tones' (their cross term is
+  // the product of one tone's leakage far from its band with the other).
+  for (std::size_t b = 0; b < both.bands.size(); ++b)
+    if (b == b1 || b == b2)
+      BOOST_TEST(std::pow(both.rms[b], 2) == std::pow(one.rms[b], 2) + std::pow(two.rms[b], 2),
+                 boost::test_tools::tolerance(1e-6));
+  // The weaker tone, 23.5 dB below the other, stands out of its neighbours.
+  BOOST_TEST(both.level[b2] > both.level[b2 - 2] + 30.);
+  BOOST_TEST(both.level[b2] > both.level[b2 + 2] + 30.);
+}
+
+BOOST_AUTO_TEST_CASE(white_noise_spreads_its_variance_evenly_over_frequency)
+{
+  // Variance s^2 spread evenly over 0 to fs / 2: a range of bands holds
+  // s^2 (upper - lower) / (fs / 2).
+  const double                     sigma = 0.3;
+  const std::size_t                N     = 4 * 25600; // 4 s
+  std::mt19937                     random(2024);
+  std::normal_distribution<double> normal(0., sigma);
+  std::vector<double>              x(N);
+  for (auto &v : x)
+    v = normal(random);
+  for (const auto &[f_low, f_high] : {std::pair{100., 5000.}, std::pair{20., 10000.}})
+    BOOST_TEST_CONTEXT(f_low << " to " << f_high << " Hz")
+    {
+      const auto s     = analysis::third_octave_spectrum(x, dt, 1., f_low, f_high);
+      double     total = 0.;
+      for (const double r : s.rms)
+        total += r * r;
+      const double expected =
+        sigma * sigma * (s.bands.back().upper - s.bands.front().lower) / (0.5 / dt);
+      BOOST_TEST_MESSAGE(f_low << " to " << f_high << " Hz: sum of band mean squares / expected = "
+                               << total / expected);
+      BOOST_TEST(total == expected, boost::test_tools::tolerance(0.05));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(zero_content_is_floored_and_the_csv_file_is_complete)
+{
+  // A constant: nothing left once the mean is removed, level_floor in
+  // every band, rms 0 (not NaN).
+  const auto flat = analysis::third_octave_spectrum(std::vector<double>(25600, 3.), dt, 2e-5);
+  for (std::size_t b = 0; b < flat.bands.size(); ++b)
+    {
+      BOOST_TEST(flat.rms[b] == 0.);
+      BOOST_TEST(flat.level[b] == analysis::level_floor);
+    }
+  BOOST_TEST(analysis::level_floor == -200.);
+
+  namespace fs   = std::filesystem;
+  const auto dir = fs::temp_directory_path() / "greentread-third-octave";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto file = dir / "spectrum.csv";
+  auto       s    = analysis::third_octave_spectrum(sine(0.5, 1000., 25600), dt, 2e-5);
+  s.rms[0]        = 0.; // a floored band, as written
+  s.level[0]      = analysis::level_floor;
+  analysis::write_band_spectrum_csv(file, s, "sound pressure [Pa]");
+
+  std::ifstream in(file);
+  std::string   line;
+  std::getline(in, line);
+  BOOST_TEST(line.rfind("#", 0) == 0u);
+  BOOST_TEST(line.find("sound pressure [Pa]") != std::string::npos);
+  BOOST_TEST(line.find("reference = 2e-05") != std::string::npos);
+  std::getline(in, line);
+  BOOST_TEST(line == "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB");
+  std::size_t rows = 0;
+  while (std::getline(in, line))
+    {
+      std::replace(line.begin(), line.end(), ',', ' ');
+      std::istringstream fields(line);
+      double             v[6];
+      for (double &f : v)
+        BOOST_TEST_REQUIRE(static_cast<bool>(fields >> f));
+      BOOST_TEST_REQUIRE(rows < s.bands.size());
+      BOOST_TEST(v[0] == s.bands[rows].nominal);
+      BOOST_TEST(v[1] == s.bands[rows].centre, boost::test_tools::tolerance(1e-11));
+      BOOST_TEST(v[2] == s.bands[rows].lower, boost::test_tools::tolerance(1e-11));
+      BOOST_TEST(v[3] == s.bands[rows].upper, boost::test_tools::tolerance(1e-11));
+      BOOST_TEST(v[4] == s.rms[rows], boost::test_tools::tolerance(1e-11));
+      BOOST_TEST(v[5] == s.level[rows], boost::test_tools::tolerance(1e-11));
+      ++rows;
+    }
+  BOOST_TEST(rows == s.bands.size());
+  // Only the final file: the temporary one was renamed.
+  BOOST_TEST(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(bad_inputs_are_refused_with_their_values)
+{
+  const auto x = sine(1., 1000., 25600);
+
+  // fs = 10 kHz: the 5 kHz band (up to 5.62 kHz) is above Nyquist.
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(x, 1e-4, 1.);
+    },
+    "dt = 0.0001 s"));
+  // Up to the 4 kHz band (4.47 kHz) it is not.
+  BOOST_CHECK_NO_THROW(analysis::third_octave_spectrum(x, 1e-4, 1., 100., 4000.));
+
+  // Lines 1 / (N dt) apart must not miss the 100 Hz band, 23.08 Hz wide:
+  // 1000 samples (39 ms) are too few, 43.33 ms are needed.
+  const auto   lowest = analysis::third_octave_bands().front();
+  const double needed = 1. / (lowest.upper - lowest.lower);
+  BOOST_TEST(needed == 0.0433336, boost::test_tools::tolerance(1e-5));
+  BOOST_TEST(format_short(needed) == "0.04333");
+  const auto short_record = sine(1., 1000., 1000);
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(short_record, dt, 1.);
+    },
+    "0.04333 s"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(short_record, dt, 1.);
+    },
+    "the 100 Hz band"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(short_record, dt, 1.);
+    },
+    "record of 1000 samples"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(std::vector<double>(), dt, 1.);
+    },
+    "record of 0"));
+  // Just long enough: 1110 samples, and a line in every band.
+  const auto just = analysis::third_octave_spectrum(sine(1., 1000., 1110), dt, 1.);
+  BOOST_TEST(just.lines_in_lowest_band >= 1u);
+
+  // A NaN or an inf, named by its index.
+  auto bad  = x;
+  bad[1234] = std::numeric_limits<double>::quiet_NaN();
+  BOOST_TEST(throws_with<NumericalError>(
+    [&] {
+      analysis::third_octave_spectrum(bad, dt, 1.);
+    },
+    "sample 1234 "));
+  bad[1234] = 1.;
+  bad[77]   = -std::numeric_limits<double>::infinity();
+  BOOST_TEST(throws_with<NumericalError>(
+    [&] {
+      analysis::third_octave_spectrum(bad, dt, 1.);
+    },
+    "sample 77 "));
+
+  // dt, reference, band limits.
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(x, 0., 1.);
+    },
+    "dt = 0 s"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(x, -dt, 1.);
+    },
+    "dt = -"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(x, dt, 0.);
+    },
+    "reference = 0"));
+  BOOST_TEST(throws_with<InputError>(
+    [&] {
+      analysis::third_octave_spectrum(x, dt, 1., 5000., 100.);
+    },
+    "f_low = 5000"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
