@@ -1,0 +1,140 @@
+#pragma once
+
+#include <greentread/base/output.h>
+#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/frequency_response.h>
+#include <greentread/modal/identification.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <Eigen/Core>
+
+#include <complex>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The modal model of a whole contact patch: every Green's function
+ * \f$g_{ij}\f$ between the patch's points, with poles shared by all pairs.
+ *
+ * The poles are those of the structure, so they are found once, by the LSCE
+ * identification of Appendix A (greentread/modal/identification.h) applied
+ * to the sum of the driving-point functions \f$\sum_i g_{ii}\f$, which holds
+ * every mode seen at any point with the same sign of residue. The residues
+ * of each pair then follow from one linear least-squares problem with as many
+ * right-hand sides as pairs (one QR for all of them).
+ *
+ * **Residual flexibility.** A point force on one tread node meets a local
+ * compliance of the rubber that is nearly flat up to the last line and beyond
+ * (about 70% of the driving point's static compliance on the default tyre):
+ * the modes above the band. A constant term cannot be convolved with an
+ * impulse, so it is carried by a real pole at \f$-2\pi f_r\f$, with
+ * \f$f_r\f$ several times the highest line, whose residue is fitted with the
+ * others. In time it is a first-order lag of time constant
+ * \f$1/(2\pi f_r)\f$: an instantaneous, slightly softened, local compliance.
+ *
+ * **The static line.** The 0 Hz line is weighted more than the others so
+ * that the static compliance of the model equals the structure's, which the
+ * static contact solve uses.
+ */
+
+namespace greentread
+{
+  namespace modal
+  {
+    /// Subsection "Patch model".
+    struct PatchModelParameters
+    {
+      /// f_r / f_max of the residual pole (0: no residual pole).
+      double residual_pole_factor = 3.;
+      /// Weight of the 0 Hz line relative to the others.
+      double static_weight = 20.;
+      /// Poles closer than this, relative to |lambda|, are one pole.
+      double pole_merge_tolerance = 0.005;
+      /// Transfers from the centre point identified for poles.
+      unsigned int reference_transfers = 8;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * @brief Shared poles and the residue matrices of every pair.
+     *
+     * Term k is a complex pair (lambda[k] with Im > 0, contributing
+     * \f$R/(j\omega-\lambda) + \bar R/(j\omega-\bar\lambda)\f$) or a real pole
+     * (Im lambda = 0, \f$R/(j\omega-\lambda)\f$ with real R).
+     */
+    struct PatchModel
+    {
+      std::vector<std::complex<double>> lambda;
+      std::vector<bool>                 real;
+      /// residues[k](i, j): the residue of term k for the displacement at i
+      /// due to a force at j.
+      std::vector<Eigen::MatrixXcd> residues;
+      /// E of Eq. (50) of every pair.
+      Eigen::MatrixXd errors;
+      /// The points of the patch, as in the Green's function file.
+      std::vector<std::array<double, 3>> points;
+      /// The highest line of the fitted data [Hz].
+      double f_max = 0.;
+      /// Poles found by the identification, and its worst E on the reference functions.
+      unsigned int identified_modes = 0;
+      double       sum_error        = 0.;
+
+      unsigned int
+      n_points() const
+      {
+        return static_cast<unsigned int>(points.size());
+      }
+
+      unsigned int
+      n_terms() const
+      {
+        return static_cast<unsigned int>(lambda.size());
+      }
+
+      /// The model of one pair, as used by the one-point convolutions.
+      convolution::ModalModel
+      pair_model(unsigned int i, unsigned int j) const;
+
+      /// \f$\hat g_{ij}(\omega)\f$ of the model.
+      std::complex<double>
+      frequency_response(unsigned int i, unsigned int j, double omega) const;
+
+      /// The static compliance matrix \f$\hat g(0)\f$ of the model.
+      Eigen::MatrixXd
+      static_compliance() const;
+    };
+
+    /**
+     * @brief Fit the model to every pair of @p green.
+     * @throws NumericalError if the identification finds no stable pole or
+     * the least-squares problem is rank deficient.
+     */
+    PatchModel
+    fit_patch_model(const FrequencyResponseMatrix  &green,
+                    const IdentificationParameters &identification,
+                    const PatchModelParameters     &parameters,
+                    bool                            show_progress);
+
+    /// Write @p model as HDF5 (temporary name, then renamed) with its key.
+    void
+    write_patch_model(const std::filesystem::path &file,
+                      const PatchModel            &model,
+                      const base::ParameterRecord &record,
+                      const std::string           &stage_key);
+
+    /// Read a file written by write_patch_model().
+    PatchModel
+    read_patch_model(const std::string &file);
+
+    /// The `stage_key` of a patch model file, empty if there is none.
+    std::string
+    read_patch_model_key(const std::string &file);
+  } // namespace modal
+} // namespace greentread

@@ -1,0 +1,456 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
+#include <greentread/modal/patch_model.h>
+
+#include <deal.II/base/hdf5.h>
+
+#include <Eigen/QR>
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace greentread
+{
+  namespace modal
+  {
+    void
+    PatchModelParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using base::RangePattern;
+      prm.enter_subsection("Patch model");
+      {
+        prm.declare_entry("Residual pole factor", "3", RangePattern::closed(0., 100., ""),
+                          "The local compliance of a point force that the modes below f_max do "
+                          "not explain is carried by a real pole at -2 pi f_r, f_r = this factor "
+                          "times the highest line f_max; its residue is fitted with the others. "
+                          "0: no residual pole (the fit of a driving point then misses most of "
+                          "its compliance).");
+        prm.declare_entry("Static weight", "20", RangePattern::closed(1., 1e6, ""),
+                          "Weight of the 0 Hz line in the least-squares fit of the residues, "
+                          "relative to the other lines: a large weight makes the model's "
+                          "static compliance that of the structure, which the static contact "
+                          "solve uses.");
+        prm.declare_entry("Pole merge tolerance", "0.005", RangePattern::closed(1e-6, 0.1, ""),
+                          "The poles are identified on a few reference functions and merged: "
+                          "two poles closer than this, relative to |lambda|, are one.");
+        prm.declare_entry("Reference transfers", "8", dealii::Patterns::Integer(0, 64),
+                          "How many transfer functions from the point nearest the patch centre, "
+                          "to points spread over the patch, are identified for poles, besides "
+                          "the summed driving points and the summed response to a uniform "
+                          "pressure.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    PatchModelParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Patch model");
+      {
+        residual_pole_factor = prm.get_double("Residual pole factor");
+        static_weight        = prm.get_double("Static weight");
+        pole_merge_tolerance = prm.get_double("Pole merge tolerance");
+        reference_transfers  = prm.get_integer("Reference transfers");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    convolution::ModalModel
+    PatchModel::pair_model(const unsigned int i, const unsigned int j) const
+    {
+      convolution::ModalModel m;
+      for (unsigned int k = 0; k < n_terms(); ++k)
+        if (real[k])
+          m.add_real(lambda[k].real(), residues[k](i, j).real());
+        else
+          m.add_pair(lambda[k], residues[k](i, j));
+      return m;
+    }
+
+
+
+    std::complex<double>
+    PatchModel::frequency_response(const unsigned int i,
+                                   const unsigned int j,
+                                   const double       omega) const
+    {
+      const std::complex<double> jw(0., omega);
+      std::complex<double>       g = 0.;
+      for (unsigned int k = 0; k < n_terms(); ++k)
+        {
+          const std::complex<double> r = residues[k](i, j);
+          if (real[k])
+            g += r.real() / (jw - lambda[k].real());
+          else
+            g += r / (jw - lambda[k]) + std::conj(r) / (jw - std::conj(lambda[k]));
+        }
+      return g;
+    }
+
+
+
+    Eigen::MatrixXd
+    PatchModel::static_compliance() const
+    {
+      const unsigned int n = n_points();
+      Eigen::MatrixXd    g = Eigen::MatrixXd::Zero(n, n);
+      for (unsigned int k = 0; k < n_terms(); ++k)
+        if (real[k])
+          g -= residues[k].real() / lambda[k].real();
+        else
+          g -= 2. * (residues[k].array() / lambda[k]).real().matrix();
+      return g;
+    }
+
+
+
+    PatchModel
+    fit_patch_model(const FrequencyResponseMatrix  &green,
+                    const IdentificationParameters &identification,
+                    const PatchModelParameters     &parameters,
+                    const bool                      show_progress)
+    {
+      const unsigned int n       = green.n_points();
+      const unsigned int n_lines = green.n_lines;
+      if (n == 0 || n_lines < 4)
+        throw InputError("patch model: the Green's functions have " + std::to_string(n) +
+                         " points and " + std::to_string(n_lines) +
+                         " lines; at least 1 point and 4 lines are needed");
+
+      // 1. The poles: LSCE on a few functions that see the modes from
+      // different places (the summed driving points, the total response to a
+      // uniform pressure, transfers from the centre point), merged.
+      const auto summed = [&](const auto &take) {
+        FrequencyResponse frf;
+        frf.df = green.df;
+        frf.values.assign(n_lines, 0.);
+        for (unsigned int k = 0; k < n_lines; ++k)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              if (take(i, j))
+                frf.values[k] += green.values[(std::size_t(k) * n + i) * n + j];
+        return frf;
+      };
+      std::vector<FrequencyResponse> sources;
+      sources.push_back(summed([](unsigned int i, unsigned int j) { return i == j; }));
+      sources.push_back(summed([](unsigned int, unsigned int) { return true; }));
+      {
+        // The point nearest the centre, and its transfers to points spread
+        // over the patch.
+        std::array<double, 3> centre{{0., 0., 0.}};
+        for (const auto &p : green.points)
+          for (unsigned int d = 0; d < 3; ++d)
+            centre[d] += p[d] / n;
+        unsigned int c = 0;
+        double       best = INFINITY;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double d = std::hypot(green.points[i][0] - centre[0],
+                                        green.points[i][1] - centre[1]);
+            if (d < best)
+              best = d, c = i;
+          }
+        const unsigned int n_transfers = std::min(parameters.reference_transfers, n - 1);
+        for (unsigned int s = 1; s <= n_transfers; ++s)
+          sources.push_back(green.get(c, (c + s * n / (n_transfers + 1)) % n));
+      }
+
+      PatchModel model;
+      model.points = green.points;
+      model.f_max  = green.df * (n_lines - 1);
+      IdentificationParameters poles_only = identification;
+      poles_only.upper_residual           = true;
+      poles_only.compare_models           = false;
+      double worst_error                  = 0.;
+      for (const auto &frf : sources)
+        {
+          const Identification found = identify(frf, poles_only);
+          worst_error                = std::max(worst_error, found.error);
+          for (const auto &term : found.model.terms())
+            {
+              // A double pole (critical damping) is carried by one real pole.
+              const bool real = term.kind != convolution::ModalTerm::Kind::complex_pair;
+              const std::complex<double> l =
+                real ? std::complex<double>(term.lambda.real(), 0.) : term.lambda;
+              bool known = false;
+              for (unsigned int t = 0; t < model.lambda.size(); ++t)
+                if (model.real[t] == real &&
+                    std::abs(model.lambda[t] - l) < parameters.pole_merge_tolerance * std::abs(l))
+                  known = true;
+              if (!known)
+                {
+                  model.lambda.push_back(l);
+                  model.real.push_back(real);
+                }
+            }
+        }
+      model.identified_modes = model.lambda.size();
+      model.sum_error        = worst_error;
+      if (parameters.residual_pole_factor > 0.)
+        {
+          model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max,
+                                    0.);
+          model.real.push_back(true);
+        }
+      if (model.lambda.empty())
+        throw NumericalError("patch model: the identification of the summed driving points "
+                             "found no stable pole; raise 'Identification/Maximum number of "
+                             "modes' or set 'Patch model/Residual pole factor' > 0");
+
+      // 2. One least-squares problem, all pairs as right-hand sides. Rows:
+      // Re and Im of every line; columns: one per real pole, two per pair
+      // (the real and imaginary part of R).
+      std::vector<unsigned int> first_column;
+      unsigned int              n_columns = 0;
+      for (unsigned int t = 0; t < model.n_terms(); ++t)
+        {
+          first_column.push_back(n_columns);
+          n_columns += model.real[t] ? 1 : 2;
+        }
+      const Eigen::Index rows = 2 * n_lines;
+      Eigen::MatrixXd    A(rows, n_columns);
+      Eigen::VectorXd    row_weight(n_lines);
+      for (unsigned int k = 0; k < n_lines; ++k)
+        {
+          row_weight[k] = (k == 0) ? parameters.static_weight : 1.;
+          const std::complex<double> jw(0., 2. * M_PI * k * green.df);
+          for (unsigned int t = 0; t < model.n_terms(); ++t)
+            {
+              const std::complex<double> l = model.lambda[t];
+              const unsigned int         c = first_column[t];
+              if (model.real[t])
+                {
+                  const std::complex<double> a = 1. / (jw - l.real());
+                  A(k, c)                      = a.real();
+                  A(k + n_lines, c)            = a.imag();
+                }
+              else
+                {
+                  const std::complex<double> I(0., 1.);
+                  const std::complex<double> a = 1. / (jw - l) + 1. / (jw - std::conj(l));
+                  const std::complex<double> b = I / (jw - l) - I / (jw - std::conj(l));
+                  A(k, c)                      = a.real();
+                  A(k + n_lines, c)            = a.imag();
+                  A(k, c + 1)                  = b.real();
+                  A(k + n_lines, c + 1)        = b.imag();
+                }
+            }
+        }
+      Eigen::VectorXd column_scale(n_columns);
+      for (unsigned int c = 0; c < n_columns; ++c)
+        {
+          column_scale[c] = A.col(c).norm();
+          A.col(c) /= column_scale[c];
+        }
+      Eigen::MatrixXd WA = A;
+      for (unsigned int k = 0; k < n_lines; ++k)
+        {
+          WA.row(k) *= row_weight[k];
+          WA.row(k + n_lines) *= row_weight[k];
+        }
+      Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(WA);
+      qr.setThreshold(1e-12);
+      if (qr.rank() < n_columns)
+        throw NumericalError("patch model: the residue least-squares problem is rank deficient "
+                             "(rank " + std::to_string(qr.rank()) + " of " +
+                             std::to_string(n_columns) + " columns): two poles nearly coincide; "
+                             "lower 'Identification/Maximum number of modes'");
+
+      const std::size_t n_pairs = std::size_t(n) * n;
+      Eigen::MatrixXd   B(rows, n_pairs);
+      for (unsigned int k = 0; k < n_lines; ++k)
+        for (std::size_t p = 0; p < n_pairs; ++p)
+          {
+            const std::complex<double> g = green.values[std::size_t(k) * n_pairs + p];
+            B(k, p)                      = row_weight[k] * g.real();
+            B(k + n_lines, p)            = row_weight[k] * g.imag();
+          }
+      const Eigen::MatrixXd X = qr.solve(B);
+
+      model.residues.assign(model.n_terms(), Eigen::MatrixXcd::Zero(n, n));
+      for (unsigned int t = 0; t < model.n_terms(); ++t)
+        {
+          const unsigned int c = first_column[t];
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const std::size_t p = std::size_t(i) * n + j;
+                if (model.real[t])
+                  model.residues[t](i, j) = X(c, p) / column_scale[c];
+                else
+                  model.residues[t](i, j) = {X(c, p) / column_scale[c],
+                                             X(c + 1, p) / column_scale[c + 1]};
+              }
+        }
+
+      // 3. E of Eq. (50) for every pair, with the trapezoidal weights of the
+      // identification (half weight on the first and last line).
+      const Eigen::MatrixXd fitted = A * X;
+      model.errors.resize(n, n);
+      for (std::size_t p = 0; p < n_pairs; ++p)
+        {
+          double e = 0., norm = 0.;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            {
+              const double w = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
+              const double gr = B(k, p) / row_weight[k], gi = B(k + n_lines, p) / row_weight[k];
+              e += w * std::hypot(gr - fitted(k, p), gi - fitted(k + n_lines, p));
+              norm += w * std::hypot(gr, gi);
+            }
+          model.errors(p / n, p % n) = norm > 0. ? e / norm : 0.;
+        }
+      for (std::size_t p = 0; p < n_pairs; ++p)
+        if (!std::isfinite(model.errors(p / n, p % n)))
+          throw NumericalError("patch model: the fit of pair " + std::to_string(p / n) + ":" +
+                               std::to_string(p % n) + " is not finite");
+      if (show_progress)
+        std::cout << "  patch model: " << model.n_terms() << " poles ("
+                  << model.identified_modes << " identified by LSCE on " << sources.size()
+                  << " reference functions, worst E there " << format_short(100. * worst_error)
+                  << "%), residues of " << n_pairs
+                  << " pairs" << std::endl;
+      return model;
+    }
+
+
+
+    namespace
+    {
+      class QuietErrors
+      {
+      public:
+        QuietErrors()
+        {
+          H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+          H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        }
+        ~QuietErrors()
+        {
+          H5Eset_auto2(H5E_DEFAULT, handler, data);
+        }
+        QuietErrors(const QuietErrors &) = delete;
+        QuietErrors &
+        operator=(const QuietErrors &) = delete;
+
+      private:
+        H5E_auto2_t handler;
+        void       *data;
+      };
+
+      const std::vector<std::string> patch_datasets = {"lambda", "real", "residues", "errors",
+                                                       "points", "info"};
+    } // namespace
+
+
+
+    void
+    write_patch_model(const std::filesystem::path &file,
+                      const PatchModel            &model,
+                      const base::ParameterRecord &record,
+                      const std::string           &stage_key)
+    {
+      base::AtomicFile target(file, std::ios::binary);
+      target.stream().close();
+      {
+        dealii::HDF5::File h5(target.temporary_path().string(),
+                              dealii::HDF5::File::FileAccessMode::create);
+        const std::size_t n = model.n_points(), m = model.n_terms();
+        h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
+        std::vector<int> real(model.real.begin(), model.real.end());
+        h5.create_dataset<int>("real", {m}).write(real);
+        std::vector<std::complex<double>> r(m * n * n);
+        for (std::size_t t = 0; t < m; ++t)
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j)
+              r[(t * n + i) * n + j] = model.residues[t](i, j);
+        h5.create_dataset<std::complex<double>>("residues", {m, n, n}).write(r);
+        std::vector<double> e(n * n);
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t j = 0; j < n; ++j)
+            e[i * n + j] = model.errors(i, j);
+        h5.create_dataset<double>("errors", {n, n}).write(e);
+        std::vector<double> p;
+        for (const auto &x : model.points)
+          p.insert(p.end(), x.begin(), x.end());
+        h5.create_dataset<double>("points", {n, 3}).write(p);
+        h5.create_dataset<double>("info", {3}).write(
+          std::vector<double>{model.f_max, double(model.identified_modes), model.sum_error});
+        h5.set_attribute("parameters", record.text());
+        h5.set_attribute("stage_key", stage_key);
+      }
+      target.commit();
+    }
+
+
+
+    std::string
+    read_patch_model_key(const std::string &file)
+    {
+      if (!std::filesystem::exists(file))
+        return {};
+      const QuietErrors quiet;
+      std::string       key;
+      if (H5Fis_hdf5(file.c_str()) > 0)
+        {
+          const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+          if (id >= 0)
+            {
+              bool complete = H5Aexists(id, "stage_key") > 0;
+              for (const auto &name : patch_datasets)
+                complete = complete && H5Lexists(id, name.c_str(), H5P_DEFAULT) > 0;
+              H5Fclose(id);
+              if (complete)
+                {
+                  dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
+                  key = h5.get_attribute<std::string>("stage_key");
+                }
+            }
+        }
+      return key;
+    }
+
+
+
+    PatchModel
+    read_patch_model(const std::string &file)
+    {
+      if (read_patch_model_key(file).empty())
+        throw InputError("patch model file '" + file +
+                         "' is missing or incomplete; delete it to recompute it");
+      dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
+      PatchModel         model;
+      model.lambda       = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
+      const auto real    = h5.open_dataset("real").read<std::vector<int>>();
+      const auto p       = h5.open_dataset("points").read<std::vector<double>>();
+      const auto e       = h5.open_dataset("errors").read<std::vector<double>>();
+      const auto r       = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
+      const auto info    = h5.open_dataset("info").read<std::vector<double>>();
+      const std::size_t m = model.lambda.size(), n = p.size() / 3;
+      if (real.size() != m || e.size() != n * n || r.size() != m * n * n || info.size() != 3)
+        throw InputError("patch model file '" + file +
+                         "' has inconsistent dataset sizes; delete it to recompute it");
+      model.real.assign(real.begin(), real.end());
+      for (std::size_t i = 0; i < n; ++i)
+        model.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});
+      model.errors.resize(n, n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+          model.errors(i, j) = e[i * n + j];
+      model.residues.assign(m, Eigen::MatrixXcd(n, n));
+      for (std::size_t t = 0; t < m; ++t)
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t j = 0; j < n; ++j)
+            model.residues[t](i, j) = r[(t * n + i) * n + j];
+      model.f_max            = info[0];
+      model.identified_modes = static_cast<unsigned int>(info[1]);
+      model.sum_error        = info[2];
+      return model;
+    }
+  } // namespace modal
+} // namespace greentread
