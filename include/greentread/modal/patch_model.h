@@ -19,12 +19,14 @@
  * The modal model of a whole contact patch: every Green's function
  * \f$g_{ij}\f$ between the patch's points, with poles shared by all pairs.
  *
- * The poles are those of the structure, so they are found once, by the LSCE
+ * The poles are those of the structure, so they are found once: by the LSCE
  * identification of Appendix A (greentread/modal/identification.h) applied
- * to the sum of the driving-point functions \f$\sum_i g_{ii}\f$, which holds
- * every mode seen at any point with the same sign of residue. The residues
- * of each pair then follow from one linear least-squares problem with as many
- * right-hand sides as pairs (one QR for all of them).
+ * to a few reference functions that see the modes from different places (the
+ * summed driving points \f$\sum_i g_{ii}\f$, the summed response to a
+ * uniform pressure \f$\sum_{ij} g_{ij}\f$, and transfers from the point
+ * nearest the centre), their poles merged when closer than a tolerance. The
+ * residues of each pair then follow from one linear least-squares problem
+ * with as many right-hand sides as pairs (one QR for all of them).
  *
  * **Residual flexibility.** A point force on one tread node meets a local
  * compliance of the rubber that is nearly flat up to the last line and beyond
