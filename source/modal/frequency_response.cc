@@ -325,7 +325,7 @@ namespace greentread
 
 
     std::string
-    read_green_stage_key(const std::string &file)
+    read_hdf5_stage_key(const std::string &file, const std::vector<std::string> &datasets)
     {
       if (!std::filesystem::exists(file))
         return {};
@@ -338,9 +338,11 @@ namespace greentread
           const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
           if (id >= 0)
             {
-              const bool has_key = H5Aexists(id, "stage_key") > 0;
+              bool complete = H5Aexists(id, "stage_key") > 0;
+              for (const auto &name : datasets)
+                complete = complete && H5Lexists(id, name.c_str(), H5P_DEFAULT) > 0;
               H5Fclose(id);
-              if (has_key)
+              if (complete)
                 {
                   dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
                   key = h5.get_attribute<std::string>("stage_key");
@@ -348,6 +350,14 @@ namespace greentread
             }
         }
       return key;
+    }
+
+
+
+    std::string
+    read_green_stage_key(const std::string &file)
+    {
+      return read_hdf5_stage_key(file, {});
     }
 
 

@@ -6,8 +6,6 @@
 
 #include <Eigen/QR>
 
-#include <hdf5.h>
-
 #include <cmath>
 #include <iostream>
 
@@ -138,8 +136,12 @@ namespace greentread
         return frf;
       };
       std::vector<FrequencyResponse> sources;
-      sources.push_back(summed([](unsigned int i, unsigned int j) { return i == j; }));
-      sources.push_back(summed([](unsigned int, unsigned int) { return true; }));
+      sources.push_back(summed([](unsigned int i, unsigned int j) {
+        return i == j;
+      }));
+      sources.push_back(summed([](unsigned int, unsigned int) {
+        return true;
+      }));
       {
         // The point nearest the centre, and its transfers to points spread
         // over the patch.
@@ -147,12 +149,12 @@ namespace greentread
         for (const auto &p : green.points)
           for (unsigned int d = 0; d < 3; ++d)
             centre[d] += p[d] / n;
-        unsigned int c = 0;
+        unsigned int c    = 0;
         double       best = INFINITY;
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double d = std::hypot(green.points[i][0] - centre[0],
-                                        green.points[i][1] - centre[1]);
+            const double d =
+              std::hypot(green.points[i][0] - centre[0], green.points[i][1] - centre[1]);
             if (d < best)
               best = d, c = i;
           }
@@ -162,8 +164,8 @@ namespace greentread
       }
 
       PatchModel model;
-      model.points = green.points;
-      model.f_max  = green.df * (n_lines - 1);
+      model.points                        = green.points;
+      model.f_max                         = green.df * (n_lines - 1);
       IdentificationParameters poles_only = identification;
       poles_only.upper_residual           = true;
       poles_only.compare_models           = false;
@@ -194,8 +196,7 @@ namespace greentread
       model.sum_error        = worst_error;
       if (parameters.residual_pole_factor > 0.)
         {
-          model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max,
-                                    0.);
+          model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max, 0.);
           model.real.push_back(true);
         }
       if (model.lambda.empty())
@@ -258,8 +259,9 @@ namespace greentread
       qr.setThreshold(1e-12);
       if (qr.rank() < n_columns)
         throw NumericalError("patch model: the residue least-squares problem is rank deficient "
-                             "(rank " + std::to_string(qr.rank()) + " of " +
-                             std::to_string(n_columns) + " columns): two poles nearly coincide; "
+                             "(rank " +
+                             std::to_string(qr.rank()) + " of " + std::to_string(n_columns) +
+                             " columns): two poles nearly coincide; "
                              "lower 'Identification/Maximum number of modes'");
 
       const std::size_t n_pairs = std::size_t(n) * n;
@@ -298,23 +300,21 @@ namespace greentread
           double e = 0., norm = 0.;
           for (unsigned int k = 0; k < n_lines; ++k)
             {
-              const double w = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
+              const double w  = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
               const double gr = B(k, p) / row_weight[k], gi = B(k + n_lines, p) / row_weight[k];
               e += w * std::hypot(gr - fitted(k, p), gi - fitted(k + n_lines, p));
               norm += w * std::hypot(gr, gi);
             }
           model.errors(p / n, p % n) = norm > 0. ? e / norm : 0.;
+          if (!std::isfinite(model.errors(p / n, p % n)))
+            throw NumericalError("patch model: the fit of pair " + std::to_string(p / n) + ":" +
+                                 std::to_string(p % n) + " is not finite");
         }
-      for (std::size_t p = 0; p < n_pairs; ++p)
-        if (!std::isfinite(model.errors(p / n, p % n)))
-          throw NumericalError("patch model: the fit of pair " + std::to_string(p / n) + ":" +
-                               std::to_string(p % n) + " is not finite");
       if (show_progress)
-        std::cout << "  patch model: " << model.n_terms() << " poles ("
-                  << model.identified_modes << " identified by LSCE on " << sources.size()
+        std::cout << "  patch model: " << model.n_terms() << " poles (" << model.identified_modes
+                  << " identified by LSCE on " << sources.size()
                   << " reference functions, worst E there " << format_short(100. * worst_error)
-                  << "%), residues of " << n_pairs
-                  << " pairs" << std::endl;
+                  << "%), residues of " << n_pairs << " pairs" << std::endl;
       return model;
     }
 
@@ -322,29 +322,8 @@ namespace greentread
 
     namespace
     {
-      class QuietErrors
-      {
-      public:
-        QuietErrors()
-        {
-          H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-          H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        }
-        ~QuietErrors()
-        {
-          H5Eset_auto2(H5E_DEFAULT, handler, data);
-        }
-        QuietErrors(const QuietErrors &) = delete;
-        QuietErrors &
-        operator=(const QuietErrors &) = delete;
-
-      private:
-        H5E_auto2_t handler;
-        void       *data;
-      };
-
-      const std::vector<std::string> patch_datasets = {"lambda", "real", "residues", "errors",
-                                                       "points", "info"};
+      const std::vector<std::string> patch_datasets = {"lambda", "real",   "residues",
+                                                       "errors", "points", "info"};
     } // namespace
 
 
@@ -360,7 +339,7 @@ namespace greentread
       {
         dealii::HDF5::File h5(target.temporary_path().string(),
                               dealii::HDF5::File::FileAccessMode::create);
-        const std::size_t n = model.n_points(), m = model.n_terms();
+        const std::size_t  n = model.n_points(), m = model.n_terms();
         h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
         std::vector<int> real(model.real.begin(), model.real.end());
         h5.create_dataset<int>("real", {m}).write(real);
@@ -379,8 +358,8 @@ namespace greentread
         for (const auto &x : model.points)
           p.insert(p.end(), x.begin(), x.end());
         h5.create_dataset<double>("points", {n, 3}).write(p);
-        h5.create_dataset<double>("info", {3}).write(
-          std::vector<double>{model.f_max, double(model.identified_modes), model.sum_error});
+        h5.create_dataset<double>("info", {3})
+          .write(std::vector<double>{model.f_max, double(model.identified_modes), model.sum_error});
         h5.set_attribute("parameters", record.text());
         h5.set_attribute("stage_key", stage_key);
       }
@@ -392,27 +371,7 @@ namespace greentread
     std::string
     read_patch_model_key(const std::string &file)
     {
-      if (!std::filesystem::exists(file))
-        return {};
-      const QuietErrors quiet;
-      std::string       key;
-      if (H5Fis_hdf5(file.c_str()) > 0)
-        {
-          const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-          if (id >= 0)
-            {
-              bool complete = H5Aexists(id, "stage_key") > 0;
-              for (const auto &name : patch_datasets)
-                complete = complete && H5Lexists(id, name.c_str(), H5P_DEFAULT) > 0;
-              H5Fclose(id);
-              if (complete)
-                {
-                  dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
-                  key = h5.get_attribute<std::string>("stage_key");
-                }
-            }
-        }
-      return key;
+      return read_hdf5_stage_key(file, patch_datasets);
     }
 
 
@@ -425,12 +384,12 @@ namespace greentread
                          "' is missing or incomplete; delete it to recompute it");
       dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
       PatchModel         model;
-      model.lambda       = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
-      const auto real    = h5.open_dataset("real").read<std::vector<int>>();
-      const auto p       = h5.open_dataset("points").read<std::vector<double>>();
-      const auto e       = h5.open_dataset("errors").read<std::vector<double>>();
-      const auto r       = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
-      const auto info    = h5.open_dataset("info").read<std::vector<double>>();
+      model.lambda           = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
+      const auto        real = h5.open_dataset("real").read<std::vector<int>>();
+      const auto        p    = h5.open_dataset("points").read<std::vector<double>>();
+      const auto        e    = h5.open_dataset("errors").read<std::vector<double>>();
+      const auto        r = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
+      const auto        info = h5.open_dataset("info").read<std::vector<double>>();
       const std::size_t m = model.lambda.size(), n = p.size() / 3;
       if (real.size() != m || e.size() != n * n || r.size() != m * n * n || info.size() != 3)
         throw InputError("patch model file '" + file +

@@ -129,5 +129,13 @@ namespace greentread
      */
     std::string
     read_green_stage_key(const std::string &file);
+
+    /**
+     * @brief The `stage_key` attribute of any stage's HDF5 file, or an empty
+     * string if the file, its key or one of @p datasets does not exist (a
+     * file that was never completed has no key).
+     */
+    std::string
+    read_hdf5_stage_key(const std::string &file, const std::vector<std::string> &datasets);
   } // namespace modal
 } // namespace greentread
