@@ -8,6 +8,7 @@
 #include <greentread/road/road_profile.h>
 #include <greentread/scenes/green_scene.h>
 #include <greentread/scenes/identify_scene.h>
+#include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/sdof_scene.h>
 #include <greentread/scenes/tyre_cell_scene.h>
@@ -21,14 +22,17 @@ namespace greentread
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.declare_entry("Scene", "sdof",
-                        dealii::Patterns::Selection("sdof|identify|geometry-study|tire-cell|tire-green"),
+                        dealii::Patterns::Selection(
+                          "sdof|identify|geometry-study|tire-cell|tire-green|tire-road-contact"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
                         "sinusoidal road (paper, Section 3), with its exact solution. "
                         "'identify': modal identification (LSCE, Appendix A) of FRFs. "
                         "'geometry-study': the tyre section and cell, masses and inflation. "
                         "'tire-cell': the same and the cell matrices K, M, C, Kp. "
                         "'tire-green': the Green's functions of the inflated ring at the "
-                        "contact points (Section 4.2), over the MPI ranks.");
+                        "contact points (Section 4.2), over the MPI ranks. "
+                        "'tire-road-contact': the whole pipeline, geometry to the contact "
+                        "stresses and their spectra on road textures (Section 5).");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
                         "paths are relative to the working directory.");
@@ -68,6 +72,9 @@ namespace greentread
       fe::MaterialParameters::declare_parameters(prm);
       InflationParameters::declare_parameters(prm);
       periodic::GreenParameters::declare_parameters(prm);
+      modal::PatchModelParameters::declare_parameters(prm);
+      RoadTextureParameters::declare_parameters(prm);
+      RollingParameters::declare_parameters(prm);
     }
 
 
@@ -86,6 +93,8 @@ namespace greentread
       if (global.scene == "tire-green")
         return std::make_unique<GreenScene>(prm, global);
       // The Selection pattern has rejected any other name.
+      if (global.scene == "tire-road-contact")
+        return std::make_unique<RoadContactScene>(prm, global);
       if (global.scene == "identify")
         return std::make_unique<IdentifyScene>(prm, global);
       if (global.scene == "geometry-study" || global.scene == "tire-cell")

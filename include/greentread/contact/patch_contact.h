@@ -1,0 +1,228 @@
+#pragma once
+
+#include <greentread/contact/kinematic_contact.h>
+#include <greentread/contact/lcp.h>
+#include <greentread/modal/patch_model.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * Kinematic contact of a whole patch of N_p points (Section 5): the
+ * convolution of every g_ij with the point loads, step by step, and the
+ * complementarity problem of one step.
+ *
+ * Conventions: a contact force q_j >= 0 pushes tread point j towards the
+ * wheel centre; u_i is the displacement of point i in that direction
+ * (\f$u = g * q\f$, g_ii(0) > 0). The road asks for an inward displacement
+ * \f$d_i(t)\f$ (its height under the point, plus the indentation, minus the
+ * tread's own height there), so the gap is \f$u_i - d_i \ge 0\f$.
+ */
+
+namespace greentread
+{
+  namespace contact
+  {
+    /// The loads of one step at every point, components as in StepLoad.
+    struct PatchLoad
+    {
+      std::array<Eigen::VectorXd, 4> component; // impulse_start, start, end, impulse_end
+
+      explicit PatchLoad(unsigned int n = 0)
+      {
+        for (auto &c : component)
+          c = Eigen::VectorXd::Zero(n);
+      }
+
+      /// The impulse of the step at every point [N s].
+      Eigen::VectorXd
+      impulse(double dt) const
+      {
+        return component[0] + component[3] + 0.5 * dt * (component[1] + component[2]);
+      }
+    };
+
+    /**
+     * @brief The response at \f$t_{n+1}\f$ (rows) to a unit value of one load
+     * component at one point (columns): \f$\Psi\f$ of Eq. (20) for the patch.
+     */
+    struct PatchInfluence
+    {
+      std::array<Eigen::MatrixXd, 4> u, v;
+      /// Whether the model has an instantaneous compliance G_r: then an
+      /// impulse would move a point infinitely far, the impulse columns are
+      /// not to be used, and the contact force is continuous in time.
+      bool instantaneous = false;
+    };
+
+    /**
+     * @brief Step-by-step convolution of a patch's Green's functions; the
+     * multi-point analogue of convolution::Convolution.
+     */
+    class PatchConvolution
+    {
+    public:
+      PatchConvolution(unsigned int n_points, double dt)
+        : n_p(n_points)
+        , dt(dt)
+      {}
+
+      virtual ~PatchConvolution() = default;
+
+      /// The history term \f$u^h, v^h\f$ at \f$t_{n+1}\f$ at every point.
+      virtual void
+      history(Eigen::VectorXd &u, Eigen::VectorXd &v) = 0;
+
+      /// Record the loads of the current step and move to the next.
+      virtual void
+      advance(const PatchLoad &load) = 0;
+
+      /// Start from a constant load @p q0 applied since \f$t = -\infty\f$.
+      virtual void
+      preload(const Eigen::VectorXd &q0) = 0;
+
+      const PatchInfluence &
+      influence() const
+      {
+        return psi;
+      }
+
+      unsigned int
+      n_points() const
+      {
+        return n_p;
+      }
+
+      double
+      time_step() const
+      {
+        return dt;
+      }
+
+      virtual std::string
+      name() const = 0;
+
+    protected:
+      unsigned int   n_p;
+      double         dt;
+      PatchInfluence psi;
+    };
+
+    /**
+     * @brief The exact modal recursion of greentread/convolution/
+     * modal_recursive_convolution.h for every pair at once: one complex state
+     * per (pole, loaded point), \f$N_m N_p\f$ of them, and the history
+     * \f$u_i = \mathrm{Re}\sum_{k,j} c_{kij}\,e^{\lambda_k\Delta t} s_{kj}\f$ as
+     * one dense matrix-vector product of size \f$2N_p \times 2N_mN_p\f$ per
+     * step, split over @p n_threads threads by rows.
+     */
+    std::unique_ptr<PatchConvolution>
+    make_modal_patch_convolution(const modal::PatchModel &model, double dt,
+                                 unsigned int n_threads = 1);
+
+    /**
+     * @brief The reference: the convolution sum of Eq. (39)-(40) over every
+     * past step, with the kernel of each pair evaluated at every lag from
+     * the same modal model (so the difference to the recursion is the
+     * recursion's own error, not the fit's). Memory \f$8 N_p^2 N_g\f$ doubles:
+     * keep @p n_kernel (the kernel length in steps) for short runs.
+     * The preload's tail is the free decay of the model.
+     */
+    std::unique_ptr<PatchConvolution>
+    make_direct_patch_convolution(const modal::PatchModel &model, double dt,
+                                  unsigned int n_kernel);
+
+    /// What the solve of one step reports.
+    struct PatchStepReport
+    {
+      unsigned int n_contact       = 0;
+      unsigned int outer_iterations = 0;
+      unsigned int lcp_iterations  = 0;
+      unsigned int n_fallback      = 0;
+      bool         converged       = true;
+      /// max |v_i - v_i^r| over the points in contact, relative to max |v^r - v^h|.
+      double velocity_residual = 0.;
+      std::string message;
+    };
+
+    /**
+     * @brief The kinematic contact of one step for all points.
+     *
+     * The load of point j is a non-negative magnitude z_j times a shape
+     * s_j, a unit load made of the four generators of StepLoad.
+     * 1. Shapes: for each point, the one-point impact rule
+     *    (greentread/contact/kinematic_contact.h) applied to what it needs,
+     *    \f$(d_j - u_j^h, \dot d_j - v_j^h)\f$, with its own influence.
+     * 2. Magnitudes: the LCP \f$w = M z + (u^h - d) \ge 0\f$, \f$z \ge 0\f$,
+     *    \f$z^T w = 0\f$ with \f$M_{ij} = \Psi^u_{i\cdot}\,s_j\f$, solved by
+     *    block principal pivoting (greentread/contact/lcp.h): no force is
+     *    negative and no point ends the step inside the road.
+     * 3. Every point in contact takes the rule again, now for what it still
+     *    needs once the others' loads act on it; if a shape changed, back to 2.
+     * Converged when no shape changes by more than 1e-9 (relative) and the LCP
+     * converged; then each contact point meets the road's height exactly and
+     * its velocity to the rule's accuracy. With one point this is exactly the
+     * one-point rule. At most 50 rounds; a step that does not converge keeps
+     * its last (non-negative, non-penetrating) iterate and is reported.
+     */
+    class PatchKinematicContact
+    {
+    public:
+      explicit PatchKinematicContact(const PatchInfluence &psi);
+
+      /**
+       * @param[in] uh, vh History terms at t_{n+1}.
+       * @param[in] d, dd Road demand and its rate at t_{n+1}.
+       * @param[out] load The loads of the step.
+       */
+      PatchStepReport
+      solve(const Eigen::VectorXd &uh, const Eigen::VectorXd &vh, const Eigen::VectorXd &d,
+            const Eigen::VectorXd &dd, PatchLoad &load);
+
+      /// The force at the start of the next step (for a start from a static
+      /// equilibrium, its loads).
+      void
+      set_force(const Eigen::VectorXd &q);
+
+    private:
+      /**
+       * With an instantaneous compliance: the force is continuous and
+       * linear over each step, from the last end value a to b; b solves the
+       * LCP \f$w = \Psi^u_{end} b + (u^h + \Psi^u_{start} a - d) \ge 0\f$,
+       * \f$b \ge 0\f$, \f$b^T w = 0\f$. \f$\Psi^u_{end}\f$ holds G_r, a
+       * reciprocal positive matrix, so the LCP is well posed.
+       */
+      PatchStepReport
+      solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, PatchLoad &load);
+
+      Eigen::VectorXd                      previous_end;
+      const PatchInfluence                &psi;
+      std::vector<KinematicContact>        rules;
+      std::vector<bool>                    active;
+      std::vector<std::array<double, 4>>   shapes;
+    };
+
+    /**
+     * @brief The static contact: \f$G_0 q = u\f$, \f$u - d \ge 0\f$, \f$q \ge 0\f$,
+     * complementary. With @p total_load > 0 the indentation \f$\delta\f$ that
+     * carries it is found too (d = d_0 + delta, bisection on the monotone
+     * total force); otherwise @p delta is used as given.
+     * @throws NumericalError if the LCP fails or the load cannot be reached.
+     */
+    struct StaticContact
+    {
+      Eigen::VectorXd q, u;
+      double          delta = 0.;
+      unsigned int    n_contact = 0;
+    };
+
+    StaticContact
+    solve_static_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &d0, double total_load,
+                         double delta);
+  } // namespace contact
+} // namespace greentread
