@@ -380,10 +380,22 @@ namespace greentread
       // The load is linear over the step from the last step's end value a
       // (known) to b (unknown): u(t_{n+1}) = u^h + Psi_start a + Psi_end b.
       const unsigned int n = uh.size();
+      for (unsigned int j = 0; j < n; ++j)
+        if (!std::isfinite(uh[j]) || !std::isfinite(d[j]))
+          throw NumericalError("patch contact: the history term or the road demand at point " +
+                               std::to_string(j) + " is not finite (u^h = " +
+                               format_short(uh[j]) + ", d = " + format_short(d[j]) + ")");
       if (previous_end.size() != n)
         previous_end = Eigen::VectorXd::Zero(n);
-      const Eigen::VectorXd q   = uh + psi.u[1] * previous_end - d;
-      const LcpResult       lcp = solve_lcp(psi.u[2], q, active);
+      const Eigen::VectorXd q = uh + psi.u[1] * previous_end - d;
+      if (!q.allFinite())
+        throw NumericalError("patch contact: the force of the last step is not finite (largest "
+                             "|q| " + format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
+      const LcpResult lcp = solve_lcp(psi.u[2], q, active);
+      if (!lcp.z.allFinite())
+        throw NumericalError("patch contact: the complementarity solve returned a force that is "
+                             "not finite (" + (lcp.converged ? std::string("converged") :
+                                                               lcp.message) + ")");
       PatchStepReport       report;
       report.outer_iterations = 1;
       report.lcp_iterations   = lcp.iterations;
@@ -524,6 +536,70 @@ namespace greentread
                          std::abs(v_end[j] - dd[j]) / std::max(scale, 1e-300));
           }
       return report;
+    }
+
+
+
+    RollingSummary
+    roll(PatchConvolution                                                              &conv,
+         const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand,
+         const unsigned int                                                       n_steps,
+         const Eigen::VectorXd                                                   &start_force,
+         const std::function<void(const RollingStep &)>                          &observe)
+    {
+      const unsigned int n  = conv.n_points();
+      const double       dt = conv.time_step();
+      if (start_force.size() != 0 && start_force.size() != n)
+        throw InputError("roll: the start force has " + std::to_string(start_force.size()) +
+                         " entries for " + std::to_string(n) + " points");
+      PatchKinematicContact solver(conv.influence());
+      if (start_force.size() != 0)
+        {
+          conv.preload(start_force);
+          solver.set_force(start_force);
+        }
+      PatchLoad       load(n);
+      Eigen::VectorXd uh(n), vh(n), dd(n);
+      RollingSummary  summary;
+      RollingStep     s;
+      s.d.resize(n);
+      summary.steps = n_steps;
+      for (unsigned int k = 0; k < n_steps; ++k)
+        {
+          s.step = k;
+          s.time = (k + 1) * dt;
+          conv.history(uh, vh);
+          demand(s.time, s.d, dd);
+          s.report = solver.solve(uh, vh, s.d, dd, load);
+          conv.advance(load);
+          s.u = uh;
+          for (unsigned int g = 0; g < 4; ++g)
+            s.u += conv.influence().u[g] * load.component[g];
+          s.force = load.impulse(dt) / dt;
+          if (!s.force.allFinite() || !s.u.allFinite())
+            throw NumericalError("rolling contact: the contact forces or displacements are not "
+                                 "finite at step " + std::to_string(k) + " (t = " +
+                                 format_short(s.time) + " s)" +
+                                 (s.report.converged ? std::string() :
+                                                       "; the contact solve had failed: " +
+                                                         s.report.message));
+          if (!s.report.converged)
+            {
+              if (summary.failed_steps == 0)
+                summary.first_failure = "step " + std::to_string(k) + " (t = " +
+                                        format_short(s.time) + " s): " + s.report.message;
+              ++summary.failed_steps;
+            }
+          summary.fallback_points += s.report.n_fallback;
+          const double fraction        = double(s.report.n_contact) / n;
+          summary.min_contact_fraction = std::min(summary.min_contact_fraction, fraction);
+          summary.max_contact_fraction = std::max(summary.max_contact_fraction, fraction);
+          summary.impulse += s.force.sum() * dt;
+          summary.max_penetration = std::max(summary.max_penetration, (s.d - s.u).maxCoeff());
+          if (observe)
+            observe(s);
+        }
+      return summary;
     }
 
 

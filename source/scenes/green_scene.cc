@@ -3,6 +3,7 @@
 #include <greentread/base/parameters.h>
 #include <greentread/base/plot.h>
 #include <greentread/config.h>
+#include <greentread/green_sources_digest.h>
 #include <greentread/fe/cylindrical.h>
 #include <greentread/periodic/deflection_shape.h>
 #include <greentread/scenes/green_scene.h>
@@ -113,13 +114,14 @@ namespace greentread
     {
       std::ostringstream key;
       // The revision is taken when CMake configures, and says nothing of
-      // uncommitted edits: the digest of the running program itself does.
+      // uncommitted edits: the digest of the sources that compute the
+      // Green's functions, taken when building, does.
       const std::string geo_digest = file_digest(geo_file);
       if (geo_digest.empty())
         throw InputError("parameter 'Geometry/Geometry file' = " + geo_file +
                          ": the file cannot be read");
       key << "greentread " << GREENTREAD_VERSION << " (" << GREENTREAD_GIT_REVISION << ")\n"
-          << "program digest " << file_digest("/proc/self/exe") << '\n'
+          << "sources digest " << GREENTREAD_GREEN_SOURCES_DIGEST << '\n'
           << "geo file digest " << geo_digest << '\n';
       const auto record = base::ParameterRecord::from(
         prm, "", {"Geometry", "Materials", "Inflation", "Green's functions"});

@@ -1,6 +1,7 @@
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
+#include <greentread/modal_sources_digest.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/plot.h>
 #include <greentread/base/progress.h>
@@ -463,7 +464,8 @@ namespace greentread
       std::ostringstream modal_record;
       base::ParameterRecord::from(prm, global.scene, {"Identification", "Patch model"})
         .write_comments(modal_record);
-      const std::string modal_key = green_key + "\n--- modal ---\n" + modal_record.str();
+      const std::string modal_key = green_key + "\n--- modal ---\nsources digest " +
+                                    GREENTREAD_MODAL_SOURCES_DIGEST + "\n" + modal_record.str();
       const fs::path    modal_h5  = directory / "patch_model.h5";
       modal::PatchModel model;
       if (global.reuse && modal::read_patch_model_key(modal_h5.string()) == modal_key)
@@ -543,8 +545,6 @@ namespace greentread
 
       std::vector<RunResult> results;
       const unsigned int     threads = dealii::MultithreadInfo::n_threads();
-      const double           area    = 0.;
-      (void)area;
       for (const auto &road_name : roads.roads)
         {
           // The road stage: the texture, its MPD, spectrum and image.
@@ -652,20 +652,13 @@ namespace greentread
                 }
               else
                 conv = contact::make_modal_patch_convolution(model, dt, threads);
-              if (rolling.static_start)
-                conv->preload(equilibrium.q);
-              contact::PatchKinematicContact solver(conv->influence());
-              if (rolling.static_start)
-                solver.set_force(equilibrium.q);
-              contact::PatchLoad              load(n_p);
-              Eigen::VectorXd                 uh(n_p), vh(n_p), d(n_p), dd(n_p), u(n_p);
-              const double                    tributary = patch_road.dx_points * patch_road.dy_points;
+              const double tributary = patch_road.dx_points * patch_road.dy_points;
 
               RunResult result;
               result.road  = road_name;
               result.speed = speed_kmh;
               result.steps = n_steps;
-              std::vector<double> centre_stress(n_steps), total_force(n_steps);
+              std::vector<double> centre_stress(n_steps);
               base::AtomicFile    hist(directory / ("history_" + run + ".csv"));
               auto               &ho = hist.stream();
               ho.precision(8);
@@ -679,55 +672,43 @@ namespace greentread
               std::vector<std::pair<double, std::string>> frames;
               const unsigned int frame_every = std::max(1u, n_steps / rolling.frames);
               base::Progress     progress("    " + run, n_steps);
-              double             impulse_total = 0.;
               Eigen::VectorXd    stress(n_p);
-              for (unsigned int n = 0; n < n_steps; ++n)
-                {
-                  const double t = (n + 1) * dt;
-                  conv->history(uh, vh);
-                  sample(V * t);
-                  d  = (delta + road_z.array() - tread.array()).matrix();
-                  dd = V * road_slope;
-                  const auto report = solver.solve(uh, vh, d, dd, load);
-                  conv->advance(load);
-                  u = uh;
-                  for (unsigned int g = 0; g < 4; ++g)
-                    u += conv->influence().u[g] * load.component[g];
-                  const Eigen::VectorXd force = load.impulse(dt) / dt;
-                  stress                      = force / tributary;
-                  if (!force.allFinite() || !u.allFinite())
-                    throw NumericalError("run " + run + ": the contact forces or displacements "
-                                         "are not finite at step " + std::to_string(n) +
-                                         " (t = " + format_short(t) + " s)");
-                  if (!report.converged)
-                    {
-                      if (result.failed_steps < 5)
-                        std::cout << "    step " << n << " (t = " << format_short(t)
-                                  << " s): the contact solve did not converge: " << report.message
-                                  << '\n';
-                      ++result.failed_steps;
-                    }
-                  result.fallback_points += report.n_fallback;
-                  const double fraction = double(report.n_contact) / n_p;
-                  result.max_contact_fraction = std::max(result.max_contact_fraction, fraction);
-                  result.min_contact_fraction = std::min(result.min_contact_fraction, fraction);
-                  centre_stress[n] = stress[centre];
-                  total_force[n]   = force.sum();
-                  impulse_total += force.sum() * dt;
-                  ho << t << ',' << V * t << ',' << force.sum();
-                  for (const auto p : middle_row)
-                    ho << ',' << u[p] << ',' << stress[p];
-                  ho << '\n';
-                  if ((n + 1) % frame_every == 0 || n + 1 == n_steps)
-                    {
-                      const std::string name = "map_" + std::to_string(frames.size()) + ".vtu";
-                      write_vtu_frame(directory / ("maps_" + run) / name, model.points, nx, ny,
-                                      stress, u, d);
-                      frames.emplace_back(t, "maps_" + run + "/" + name);
-                    }
-                  if (global.print_timings)
-                    progress.update(n + 1);
-                }
+              const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+                sample(V * t);
+                d  = (delta + road_z.array() - tread.array()).matrix();
+                dd = V * road_slope;
+              };
+              const auto observe = [&](const contact::RollingStep &step) {
+                const unsigned int n = step.step;
+                const double       t = step.time;
+                stress               = step.force / tributary;
+                if (!step.report.converged && result.failed_steps < 5)
+                  std::cout << "    step " << n << " (t = " << format_short(t)
+                            << " s): the contact solve did not converge: " << step.report.message
+                            << '\n';
+                result.failed_steps += step.report.converged ? 0 : 1;
+                centre_stress[n] = stress[centre];
+                ho << t << ',' << V * t << ',' << step.force.sum();
+                for (const auto p : middle_row)
+                  ho << ',' << step.u[p] << ',' << stress[p];
+                ho << '\n';
+                if ((n + 1) % frame_every == 0 || n + 1 == n_steps)
+                  {
+                    const std::string name = "map_" + std::to_string(frames.size()) + ".vtu";
+                    write_vtu_frame(directory / ("maps_" + run) / name, model.points, nx, ny,
+                                    stress, step.u, step.d);
+                    frames.emplace_back(t, "maps_" + run + "/" + name);
+                  }
+                if (global.print_timings)
+                  progress.update(n + 1);
+              };
+              const auto summary =
+                contact::roll(*conv, demand, n_steps,
+                              rolling.static_start ? equilibrium.q : Eigen::VectorXd(), observe);
+              result.fallback_points      = summary.fallback_points;
+              result.min_contact_fraction = summary.min_contact_fraction;
+              result.max_contact_fraction = summary.max_contact_fraction;
+              const double impulse_total  = summary.impulse;
               progress.finish();
               record.write_comments(ho);
               hist.commit();

@@ -26,10 +26,13 @@ namespace
     std::vector<std::complex<double>> lambda;
     std::vector<std::array<double, n>> shape;
     double                            f_r, local;
+    /// The local compliance as a constant (true) or a real pole at f_r.
+    bool constant;
 
-    explicit KnownSystem(const double f_max)
+    explicit KnownSystem(const double f_max, const bool constant_local = false)
       : f_r(3. * f_max)
       , local(2e-5)
+      , constant(constant_local)
     {
       const double f[4]  = {180., 530., 1210., 2350.};
       const double xi[4] = {0.03, 0.02, 0.04, 0.05};
@@ -57,7 +60,7 @@ namespace
       // The local compliance: static value local (driving) or local / 4 (transfer).
       const double wr = 2. * M_PI * f_r;
       const double c  = (i == j ? local : 0.25 * local);
-      return sum + c * wr / (jw + wr);
+      return sum + (constant ? c : c * wr / (jw + wr));
     }
 
     modal::FrequencyResponseMatrix
@@ -87,7 +90,8 @@ BOOST_AUTO_TEST_CASE(a_known_system_is_recovered_for_every_pair)
   const KnownSystem                     truth(f_max);
   const auto                            green = truth.sample(df, 257);
   modal::IdentificationParameters       identification;
-  modal::PatchModelParameters           parameters; // residual pole at 3 f_max, as the truth
+  modal::PatchModelParameters           parameters;
+  parameters.instantaneous_residual = false; // a residual pole at 3 f_max, as the truth
   const auto model = modal::fit_patch_model(green, identification, parameters, false);
 
   // The four modes are found (plus the residual pole).
@@ -127,6 +131,44 @@ BOOST_AUTO_TEST_CASE(a_known_system_is_recovered_for_every_pair)
       BOOST_TEST(std::abs(G0(i, j) - truth.g(i, j, 0.).real()) < 1e-5 * std::abs(G0(0, 0)));
 }
 
+BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovered)
+{
+  // The default residual: a constant G_r (here [1 1/4 1/4; ...] 2e-5 m/N,
+  // positive definite) and modes with imaginary residues, as the truth.
+  const double                    f_max = 4000., df = 15.625;
+  const KnownSystem               truth(f_max, true);
+  const auto                      green = truth.sample(df, 257);
+  modal::IdentificationParameters identification;
+  modal::PatchModelParameters     parameters;
+  BOOST_TEST(parameters.instantaneous_residual);
+  const auto model = modal::fit_patch_model(green, identification, parameters, false);
+  BOOST_REQUIRE(model.instantaneous.rows() == KnownSystem::n);
+  double worst = 0., scale = 0.;
+  for (unsigned int i = 0; i < KnownSystem::n; ++i)
+    for (unsigned int j = 0; j < KnownSystem::n; ++j)
+      {
+        BOOST_TEST(std::abs(model.instantaneous(i, j) - (i == j ? 1. : 0.25) * truth.local) <
+                   1e-4 * truth.local);
+        // The modal part starts from rest: g_m(0+) = sum of 2 Re R_k = 0.
+        double start = 0.;
+        for (unsigned int t = 0; t < model.n_terms(); ++t)
+          start += 2. * model.residues[t](i, j).real();
+        BOOST_TEST(start == 0.);
+        for (double f = 0.; f <= f_max; f += 7.3)
+          {
+            const double w = 2. * M_PI * f;
+            worst = std::max(worst, std::abs(model.frequency_response(i, j, w) - truth.g(i, j, w)));
+            scale = std::max(scale, std::abs(truth.g(i, j, w)));
+            // The one-pair model leaves G_r out.
+            BOOST_TEST(std::abs(model.pair_model(i, j).frequency_response(w) +
+                                model.instantaneous(i, j) -
+                                model.frequency_response(i, j, w)) <= 1e-12 * scale);
+          }
+      }
+  BOOST_TEST_MESSAGE("instantaneous residual: worst |g_model - g| = " << worst << " of " << scale);
+  BOOST_TEST(worst < 1e-4 * scale);
+}
+
 BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)
 {
   const KnownSystem                     truth(2000.);
@@ -147,6 +189,7 @@ BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)
       BOOST_TEST((back.residues[t] - model.residues[t]).norm() == 0.);
     }
   BOOST_TEST((back.errors - model.errors).norm() == 0.);
+  BOOST_TEST((back.instantaneous - model.instantaneous).norm() == 0.);
   std::filesystem::remove(file);
   // A missing file has no key and cannot be read.
   BOOST_TEST(modal::read_patch_model_key(file.string()).empty());

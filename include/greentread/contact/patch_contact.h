@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -206,6 +207,51 @@ namespace greentread
       std::vector<bool>                    active;
       std::vector<std::array<double, 4>>   shapes;
     };
+
+    /// What one step of a rolling run hands to its observer.
+    struct RollingStep
+    {
+      unsigned int step = 0;
+      /// t_{n+1} [s].
+      double time = 0.;
+      /// Displacement, demand (road) and the step's mean contact force.
+      Eigen::VectorXd u, d, force;
+      PatchStepReport report;
+    };
+
+    /// What a rolling run reports.
+    struct RollingSummary
+    {
+      unsigned int steps           = 0;
+      unsigned int failed_steps    = 0;
+      unsigned int fallback_points = 0;
+      /// The first failed step's message, if any.
+      std::string first_failure;
+      double      min_contact_fraction = 1.;
+      double      max_contact_fraction = 0.;
+      /// \f$\int \sum_j q_j\,dt\f$ over the run [N s].
+      double impulse = 0.;
+      /// Largest penetration \f$\max(d - u)\f$ at a step's end [m].
+      double max_penetration = 0.;
+    };
+
+    /**
+     * @brief Roll the patch for @p n_steps steps of the convolution's dt.
+     *
+     * Each step: the history term, the demand of the road at \f$t_{n+1}\f$
+     * (@p demand fills d and its rate dd), the contact solve, the update of
+     * the convolution, then @p observe (may be empty). With @p start_force
+     * non-empty, the run starts from that force held since \f$t=-\infty\f$
+     * (a static equilibrium), otherwise from rest.
+     * @throws NumericalError naming the step if a force or displacement is
+     * not finite.
+     */
+    RollingSummary
+    roll(PatchConvolution                                                  &convolution,
+         const std::function<void(double t, Eigen::VectorXd &d, Eigen::VectorXd &dd)> &demand,
+         unsigned int                                                       n_steps,
+         const Eigen::VectorXd                                             &start_force,
+         const std::function<void(const RollingStep &)>                    &observe);
 
     /**
      * @brief The static contact: \f$G_0 q = u\f$, \f$u - d \ge 0\f$, \f$q \ge 0\f$,

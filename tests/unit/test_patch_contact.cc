@@ -1,0 +1,389 @@
+// Multi-point rolling contact (contact/patch_contact.h): checked against the
+// 1-DoF exact solution, the direct convolution, the static contact solution
+// and the momentum balance, and run on stiff and extreme cases.
+
+#include "test_helpers.h"
+
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/patch_contact.h>
+#include <greentread/road/texture.h>
+#include <greentread/scenes/road_scene.h>
+#include <greentread/sdof/exact_solution.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace greentread;
+
+namespace
+{
+  constexpr double ring_radius = 0.3;
+
+  /**
+   * A 4 x 3 patch (6 mm by 7 mm) whose Green's functions are known in closed
+   * form: five damped modes with smooth shapes over the patch, residues
+   * \f$\phi\phi^T / (2 j m \omega_d)\f$ (so g(0+) = 0), and a local
+   * compliance G_r (diagonal 5e-6 m/N, neighbours 1e-6 m/N: symmetric,
+   * diagonally dominant, so positive definite). Points are numbered
+   * i_x * 3 + i_y, as the Green's stage numbers them.
+   */
+  modal::PatchModel
+  synthetic_patch(const double zeta = 0.05, const bool local = true)
+  {
+    const unsigned int nx = 4, ny = 3, n = nx * ny;
+    const double       dx = 6e-3, dy = 7e-3;
+    modal::PatchModel  m;
+    for (unsigned int i = 0; i < nx; ++i)
+      for (unsigned int j = 0; j < ny; ++j)
+        m.points.push_back({{(i - 1.5) * dx, (j - 1.) * dy, ring_radius}});
+    const std::vector<double> f = {120., 180., 260., 340., 450.};
+    for (unsigned int k = 0; k < f.size(); ++k)
+      {
+        Eigen::VectorXd phi(n);
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            const double x = m.points[p][0] / (2. * dx), y = m.points[p][1] / dy;
+            const double shapes[5] = {1., x, y, std::cos(M_PI * x), x * y};
+            phi[p]                 = shapes[k];
+          }
+        const double w = 2. * M_PI * f[k], wd = w * std::sqrt(1. - zeta * zeta), mass = 2.;
+        m.lambda.emplace_back(-zeta * w, wd);
+        m.real.push_back(false);
+        m.residues.push_back((phi * phi.transpose()).cast<std::complex<double>>() /
+                             std::complex<double>(0., 2. * mass * wd));
+      }
+    if (local)
+      {
+        m.instantaneous = Eigen::MatrixXd::Zero(n, n);
+        for (unsigned int p = 0; p < n; ++p)
+          for (unsigned int q = 0; q < n; ++q)
+            {
+              const double r = std::hypot((m.points[p][0] - m.points[q][0]) / dx,
+                                          (m.points[p][1] - m.points[q][1]) / dy);
+              m.instantaneous(p, q) = r < 1e-9 ? 5e-6 : (r < 1.01 ? 1e-6 : 0.);
+            }
+      }
+    m.errors = Eigen::MatrixXd::Zero(n, n);
+    m.f_max  = 1000.;
+    return m;
+  }
+
+  /// The tread's own height x^2 / (2 R) under each point.
+  Eigen::VectorXd
+  tread_height(const modal::PatchModel &m)
+  {
+    Eigen::VectorXd t(m.n_points());
+    for (unsigned int p = 0; p < m.n_points(); ++p)
+      t[p] = m.points[p][0] * m.points[p][0] / (2. * ring_radius);
+    return t;
+  }
+
+  double
+  max_abs(const Eigen::VectorXd &v)
+  {
+    return v.cwiseAbs().maxCoeff();
+  }
+
+  /// What every rolling run must show: finite, non-negative forces, no
+  /// penetration at step ends beyond round-off, every step's solve converged.
+  void
+  check_sound(const contact::RollingSummary &s, const double scale)
+  {
+    BOOST_TEST(s.failed_steps == 0u, "failed steps: " << s.failed_steps << ", first "
+                                                      << s.first_failure);
+    BOOST_TEST(s.max_penetration < 1e-9 * scale);
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(patch_contact)
+
+BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
+{
+  // The 1-DoF problem of Section 3 on a sinusoid, run through the patch
+  // code with one point: the mass's height is its flight (free motion with
+  // gravity from rest on the road) plus g * F, so the road asks g * F >= d
+  // with d = u_r - u_flight.
+  const sdof::Oscillator osc(test::oscillator_parameters());
+  const road::Sinusoid   profile(5e-3, 1e-2);
+  const road::RoadTrack  track{profile, test::oscillator_parameters().speed};
+  const double           dt = 1e-5, end_time = 0.2;
+  const sdof::ExactSolution exact(osc, track, end_time);
+
+  modal::PatchModel model;
+  model.points = {{{0., 0., ring_radius}}};
+  const auto one_mode = osc.modal_model();
+  for (const auto &term : one_mode.terms())
+    {
+      BOOST_REQUIRE(term.kind == convolution::ModalTerm::Kind::complex_pair);
+      model.lambda.push_back(term.lambda);
+      model.real.push_back(false);
+      model.residues.push_back(Eigen::MatrixXcd::Constant(1, 1, term.residue));
+    }
+  model.errors = Eigen::MatrixXd::Zero(1, 1);
+  auto       conv = contact::make_modal_patch_convolution(model, dt);
+  const auto flight = [&](const double t, double &u, double &v) {
+    osc.free_motion(track.height(0.), 0., t, u, v);
+  };
+  const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+    double uf, vf;
+    flight(t, uf, vf);
+    d[0]  = track.height(t) - uf;
+    dd[0] = track.velocity(t) - vf;
+  };
+  double     error = 0.;
+  const auto observe = [&](const contact::RollingStep &s) {
+    double uf, vf;
+    flight(s.time, uf, vf);
+    error = std::max(error, std::abs(s.u[0] + uf - exact.displacement(s.time)));
+  };
+  const auto summary = contact::roll(*conv, demand, static_cast<unsigned int>(end_time / dt),
+                                     Eigen::VectorXd(), observe);
+  BOOST_TEST_MESSAGE("one point, one mode: max |u - u_exact| = " << error << " m");
+  BOOST_TEST(error < 1e-3 * 5e-3); // the 1-DoF scene's own acceptance
+  BOOST_TEST(std::abs(summary.impulse - exact.impulse(0., end_time)) <
+             1e-6 * exact.impulse(0., end_time));
+  BOOST_TEST(summary.failed_steps == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree)
+{
+  // The same patch on a sinusoid with both convolutions: the recursion is
+  // exact, so the runs agree to round-off (far inside any fit error).
+  const auto            model = synthetic_patch();
+  const Eigen::VectorXd tread = tread_height(model);
+  const double          dt = 2e-5, V = 20.;
+  const unsigned int    n_steps = 3000;
+  const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+    for (unsigned int p = 0; p < model.n_points(); ++p)
+      {
+        const double a = 2. * M_PI * (model.points[p][0] + V * t) / 0.02;
+        d[p]           = 2e-4 + 3e-4 * std::sin(a) - tread[p];
+        dd[p]          = 3e-4 * std::cos(a) * 2. * M_PI * V / 0.02;
+      }
+  };
+  std::vector<Eigen::VectorXd> forces[2];
+  unsigned int                 run = 0;
+  const auto                   observe = [&](const contact::RollingStep &s) {
+    forces[run].push_back(s.force);
+  };
+  auto modal  = contact::make_modal_patch_convolution(model, dt, 2);
+  auto direct = contact::make_direct_patch_convolution(model, dt, n_steps + 1);
+  const auto a = contact::roll(*modal, demand, n_steps, Eigen::VectorXd(), observe);
+  run          = 1;
+  const auto b = contact::roll(*direct, demand, n_steps, Eigen::VectorXd(), observe);
+  double     diff = 0., peak = 0.;
+  for (unsigned int n = 0; n < n_steps; ++n)
+    {
+      diff = std::max(diff, max_abs(forces[0][n] - forces[1][n]));
+      peak = std::max(peak, max_abs(forces[1][n]));
+    }
+  BOOST_TEST_MESSAGE("direct vs modal-recursive: max force difference " << diff << " N of "
+                                                                         << peak << " N");
+  check_sound(a, 3e-4);
+  check_sound(b, 3e-4);
+  BOOST_TEST(a.min_contact_fraction < 1.); // the sinusoid lifts points off
+  BOOST_TEST(a.max_contact_fraction > 0.);
+  BOOST_TEST(diff < 1e-9 * peak);
+}
+
+BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
+{
+  const auto            model = synthetic_patch();
+  const Eigen::VectorXd tread = tread_height(model);
+  const Eigen::MatrixXd G0    = model.static_compliance();
+  const auto eq = contact::solve_static_contact(G0, -tread, 100., 0.);
+  BOOST_TEST(std::abs(eq.q.sum() - 100.) < 1e-9 * 100.);
+  BOOST_TEST(eq.q.minCoeff() >= 0.);
+  // Complementarity of the static solution itself.
+  const Eigen::VectorXd gap = G0 * eq.q - (-tread.array() + eq.delta).matrix();
+  BOOST_TEST(gap.minCoeff() > -1e-12);
+  BOOST_TEST(std::abs(gap.dot(eq.q)) < 1e-12 * 100.);
+  BOOST_TEST(eq.n_contact < model.n_points()); // the tread's curvature lifts the ends
+
+  auto conv = contact::make_modal_patch_convolution(model, 1e-5);
+  const auto demand = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+    d  = (-tread.array() + eq.delta).matrix();
+    dd = Eigen::VectorXd::Zero(d.size());
+  };
+  double     drift = 0.;
+  const auto observe = [&](const contact::RollingStep &s) {
+    drift = std::max(drift, max_abs(s.force - eq.q));
+  };
+  const auto s = contact::roll(*conv, demand, 5000, eq.q, observe);
+  BOOST_TEST_MESSAGE("flat road from equilibrium: largest force change " << drift << " N");
+  BOOST_TEST(drift < 1e-8 * 100.);
+  check_sound(s, 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(slow_roll_follows_the_static_solution)
+{
+  // Over a 2 cm sinusoid at 5 and 1 cm/s (2.5 and 0.5 Hz against modes from
+  // 120 Hz) the forces follow the static solution of each position; what is
+  // left is the damping force, first order in the speed.
+  const auto            model = synthetic_patch();
+  const Eigen::VectorXd tread = tread_height(model);
+  const Eigen::MatrixXd G0    = model.static_compliance();
+  const double          dt    = 1e-4;
+  std::vector<double>   errors;
+  for (const double V : {0.05, 0.01})
+    {
+      const auto road = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+        for (unsigned int p = 0; p < model.n_points(); ++p)
+          {
+            const double a = 2. * M_PI * (model.points[p][0] + V * t) / 0.02;
+            d[p]           = 3e-4 * std::sin(a) - tread[p];
+            dd[p]          = 3e-4 * std::cos(a) * 2. * M_PI * V / 0.02;
+          }
+      };
+      Eigen::VectorXd d0(model.n_points()), dd0(model.n_points());
+      road(0., d0, dd0);
+      const auto eq     = contact::solve_static_contact(G0, d0, 150., 0.);
+      const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+        road(t, d, dd);
+        d.array() += eq.delta;
+      };
+      double     error = 0., peak = 0.;
+      const auto observe = [&](const contact::RollingStep &s) {
+        if (s.step % 97 != 0)
+          return;
+        const auto ref = contact::solve_static_contact(G0, s.d, 0., 0.);
+        error          = std::max(error, max_abs(s.force - ref.q));
+        peak           = std::max(peak, max_abs(ref.q));
+      };
+      auto       conv = contact::make_modal_patch_convolution(model, dt);
+      const auto s    = contact::roll(*conv, demand, static_cast<unsigned int>(0.02 / V / dt),
+                                   eq.q, observe); // one wavelength
+      BOOST_TEST_MESSAGE("slow roll at " << V << " m/s: largest difference to the static "
+                                         << "solution " << error << " N of " << peak << " N");
+      check_sound(s, 1e-3);
+      BOOST_TEST(s.min_contact_fraction < s.max_contact_fraction); // the active set moves
+      errors.push_back(error / peak);
+    }
+  BOOST_TEST(errors[1] < 1e-3);
+  // It falls with the speed (measured: 3.2 times for 5 times slower; the
+  // start-up ringing also counts).
+  BOOST_TEST(errors[0] / errors[1] > 2.);
+}
+
+BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
+{
+  // Dropped onto a flat road at a fixed indentation from rest (an impact
+  // start), the patch rings down to the static solution: after the
+  // start-up, the impulse is the static load times the time.
+  const auto            model = synthetic_patch();
+  const Eigen::VectorXd tread = tread_height(model);
+  const auto eq = contact::solve_static_contact(model.static_compliance(), -tread, 80., 0.);
+  const double       dt = 2e-5, t_settle = 0.2;
+  const unsigned int n_steps = 20000; // 0.4 s; the slowest mode decays in 1/(0.05 * 2 pi 120 Hz)
+  const auto         demand  = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+    d  = (-tread.array() + eq.delta).matrix();
+    dd = Eigen::VectorXd::Zero(d.size());
+  };
+  double     late_impulse = 0., first_peak = 0.;
+  const auto observe = [&](const contact::RollingStep &s) {
+    if (s.time > t_settle)
+      late_impulse += s.force.sum() * dt;
+    else
+      first_peak = std::max(first_peak, s.force.sum());
+  };
+  auto       conv = contact::make_modal_patch_convolution(model, dt);
+  const auto s    = contact::roll(*conv, demand, n_steps, Eigen::VectorXd(), observe);
+  const double expected = 80. * (n_steps * dt - t_settle);
+  BOOST_TEST_MESSAGE("impulse after the start-up " << late_impulse << " N s, static load times "
+                                                   << "duration " << expected
+                                                   << " N s; start-up peak " << first_peak << " N");
+  check_sound(s, 1e-3);
+  BOOST_TEST(first_peak > 80.); // there was a transient to settle
+  BOOST_TEST(std::abs(late_impulse - expected) < 1e-4 * expected);
+}
+
+BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
+{
+  // A patch on a synthetic road-A texture, envelope sampling as in the
+  // scene, under several extremes; each run must be finite, converge every
+  // step, never pull (forces >= 0 by construction of the LCP) and not
+  // penetrate.
+  const auto            model = synthetic_patch(0.02);
+  const Eigen::VectorXd tread = tread_height(model);
+  const Eigen::MatrixXd G0    = model.static_compliance();
+  std::vector<road::WavelengthBand> bands;
+  std::vector<double>               levels;
+  road::texture_preset("road-A", bands, levels);
+  const double  spacing = 3.84e-4;
+  road::Texture texture = road::synthetic_texture(bands, levels, spacing, 2048, 96, 7);
+
+  struct Case
+  {
+    std::string name;
+    double      roughness, speed_kmh, load, dt_factor;
+  };
+  const std::vector<Case> cases = {{"very rough road (texture x 5)", 5., 90., 100., 1.},
+                                   {"130 km/h", 1., 130., 100., 1.},
+                                   {"barely touching (0.01 N)", 1., 90., 0.01, 1.},
+                                   {"dt = 20 road samples", 1., 90., 100., 20.},
+                                   {"dt = 1/20 road sample", 1., 90., 100., 0.05}};
+  for (const auto &c : cases)
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      road::Texture t = texture;
+      for (auto &z : t.z)
+        z *= c.roughness;
+      const scenes::PatchRoad road(t, model.points, scenes::RoadSampling::envelope, "test");
+      const double            V  = c.speed_kmh / 3.6;
+      const double            dt = c.dt_factor * spacing / V;
+      const double            distance = std::min(0.3, road.usable_length());
+      Eigen::VectorXd         z(model.n_points()), slope(model.n_points());
+      const auto              sample = [&](const double x) {
+        for (unsigned int p = 0; p < model.n_points(); ++p)
+          road.height(p, x, z[p], slope[p]);
+      };
+      sample(0.);
+      const auto eq = contact::solve_static_contact(G0, z - tread, c.load, 0.);
+      const auto demand = [&](const double time, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+        sample(V * time);
+        d  = (eq.delta + z.array() - tread.array()).matrix();
+        dd = V * slope;
+      };
+      double     negative = 0.;
+      const auto observe  = [&](const contact::RollingStep &s) {
+        negative = std::min(negative, s.force.minCoeff());
+      };
+      auto       conv = contact::make_modal_patch_convolution(model, dt);
+      const auto s    = contact::roll(*conv, demand, static_cast<unsigned int>(distance / (V * dt)),
+                                   eq.q, observe);
+      const double mean = s.impulse / (s.steps * dt);
+      BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
+                                << 100. * s.min_contact_fraction << "% to "
+                                << 100. * s.max_contact_fraction << "%, mean force " << mean
+                                << " N (static " << c.load << " N), failed steps "
+                                << s.failed_steps << ", penetration " << s.max_penetration);
+      check_sound(s, 1e-3);
+      BOOST_TEST(negative >= 0.);
+      BOOST_TEST(std::isfinite(mean));
+      if (c.name.rfind("very rough", 0) == 0)
+        BOOST_TEST(s.min_contact_fraction < 0.5); // many points lose contact
+      if (c.name.rfind("barely", 0) == 0)
+        BOOST_TEST(s.min_contact_fraction == 0.); // and some steps lose it all
+    }
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_refused)
+{
+  const auto model = synthetic_patch();
+  BOOST_CHECK_THROW(contact::make_modal_patch_convolution(model, 0.), InputError);
+  BOOST_CHECK_THROW(contact::make_modal_patch_convolution(model, NAN), InputError);
+  auto       conv   = contact::make_modal_patch_convolution(model, 1e-5);
+  const auto demand = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+    d  = Eigen::VectorXd::Constant(d.size(), NAN);
+    dd = Eigen::VectorXd::Zero(d.size());
+  };
+  BOOST_CHECK_THROW(contact::roll(*conv, demand, 3, Eigen::VectorXd(), {}), NumericalError);
+  BOOST_CHECK_THROW(contact::roll(*conv, demand, 3, Eigen::VectorXd::Zero(5), {}), InputError);
+  // A static load no indentation can carry (no point can reach the road).
+  BOOST_CHECK_THROW(contact::solve_static_contact(Eigen::MatrixXd::Zero(2, 2),
+                                                  Eigen::VectorXd::Zero(2), 10., 0.),
+                    NumericalError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
