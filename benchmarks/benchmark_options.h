@@ -1,7 +1,8 @@
 #pragma once
 
 // Command line shared by the benchmarks: --quick (a smoke run with small
-// sizes) and --output DIR (where CSV and PNG files go).
+// sizes), --output DIR (where CSV and PNG files go) and --model FILE (an
+// input model, for the benchmarks that take one).
 
 #include <greentread/base/output.h>
 
@@ -19,6 +20,8 @@ namespace benchmark
   {
     bool                  quick = false;
     std::filesystem::path output;
+    /// --model FILE: an input model where a benchmark takes one (else empty).
+    std::filesystem::path model;
   };
 
   inline Options
@@ -31,9 +34,11 @@ namespace benchmark
         options.quick = true;
       else if (std::strcmp(argv[i], "--output") == 0 && i + 1 < argc)
         options.output = argv[++i];
+      else if (std::strcmp(argv[i], "--model") == 0 && i + 1 < argc)
+        options.model = argv[++i];
       else
         {
-          std::cerr << "usage: " << name << " [--quick] [--output DIR]\n";
+          std::cerr << "usage: " << name << " [--quick] [--output DIR] [--model FILE]\n";
           std::exit(2);
         }
     options.output = greentread::base::prepare_output_directory(options.output.string());

@@ -61,9 +61,9 @@ cmake --build "$build_dir" -j "$jobs"
 
 case "$mode" in
   run)
-    echo "== running the built-in default scene"
+    echo "== running the main job: prm/tire_road_contact.prm (tyre on road-A and road-B, 50-90 km/h)"
     cd "$top"
-    "$build_dir/greentread"
+    "$build_dir/greentread" prm/tire_road_contact.prm
     ;;
   test)
     echo "== running the test suite"
