@@ -113,21 +113,25 @@ namespace greentread
     green_stage_key(const dealii::ParameterHandler &prm, const std::string &geo_file)
     {
       std::ostringstream key;
-      // The revision is taken when CMake configures, and says nothing of
-      // uncommitted edits: the digest of the sources that compute the
-      // Green's functions, taken when building, does.
+      // What the Green's functions depend on, and nothing else: the digest
+      // of the sources that compute them (taken when building, so it sees
+      // uncommitted edits and ignores commits that touch other code), the
+      // .geo file's content (not its path, which depends on the working
+      // directory) and the parameters. Not the git revision: a commit to
+      // the README would throw away five minutes of solves.
       const std::string geo_digest = file_digest(geo_file);
       if (geo_digest.empty())
         throw InputError("parameter 'Geometry/Geometry file' = " + geo_file +
                          ": the file cannot be read");
-      key << "greentread " << GREENTREAD_VERSION << " (" << GREENTREAD_GIT_REVISION << ")\n"
+      key << "greentread " << GREENTREAD_VERSION << '\n'
           << "sources digest " << GREENTREAD_GREEN_SOURCES_DIGEST << '\n'
           << "geo file digest " << geo_digest << '\n';
       const auto record = base::ParameterRecord::from(
         prm, "", {"Geometry", "Materials", "Inflation", "Green's functions"});
       for (const auto &[path, value] : record.entries)
         if (path != "Green's functions/Pairs" &&
-            path != "Green's functions/Deflection shape frequency")
+            path != "Green's functions/Deflection shape frequency" &&
+            path != "Geometry/Geometry file")
           key << path << " = " << value << '\n';
       return key.str();
     }
