@@ -61,9 +61,10 @@ cmake --build "$build_dir" -j "$jobs"
 
 case "$mode" in
   run)
-    echo "== running the main job: prm/tire_road_contact.prm (tyre on road-A and road-B, 50-90 km/h)"
+    echo "== running the built-in default scene, the main job (tyre on road-A and road-B, 50-90 km/h)"
+    echo "   (the same as greentread prm/tire_road_contact.prm, writing to output/)"
     cd "$top"
-    "$build_dir/greentread" prm/tire_road_contact.prm
+    "$build_dir/greentread"
     ;;
   test)
     echo "== running the test suite"

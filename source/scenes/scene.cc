@@ -21,7 +21,7 @@ namespace greentread
     void
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Scene", "sdof",
+      prm.declare_entry("Scene", "tire-road-contact",
                         dealii::Patterns::Selection(
                           "sdof|identify|geometry-study|tire-cell|tire-green|tire-road-contact"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
