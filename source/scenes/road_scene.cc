@@ -104,8 +104,7 @@ namespace greentread
           throw InputError("parameter 'Road texture/Roads' is empty; allowed: a list of "
                            "road-A, road-B, sinusoid, flat or texture files");
         for (const auto &r : roads)
-          if (r != "road-A" && r != "road-B" && r != "sinusoid" && r != "flat" &&
-              !std::filesystem::exists(r))
+          if (!is_built_in(r) && !std::filesystem::exists(r))
             throw InputError("parameter 'Road texture/Roads': '" + r +
                              "' is neither road-A, road-B, sinusoid, flat nor an existing "
                              "texture file");
@@ -125,7 +124,7 @@ namespace greentread
     road::Texture
     RoadTextureParameters::make(const std::string &name, const double width) const
     {
-      if (name != "road-A" && name != "road-B" && name != "sinusoid" && name != "flat")
+      if (!is_built_in(name))
         return road::read_texture(name);
       road::Texture t;
       t.dx = t.dy = spacing;
@@ -337,6 +336,33 @@ namespace greentread
 
 
 
+    namespace
+    {
+      /**
+       * The highest band of a run's spectrum: 5 kHz, or the highest band
+       * below the Nyquist frequency 1 / (2 dt) of a coarser time step.
+       * @throws InputError naming 'Rolling/Time step' if not even the 100 Hz
+       * band fits.
+       */
+      double
+      spectrum_top_band(const double dt)
+      {
+        double top = 0.;
+        for (const auto &band : analysis::third_octave_bands(100., 5000.))
+          if (band.upper <= 0.5 / dt)
+            top = band.nominal;
+        if (top == 0.)
+          throw InputError("parameter 'Rolling/Time step' = " + format_short(dt) +
+                           " s: the spectra need frequencies up to at least 112 Hz (the 100 Hz "
+                           "band); allowed: a time step <= " +
+                           format_short(0.5 / analysis::third_octave_bands(100., 100.)[0].upper) +
+                           " s");
+        return top;
+      }
+    } // namespace
+
+
+
     RoadContactScene::RoadContactScene(dealii::ParameterHandler &prm_,
                                        const GlobalParameters   &global_)
       : prm(prm_)
@@ -350,6 +376,56 @@ namespace greentread
       patch_model.parse_parameters(prm);
       roads.parse_parameters(prm);
       rolling.parse_parameters(prm);
+
+      // A texture file is read now, not after the Green's functions (five
+      // minutes): a malformed file, or one too narrow or too short for the
+      // patch and the distance, is refused at once. The patch is the one
+      // asked for; the points snap to tread nodes later, and PatchRoad
+      // checks their exact extent again.
+      for (const auto &name : roads.roads)
+        if (!RoadTextureParameters::is_built_in(name) && texture_files.count(name) == 0)
+          {
+            road::Texture t = road::read_texture(name);
+            const double  needed_width = green.patch.width + 2. * t.dy;
+            if (t.ny > 1 && t.ny * t.dy < needed_width)
+              throw InputError("texture file '" + name + "' is " + format_short(t.ny * t.dy) +
+                               " m wide; the patch ('Green's functions/Patch width' = " +
+                               format_short(green.patch.width) + " m) needs " +
+                               format_short(needed_width) + " m");
+            const double usable = t.length() - green.patch.length - 2. * t.dx;
+            if (rolling.distance > usable)
+              throw InputError("parameter 'Rolling/Distance' = " + format_short(rolling.distance) +
+                               " m is longer than texture file '" + name + "' allows (" +
+                               format_short(std::max(0., usable)) + " m: the file is " +
+                               format_short(t.length()) + " m long, the patch " +
+                               format_short(green.patch.length) + " m)");
+            texture_files.emplace(name, std::move(t));
+          }
+
+      // The spectra of each run, checked now rather than after the run: the
+      // time step must resolve the 100 Hz band, and the record must be long
+      // enough for its Fourier lines to fall in that band.
+      const auto   lowest = analysis::third_octave_bands(100., 100.)[0];
+      const double needed = 1. / (lowest.upper - lowest.lower);
+      for (const auto &name : roads.roads)
+        {
+          const auto   file    = texture_files.find(name);
+          const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
+          for (const double speed_kmh : rolling.speeds)
+            {
+              const double V  = speed_kmh / 3.6;
+              const double dt = rolling.time_step > 0. ? rolling.time_step : spacing / V;
+              spectrum_top_band(dt);
+              if (rolling.distance / V < needed)
+                throw InputError("parameter 'Rolling/Distance' = " +
+                                 format_short(rolling.distance) + " m lasts " +
+                                 format_short(rolling.distance / V) + " s at " +
+                                 format_number(speed_kmh) +
+                                 " km/h; the 100 Hz band of the spectra needs a record of at "
+                                 "least " + format_short(needed) + " s; allowed: a distance >= " +
+                                 format_short(needed * V) + " m");
+            }
+        }
     }
 
 
@@ -551,7 +627,9 @@ namespace greentread
           const auto        label = road_label(road_name);
           const double      width = (ys.size() > 1 ? ys.back() - ys.front() : 0.) + 0.03;
           std::cout << "Road '" << road_name << "'\n";
-          const road::Texture texture = roads.make(road_name, width);
+          const auto          file    = texture_files.find(road_name);
+          const road::Texture texture =
+            file != texture_files.end() ? file->second : roads.make(road_name, width);
           const PatchRoad     patch_road(texture, model.points, roads.sampling, road_name);
           {
             const auto   bands    = road::wavelength_bands(std::max(2e-3, 4. * texture.dx),
@@ -723,8 +801,13 @@ namespace greentread
               }
               result.seconds    = since(t_run);
               result.mean_force = impulse_total / (n_steps * dt);
-              result.spectrum   = analysis::third_octave_spectrum(
-                centre_stress, dt, rolling.stress_reference, 100., 5000.);
+              const double top_band = spectrum_top_band(dt);
+              if (top_band < 5000.)
+                std::cout << "    the spectrum ends at the " << format_number(top_band)
+                          << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)
+                          << " us resolves up to " << format_printf("%.0f", 0.5 / dt) << " Hz\n";
+              result.spectrum = analysis::third_octave_spectrum(
+                centre_stress, dt, rolling.stress_reference, 100., top_band);
               analysis::write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"),
                                                 result.spectrum,
                                                 "contact stress at the patch centre, Pa");
@@ -732,7 +815,9 @@ namespace greentread
                         << " N (static " << format_printf("%.4g", equilibrium.q.sum())
                         << " N), points in contact " << format_printf("%.0f", 100. * result.min_contact_fraction)
                         << "% to " << format_printf("%.0f", 100. * result.max_contact_fraction)
-                        << "%, steps the contact solve did not converge: " << result.failed_steps
+                        << "%, largest penetration at a step's end "
+                        << format_printf("%.2g", summary.max_penetration)
+                        << " m, steps the contact solve did not converge: " << result.failed_steps
                         << ", point-steps on the fallback: " << result.fallback_points << '\n';
               if (global.print_timings)
                 std::cout << "    " << format_printf("%.3g", result.seconds) << " s, "

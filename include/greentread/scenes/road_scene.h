@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,14 @@ namespace greentread
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /// Whether @p road names a built-in road (a preset, "sinusoid", "flat")
+      /// rather than a texture file.
+      static bool
+      is_built_in(const std::string &road)
+      {
+        return road == "road-A" || road == "road-B" || road == "sinusoid" || road == "flat";
+      }
 
       /// The texture named @p road: a preset, "sinusoid", "flat" or a file.
       road::Texture
@@ -123,6 +132,10 @@ namespace greentread
       modal::PatchModelParameters        patch_model;
       RoadTextureParameters              roads;
       RollingParameters                  rolling;
+      /// The texture files among the roads, read (and checked against the
+      /// patch and the distance) when the scene is set up, before the
+      /// Green's functions.
+      std::map<std::string, road::Texture> texture_files;
     };
   } // namespace scenes
 } // namespace greentread
