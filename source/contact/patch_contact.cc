@@ -402,6 +402,9 @@ namespace greentread
       report.converged        = lcp.converged;
       if (!lcp.converged)
         report.message = "LCP: " + lcp.message;
+      report.lcp_matrix = &psi.u[2];
+      report.lcp_q      = q;
+      report.lcp_z      = lcp.z;
       for (auto &c : load.component)
         c.setZero();
       load.component[1] = previous_end;
@@ -458,7 +461,8 @@ namespace greentread
       take_rule(du, dv, std::vector<bool>(n, true), change);
 
       const Eigen::VectorXd q = uh - d;
-      Eigen::MatrixXd       M(n, n);
+      Eigen::MatrixXd      &M = lcp_matrix;
+      M.resize(n, n);
       LcpResult             lcp;
       constexpr unsigned int max_rounds = 50;
       for (unsigned int round = 0; round < max_rounds; ++round)
@@ -514,6 +518,9 @@ namespace greentread
         }
 
       // Final loads and the report.
+      report.lcp_matrix = &M;
+      report.lcp_q      = q;
+      report.lcp_z      = lcp.z;
       double scale = 0.;
       for (unsigned int j = 0; j < n; ++j)
         scale = std::max(scale, std::abs(dd[j] - vh[j]));

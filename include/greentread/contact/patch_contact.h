@@ -149,6 +149,11 @@ namespace greentread
       /// max |v_i - v_i^r| over the points in contact, relative to max |v^r - v^h|.
       double velocity_residual = 0.;
       std::string message;
+      /// The last LCP of the step, \f$w = M z + q\f$, and its solution z, for
+      /// checks against another solver. @p lcp_matrix points into the solver
+      /// and is valid until its next step.
+      const Eigen::MatrixXd *lcp_matrix = nullptr;
+      Eigen::VectorXd        lcp_q, lcp_z;
     };
 
     /**
@@ -202,6 +207,7 @@ namespace greentread
       solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, PatchLoad &load);
 
       Eigen::VectorXd                      previous_end;
+      Eigen::MatrixXd                      lcp_matrix; // the last round's, iterative path
       const PatchInfluence                &psi;
       std::vector<KinematicContact>        rules;
       std::vector<bool>                    active;

@@ -1,0 +1,64 @@
+# The tire-road-contact scene on the coarse tyre of coarse.prm:
+# 1. the whole pipeline runs and writes every output, every step converged;
+# 2. the output directory, copied elsewhere and used from another working
+#    directory with another speed (50 km/h) and another path to the same .geo file,
+#    reuses both saved stages and says so.
+# The first run's patch_model.h5 is the fixture of unit/tyre_contact.
+file(REMOVE_RECURSE ${WORKDIR})
+file(MAKE_DIRECTORY ${WORKDIR}/elsewhere)
+
+execute_process(
+  COMMAND ${PROGRAM} ${SOURCE_DIR}/coarse.prm
+    --set "Output directory=${WORKDIR}/first"
+    --set "Geometry/Geometry file=${GEO}"
+  WORKING_DIRECTORY ${WORKDIR}
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the coarse pipeline failed (${status}):\n${out}\n${err}")
+endif()
+message(STATUS "${out}")
+foreach(file green_functions.h5 patch_model.h5 modal_errors.csv
+    road_road-A_spectrum.csv road_road-A_spectrum.png road_road-A_texture.png
+    history_road-A_90kmh.csv history_road-A_90kmh.png contact_road-A_90kmh.pvd
+    map_road-A_90kmh.png spectra.csv)
+  if(NOT EXISTS ${WORKDIR}/first/${file})
+    message(FATAL_ERROR "the run did not write ${file}")
+  endif()
+endforeach()
+if(NOT out MATCHES "steps the contact solve did not converge: 0,"
+   OR out MATCHES "did not converge: [1-9]")
+  message(FATAL_ERROR "a contact step did not converge")
+endif()
+file(GLOB_RECURSE written ${WORKDIR}/first/*)
+foreach(file ${written})
+  if(file MATCHES "\\.(csv|vtu)$")
+    file(READ ${file} text)
+    if(text MATCHES "[^a-z](nan|inf)[^a-z]")
+      message(FATAL_ERROR "${file} holds a NaN or inf")
+    endif()
+  endif()
+endforeach()
+
+file(COPY ${WORKDIR}/first/ DESTINATION ${WORKDIR}/copied)
+file(COPY ${GEO} DESTINATION ${WORKDIR}/elsewhere)
+get_filename_component(geo_name ${GEO} NAME)
+execute_process(
+  COMMAND ${PROGRAM} ${SOURCE_DIR}/coarse.prm
+    --set "Output directory=../copied"
+    --set "Geometry/Geometry file=${geo_name}"
+    --set "Rolling/Speeds=50"
+  WORKING_DIRECTORY ${WORKDIR}/elsewhere
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the rerun failed (${status}):\n${out}\n${err}")
+endif()
+if(NOT out MATCHES "Reusing [^\n]*green_functions.h5")
+  message(FATAL_ERROR "the rerun did not reuse the Green's functions:\n${out}")
+endif()
+if(NOT out MATCHES "Reusing [^\n]*patch_model.h5")
+  message(FATAL_ERROR "the rerun did not reuse the patch model:\n${out}")
+endif()
+if(NOT EXISTS ${WORKDIR}/copied/history_road-A_50kmh.csv)
+  message(FATAL_ERROR "the rerun did not write history_road-A_50kmh.csv")
+endif()
+message(STATUS "rerun from another directory at 50 km/h:\n${out}")
