@@ -2,6 +2,7 @@
 // 1-DoF exact solution, the direct convolution, the static contact solution
 // and the momentum balance, and run on stiff and extreme cases.
 
+#include "patch_rolling.h"
 #include "test_helpers.h"
 
 #include <greentread/base/exceptions.h>
@@ -306,7 +307,6 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
   // penetrate.
   const auto            model = synthetic_patch(0.02);
   const Eigen::VectorXd tread = tread_height(model);
-  const Eigen::MatrixXd G0    = model.static_compliance();
   std::vector<road::WavelengthBand> bands;
   std::vector<double>               levels;
   road::texture_preset("road-A", bands, levels);
@@ -315,48 +315,36 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
 
   struct Case
   {
-    std::string name;
-    double      roughness, speed_kmh, load, dt_factor;
+    std::string       name;
+    test::RollingCase run;
   };
-  const std::vector<Case> cases = {{"very rough road (texture x 5)", 5., 90., 100., 1.},
-                                   {"130 km/h", 1., 130., 100., 1.},
-                                   {"barely touching (0.01 N)", 1., 90., 0.01, 1.},
-                                   {"dt = 20 road samples", 1., 90., 100., 20.},
-                                   {"dt = 1/20 road sample", 1., 90., 100., 0.05}};
+  test::RollingCase base; // 100 N over 30 cm at 90 km/h, one road sample per step
+  base.load     = 100.;
+  base.distance = 0.3;
+  std::vector<Case> cases(5, Case{"", base});
+  cases[0].name          = "very rough road (texture x 5)";
+  cases[0].run.roughness = 5.;
+  cases[1].name          = "130 km/h";
+  cases[1].run.speed_kmh = 130.;
+  cases[2].name          = "barely touching (0.01 N)";
+  cases[2].run.load      = 0.01;
+  cases[3].name          = "dt = 20 road samples";
+  cases[3].run.dt_factor = 20.;
+  cases[4].name          = "dt = 1/20 road sample";
+  cases[4].run.dt_factor = 0.05;
   for (const auto &c : cases)
     BOOST_TEST_CONTEXT(c.name)
     {
-      road::Texture t = texture;
-      for (auto &z : t.z)
-        z *= c.roughness;
-      const scenes::PatchRoad road(t, model.points, scenes::RoadSampling::envelope, "test");
-      const double            V  = c.speed_kmh / 3.6;
-      const double            dt = c.dt_factor * spacing / V;
-      const double            distance = std::min(0.3, road.usable_length());
-      Eigen::VectorXd         z(model.n_points()), slope(model.n_points());
-      const auto              sample = [&](const double x) {
-        for (unsigned int p = 0; p < model.n_points(); ++p)
-          road.height(p, x, z[p], slope[p]);
-      };
-      sample(0.);
-      const auto eq = contact::solve_static_contact(G0, z - tread, c.load, 0.);
-      const auto demand = [&](const double time, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
-        sample(V * time);
-        d  = (eq.delta + z.array() - tread.array()).matrix();
-        dd = V * slope;
-      };
       double     negative = 0.;
-      const auto observe  = [&](const contact::RollingStep &s) {
-        negative = std::min(negative, s.force.minCoeff());
-      };
-      auto       conv = contact::make_modal_patch_convolution(model, dt);
-      const auto s    = contact::roll(*conv, demand, static_cast<unsigned int>(distance / (V * dt)),
-                                   eq.q, observe);
-      const double mean = s.impulse / (s.steps * dt);
+      const auto s        = test::roll_on_texture(model, tread, texture, c.run,
+                                           [&](const contact::RollingStep &step) {
+                                             negative = std::min(negative, step.force.minCoeff());
+                                           });
+      const double mean = s.impulse / (s.steps * c.run.time_step(texture));
       BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
                                 << 100. * s.min_contact_fraction << "% to "
                                 << 100. * s.max_contact_fraction << "%, mean force " << mean
-                                << " N (static " << c.load << " N), failed steps "
+                                << " N (static " << c.run.load << " N), failed steps "
                                 << s.failed_steps << ", penetration " << s.max_penetration);
       check_sound(s, 1e-3);
       BOOST_TEST(negative >= 0.);

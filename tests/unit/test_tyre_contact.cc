@@ -8,6 +8,7 @@
 // - a flat road from the static equilibrium stays there;
 // - the stiff and extreme cases stay sound.
 
+#include "patch_rolling.h"
 #include "siconos_reference.h"
 
 #include <greentread/base/exceptions.h>
@@ -32,7 +33,6 @@ namespace
   {
     modal::PatchModel model;
     Eigen::VectorXd   tread;
-    Eigen::MatrixXd   G0;
     road::Texture     texture;
     static constexpr double spacing = 3.84e-4;
 
@@ -49,7 +49,6 @@ namespace
           const double r = model.points[p][2], x = model.points[p][0];
           tread[p]       = r - std::sqrt(r * r - x * x);
         }
-      G0 = model.static_compliance();
       std::vector<road::WavelengthBand> bands;
       std::vector<double>               levels;
       road::texture_preset("road-A", bands, levels);
@@ -63,43 +62,12 @@ namespace
       texture               = road::synthetic_texture(bands, levels, spacing, 1564, ny, 3);
     }
 
-    struct Run
-    {
-      double          speed_kmh = 90., load = 600., roughness = 1., dt_factor = 1.,
-                      distance = 0.2;
-      bool            direct    = false;
-      bool            flat      = false;
-    };
-
     /// Roll from the static equilibrium; @p observe sees every step.
     contact::RollingSummary
-    roll(const Run &run, const std::function<void(const contact::RollingStep &)> &observe,
+    roll(const test::RollingCase &run, const std::function<void(const contact::RollingStep &)> &observe,
          Eigen::VectorXd *start = nullptr) const
     {
-      road::Texture t = texture;
-      for (auto &z : t.z)
-        z = run.flat ? 0. : z * run.roughness;
-      const scenes::PatchRoad road(t, model.points, scenes::RoadSampling::envelope, "test");
-      const double            V  = run.speed_kmh / 3.6;
-      const double            dt = run.dt_factor * spacing / V;
-      Eigen::VectorXd         z(model.n_points()), slope(model.n_points());
-      const auto              sample = [&](const double x) {
-        for (unsigned int p = 0; p < model.n_points(); ++p)
-          road.height(p, x, z[p], slope[p]);
-      };
-      sample(0.);
-      const auto eq = contact::solve_static_contact(G0, z - tread, run.load, 0.);
-      if (start)
-        *start = eq.q;
-      const auto demand = [&](const double time, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
-        sample(V * time);
-        d  = (eq.delta + z.array() - tread.array()).matrix();
-        dd = V * slope;
-      };
-      const unsigned int n_steps = static_cast<unsigned int>(run.distance / (V * dt));
-      auto conv = run.direct ? contact::make_direct_patch_convolution(model, dt, n_steps + 1) :
-                               contact::make_modal_patch_convolution(model, dt);
-      return contact::roll(*conv, demand, n_steps, eq.q, observe);
+      return test::roll_on_texture(model, tread, texture, run, observe, start);
     }
   };
 } // namespace
@@ -116,7 +84,7 @@ BOOST_AUTO_TEST_CASE(lcp_instances_of_the_rolling_tyre_match_siconos)
   double           max_difference = 0.;
   for (const double roughness : {1., 5.})
     {
-      CoarseTyre::Run run;
+      test::RollingCase run;
       run.roughness = roughness;
       run.speed_kmh = roughness > 1. ? 130. : 90.;
       const auto observe = [&](const contact::RollingStep &s) {
@@ -154,7 +122,7 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree_on_the_tyre)
   // 5 cm of road-A at 90 km/h: the convolution sum over every past step
   // against the modal recursion, both from the same patch model.
   const CoarseTyre tyre;
-  CoarseTyre::Run  run;
+  test::RollingCase  run;
   run.distance = 0.05;
   std::vector<Eigen::VectorXd> modal, direct;
   tyre.roll(run, [&](const contact::RollingStep &s) { modal.push_back(s.force); });
@@ -177,7 +145,7 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there_on_the_ty
   // The run starts from the static contact of the model's own static
   // compliance: on a flat road nothing moves.
   const CoarseTyre tyre;
-  CoarseTyre::Run  run;
+  test::RollingCase  run;
   run.flat     = true;
   run.distance = 0.1;
   Eigen::VectorXd q0;
@@ -200,7 +168,7 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound_on_the_tyre)
   struct Case
   {
     std::string     name;
-    CoarseTyre::Run run;
+    test::RollingCase run;
   };
   std::vector<Case> cases(5);
   cases[0].name          = "very rough road (texture x 5)";
@@ -221,9 +189,7 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound_on_the_tyre)
       const auto s        = tyre.roll(c.run, [&](const contact::RollingStep &step) {
         negative = std::min(negative, step.force.minCoeff());
       });
-      const double V    = c.run.speed_kmh / 3.6;
-      const double dt   = c.run.dt_factor * CoarseTyre::spacing / V;
-      const double mean = s.impulse / (s.steps * dt);
+      const double mean = s.impulse / (s.steps * c.run.time_step(tyre.texture));
       BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
                                 << 100. * s.min_contact_fraction << "% to "
                                 << 100. * s.max_contact_fraction << "%, mean force " << mean
