@@ -13,7 +13,12 @@
 
 #include <Eigen/Core>
 
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace test
 {
@@ -72,5 +77,64 @@ namespace test
     auto conv = run.direct ? contact::make_direct_patch_convolution(model, dt, n_steps + 1) :
                              contact::make_modal_patch_convolution(model, dt);
     return contact::roll(*conv, demand, n_steps, eq.q, observe);
+  }
+
+  /**
+   * The stiff and extreme cases of the issue, each a change of @p base: a
+   * texture five times rougher (many points lose contact), 130 km/h, a tyre
+   * that barely touches (0.01 N: some steps lose all contact), dt = 20 road
+   * samples and dt = 1/20 of one (over @p fine_distance). Each run must
+   * converge at every step, never pull, end no step inside the road (to
+   * @p penetration) and have a finite mean force.
+   */
+  inline void
+  check_extreme_cases(const greentread::modal::PatchModel &model,
+                      const Eigen::VectorXd               &tread,
+                      const greentread::road::Texture     &texture,
+                      const RollingCase                   &base,
+                      const double                         fine_distance,
+                      const double                         penetration)
+  {
+    struct Case
+    {
+      std::string name;
+      RollingCase run;
+    };
+    std::vector<Case> cases(5, Case{"", base});
+    cases[0].name          = "very rough road (texture x 5)";
+    cases[0].run.roughness = 5. * base.roughness;
+    cases[1].name          = "130 km/h";
+    cases[1].run.speed_kmh = 130.;
+    cases[2].name          = "barely touching (0.01 N)";
+    cases[2].run.load      = 0.01;
+    cases[3].name          = "dt = 20 road samples";
+    cases[3].run.dt_factor = 20.;
+    cases[4].name          = "dt = 1/20 road sample";
+    cases[4].run.dt_factor = 0.05;
+    cases[4].run.distance  = fine_distance;
+    for (const auto &c : cases)
+      BOOST_TEST_CONTEXT(c.name)
+      {
+        double     negative = 0.;
+        const auto s        = roll_on_texture(model, tread, texture, c.run,
+                                       [&](const greentread::contact::RollingStep &step) {
+                                         negative = std::min(negative, step.force.minCoeff());
+                                       });
+        const double mean = s.impulse / (s.steps * c.run.time_step(texture));
+        BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
+                                  << 100. * s.min_contact_fraction << "% to "
+                                  << 100. * s.max_contact_fraction << "%, mean force " << mean
+                                  << " N (static " << c.run.load << " N), failed steps "
+                                  << s.failed_steps << ", penetration " << s.max_penetration
+                                  << " m");
+        BOOST_TEST(s.failed_steps == 0u, "first failure: " << s.first_failure);
+        BOOST_TEST(s.max_penetration < penetration);
+        BOOST_TEST(negative >= 0.);
+        BOOST_TEST(std::isfinite(mean));
+        if (c.name.rfind("very rough", 0) == 0)
+          BOOST_TEST(s.min_contact_fraction < 0.5);
+        if (c.name.rfind("barely", 0) == 0)
+          BOOST_TEST(s.min_contact_fraction == 0.);
+      }
   }
 } // namespace test

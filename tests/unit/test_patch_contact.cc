@@ -302,9 +302,7 @@ BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
 BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
 {
   // A patch on a synthetic road-A texture, envelope sampling as in the
-  // scene, under several extremes; each run must be finite, converge every
-  // step, never pull (forces >= 0 by construction of the LCP) and not
-  // penetrate.
+  // scene, under the extremes of patch_rolling.h.
   const auto            model = synthetic_patch(0.02);
   const Eigen::VectorXd tread = tread_height(model);
   std::vector<road::WavelengthBand> bands;
@@ -313,47 +311,10 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
   const double  spacing = 3.84e-4;
   road::Texture texture = road::synthetic_texture(bands, levels, spacing, 2048, 96, 7);
 
-  struct Case
-  {
-    std::string       name;
-    test::RollingCase run;
-  };
   test::RollingCase base; // 100 N over 30 cm at 90 km/h, one road sample per step
   base.load     = 100.;
   base.distance = 0.3;
-  std::vector<Case> cases(5, Case{"", base});
-  cases[0].name          = "very rough road (texture x 5)";
-  cases[0].run.roughness = 5.;
-  cases[1].name          = "130 km/h";
-  cases[1].run.speed_kmh = 130.;
-  cases[2].name          = "barely touching (0.01 N)";
-  cases[2].run.load      = 0.01;
-  cases[3].name          = "dt = 20 road samples";
-  cases[3].run.dt_factor = 20.;
-  cases[4].name          = "dt = 1/20 road sample";
-  cases[4].run.dt_factor = 0.05;
-  for (const auto &c : cases)
-    BOOST_TEST_CONTEXT(c.name)
-    {
-      double     negative = 0.;
-      const auto s        = test::roll_on_texture(model, tread, texture, c.run,
-                                           [&](const contact::RollingStep &step) {
-                                             negative = std::min(negative, step.force.minCoeff());
-                                           });
-      const double mean = s.impulse / (s.steps * c.run.time_step(texture));
-      BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
-                                << 100. * s.min_contact_fraction << "% to "
-                                << 100. * s.max_contact_fraction << "%, mean force " << mean
-                                << " N (static " << c.run.load << " N), failed steps "
-                                << s.failed_steps << ", penetration " << s.max_penetration);
-      check_sound(s, 1e-3);
-      BOOST_TEST(negative >= 0.);
-      BOOST_TEST(std::isfinite(mean));
-      if (c.name.rfind("very rough", 0) == 0)
-        BOOST_TEST(s.min_contact_fraction < 0.5); // many points lose contact
-      if (c.name.rfind("barely", 0) == 0)
-        BOOST_TEST(s.min_contact_fraction == 0.); // and some steps lose it all
-    }
+  test::check_extreme_cases(model, tread, texture, base, 0.3, 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_refused)
