@@ -363,6 +363,22 @@ namespace greentread
 
 
 
+    std::string
+    patch_model_stage_key(const dealii::ParameterHandler &prm, const std::string &green_key)
+    {
+      // The record's entries only: its header names the git revision, which
+      // must not throw the fit away (the sources' digest stands for it).
+      std::ostringstream key;
+      key << green_key << "\n--- modal ---\nsources digest " << GREENTREAD_MODAL_SOURCES_DIGEST
+          << '\n';
+      for (const auto &[path, value] :
+           base::ParameterRecord::from(prm, "", {"Identification", "Patch model"}).entries)
+        key << path << " = " << value << '\n';
+      return key.str();
+    }
+
+
+
     RoadContactScene::RoadContactScene(dealii::ParameterHandler &prm_,
                                        const GlobalParameters   &global_)
       : prm(prm_)
@@ -537,11 +553,7 @@ namespace greentread
       const unsigned int n_p = G.n_points();
 
       // Stage 4: modal, the patch model (cached too).
-      std::ostringstream modal_record;
-      base::ParameterRecord::from(prm, global.scene, {"Identification", "Patch model"})
-        .write_comments(modal_record);
-      const std::string modal_key = green_key + "\n--- modal ---\nsources digest " +
-                                    GREENTREAD_MODAL_SOURCES_DIGEST + "\n" + modal_record.str();
+      const std::string modal_key = patch_model_stage_key(prm, green_key);
       const fs::path    modal_h5  = directory / "patch_model.h5";
       modal::PatchModel model;
       if (global.reuse && modal::read_patch_model_key(modal_h5.string()) == modal_key)

@@ -2,14 +2,21 @@
 // runs what prm/tire_road_contact.prm runs, parameter for parameter. The
 // .prm is the documented, commented form of the defaults; this test keeps
 // the two from drifting apart (a drift would also make a default run miss
-// the .prm run's saved Green's functions).
+// the .prm run's saved Green's functions). And the keys that decide when the
+// main job's saved stages are reused.
 
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
+#include <greentread/config.h>
+#include <greentread/scenes/green_scene.h>
+#include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
+
+#include <filesystem>
 
 #include <boost/test/unit_test.hpp>
 
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -41,6 +48,54 @@ BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tire_road_contact)
   BOOST_TEST_MESSAGE(compared << " parameters: the default equals the main job's .prm");
   BOOST_TEST(compared > 100u);
   BOOST_TEST(defaults.get("Scene") == "tire-road-contact");
+}
+
+BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
+{
+  // The keys that decide whether green_functions.h5 and patch_model.h5 are
+  // reused: a parameter of the stage changes them; the git revision, the
+  // .geo file's path, the output directory and the later stages' parameters
+  // do not.
+  namespace fs      = std::filesystem;
+  const std::string geo = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
+  const fs::path    copy = fs::temp_directory_path() / "greentread_key_test.geo";
+  fs::copy_file(geo, copy, fs::copy_options::overwrite_existing);
+
+  const auto keys = [&](const std::vector<std::string> &overrides, const std::string &geo_file) {
+    dealii::ParameterHandler prm;
+    scenes::declare_parameters(prm);
+    for (const auto &o : overrides)
+      base::apply_override(prm, o);
+    const std::string green = scenes::green_stage_key(prm, geo_file);
+    return std::make_pair(green, scenes::patch_model_stage_key(prm, green));
+  };
+  const auto reference = keys({}, geo);
+  BOOST_TEST(reference.first.find(GREENTREAD_GIT_REVISION) == std::string::npos);
+  BOOST_TEST(reference.second.find(GREENTREAD_GIT_REVISION) == std::string::npos);
+  BOOST_TEST(reference.first.find(".geo") == std::string::npos);
+
+  // Unchanged: another path to the same file, other outputs, later stages.
+  BOOST_TEST((keys({}, copy.string()) == reference));
+  BOOST_TEST((keys({"Output directory=elsewhere", "Rolling/Speeds=130",
+                    "Road texture/Roads=road-B", "Green's functions/Pairs=0:0"},
+                   geo) == reference));
+
+  // Changed: a parameter of the Green's stage changes both keys; one of
+  // the modal stage only the second.
+  const auto mesh = keys({"Geometry/Mesh size=0.01"}, geo);
+  BOOST_TEST(mesh.first != reference.first);
+  BOOST_TEST(mesh.second != reference.second);
+  const auto weight = keys({"Patch model/Static weight=10"}, geo);
+  BOOST_TEST(weight.first == reference.first);
+  BOOST_TEST(weight.second != reference.second);
+
+  // And the file's contents, not its name.
+  {
+    std::ofstream append(copy, std::ios::app);
+    append << "\n// an edit\n";
+  }
+  BOOST_TEST(keys({}, copy.string()).first != reference.first);
+  fs::remove(copy);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

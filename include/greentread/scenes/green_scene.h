@@ -40,11 +40,12 @@ namespace greentread
     };
 
     /**
-     * @brief What the Green's functions depend on: the program, the .geo
-     * file's contents and every parameter of Geometry, Materials, Inflation
-     * and Green's functions except those that only choose outputs ('Pairs',
-     * 'Deflection shape frequency'). Stored in green_functions.h5 as the
-     * attribute `stage_key`.
+     * @brief What the Green's functions depend on: the program's version,
+     * a digest of the sources that compute them, the .geo file's contents
+     * and every parameter of Geometry, Materials, Inflation and Green's
+     * functions except those that only choose outputs ('Pairs', 'Deflection
+     * shape frequency') or name the .geo file. Not the git revision, not the
+     * file's path. Stored in green_functions.h5 as the attribute `stage_key`.
      */
     std::string
     green_stage_key(const dealii::ParameterHandler &prm, const std::string &geo_file);

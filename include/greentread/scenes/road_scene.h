@@ -110,6 +110,15 @@ namespace greentread
     };
 
     /**
+     * @brief The key saved with patch_model.h5: the Green's stage's key
+     * (green_stage_key()), a digest of the modal sources, and the
+     * parameters of "Identification" and "Patch model". Not the git
+     * revision: a commit elsewhere keeps the fit.
+     */
+    std::string
+    patch_model_stage_key(const dealii::ParameterHandler &prm, const std::string &green_key);
+
+    /**
      * @brief Scene 'tire-road-contact': geometry -> fe -> periodic -> modal ->
      * contact -> analysis, for each road and speed (Section 5).
      */
