@@ -37,9 +37,9 @@ namespace greentread
                         "Directory for every output file; created if missing. Relative "
                         "paths are relative to the working directory.");
       prm.declare_entry("Reuse saved results", "true", dealii::Patterns::Bool(),
-                        "Reuse a stage's saved output (green_functions.h5) when it was "
-                        "computed from the same parameters and program version; 'false' "
-                        "always recomputes.");
+                        "Reuse a stage's saved output (green_functions.h5, patch_model.h5) "
+                        "when it was computed from the same parameters, input files and "
+                        "sources of that stage; 'false' always recomputes.");
       prm.declare_entry("Print timings", "true", dealii::Patterns::Bool(),
                         "Print run times, and the progress of long loops, on screen. "
                         "Regression tests switch this off so that their output is "
