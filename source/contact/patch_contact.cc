@@ -5,6 +5,7 @@
 #include <deal.II/base/thread_management.h>
 
 #include <cmath>
+#include <utility>
 
 namespace greentread
 {
@@ -387,7 +388,7 @@ namespace greentread
                                format_short(uh[j]) + ", d = " + format_short(d[j]) + ")");
       if (previous_end.size() != n)
         previous_end = Eigen::VectorXd::Zero(n);
-      const Eigen::VectorXd q = uh + psi.u[1] * previous_end - d;
+      Eigen::VectorXd q = uh + psi.u[1] * previous_end - d;
       if (!q.allFinite())
         throw NumericalError("patch contact: the force of the last step is not finite (largest "
                              "|q| " + format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
@@ -402,9 +403,6 @@ namespace greentread
       report.converged        = lcp.converged;
       if (!lcp.converged)
         report.message = "LCP: " + lcp.message;
-      report.lcp_matrix = &psi.u[2];
-      report.lcp_q      = q;
-      report.lcp_z      = lcp.z;
       for (auto &c : load.component)
         c.setZero();
       load.component[1] = previous_end;
@@ -413,6 +411,10 @@ namespace greentread
       for (unsigned int j = 0; j < n; ++j)
         if (lcp.z[j] > 0.)
           ++report.n_contact;
+      // Moved, not copied: no allocation per step for the record.
+      report.lcp_matrix = &psi.u[2];
+      report.lcp_q      = std::move(q);
+      report.lcp_z      = std::move(lcp.z);
       return report;
     }
 
@@ -460,7 +462,7 @@ namespace greentread
       Eigen::VectorXd du = d - uh, dv = dd - vh;
       take_rule(du, dv, std::vector<bool>(n, true), change);
 
-      const Eigen::VectorXd q = uh - d;
+      Eigen::VectorXd       q = uh - d;
       Eigen::MatrixXd      &M = lcp_matrix;
       M.resize(n, n);
       LcpResult             lcp;
@@ -518,9 +520,6 @@ namespace greentread
         }
 
       // Final loads and the report.
-      report.lcp_matrix = &M;
-      report.lcp_q      = q;
-      report.lcp_z      = lcp.z;
       double scale = 0.;
       for (unsigned int j = 0; j < n; ++j)
         scale = std::max(scale, std::abs(dd[j] - vh[j]));
@@ -542,6 +541,9 @@ namespace greentread
                 std::max(report.velocity_residual,
                          std::abs(v_end[j] - dd[j]) / std::max(scale, 1e-300));
           }
+      report.lcp_matrix = &M;
+      report.lcp_q      = std::move(q);
+      report.lcp_z      = std::move(lcp.z);
       return report;
     }
 
