@@ -363,10 +363,11 @@ namespace greentread
 
 
     void
-    write_green_hdf5(const std::filesystem::path  &file,
-                     const FrequencyResponseMatrix &green,
-                     const base::ParameterRecord  &record,
-                     const std::string            &stage_key)
+    write_hdf5_stage(const std::filesystem::path                    &file,
+                     const std::vector<std::array<double, 3>>       &points,
+                     const base::ParameterRecord                    &record,
+                     const std::string                              &stage_key,
+                     const std::function<void(dealii::HDF5::File &)> &fill)
     {
       // HDF5 writes through its own file handle: reserve the temporary name
       // with an AtomicFile, let HDF5 fill it, then rename.
@@ -375,22 +376,35 @@ namespace greentread
       {
         dealii::HDF5::File h5(target.temporary_path().string(),
                               dealii::HDF5::File::FileAccessMode::create);
-        std::vector<double> f(green.n_lines);
-        for (unsigned int k = 0; k < green.n_lines; ++k)
-          f[k] = k * green.df;
-        h5.create_dataset<double>("frequency", {green.n_lines}).write(f);
+        fill(h5);
         std::vector<double> p;
-        for (const auto &x : green.points)
+        for (const auto &x : points)
           p.insert(p.end(), x.begin(), x.end());
-        h5.create_dataset<double>("points", {green.points.size(), 3}).write(p);
-        h5.create_dataset<std::complex<double>>(
-            "green", {green.n_lines, green.points.size(), green.points.size()})
-          .write(green.values);
+        h5.create_dataset<double>("points", {points.size(), 3}).write(p);
         h5.set_attribute("parameters", record.text());
         if (!stage_key.empty())
           h5.set_attribute("stage_key", stage_key);
       }
       target.commit();
+    }
+
+
+
+    void
+    write_green_hdf5(const std::filesystem::path  &file,
+                     const FrequencyResponseMatrix &green,
+                     const base::ParameterRecord  &record,
+                     const std::string            &stage_key)
+    {
+      write_hdf5_stage(file, green.points, record, stage_key, [&](dealii::HDF5::File &h5) {
+        std::vector<double> f(green.n_lines);
+        for (unsigned int k = 0; k < green.n_lines; ++k)
+          f[k] = k * green.df;
+        h5.create_dataset<double>("frequency", {green.n_lines}).write(f);
+        h5.create_dataset<std::complex<double>>(
+            "green", {green.n_lines, green.points.size(), green.points.size()})
+          .write(green.values);
+      });
     }
   } // namespace modal
 } // namespace greentread

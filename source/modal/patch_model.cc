@@ -446,11 +446,7 @@ namespace greentread
                       const base::ParameterRecord &record,
                       const std::string           &stage_key)
     {
-      base::AtomicFile target(file, std::ios::binary);
-      target.stream().close();
-      {
-        dealii::HDF5::File h5(target.temporary_path().string(),
-                              dealii::HDF5::File::FileAccessMode::create);
+      write_hdf5_stage(file, model.points, record, stage_key, [&](dealii::HDF5::File &h5) {
         const std::size_t  n = model.n_points(), m = model.n_terms();
         h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
         std::vector<int> real(model.real.begin(), model.real.end());
@@ -471,16 +467,9 @@ namespace greentread
           for (std::size_t j = 0; j < n; ++j)
             e[i * n + j] = model.instantaneous.size() ? model.instantaneous(i, j) : 0.;
         h5.create_dataset<double>("instantaneous", {n, n}).write(e);
-        std::vector<double> p;
-        for (const auto &x : model.points)
-          p.insert(p.end(), x.begin(), x.end());
-        h5.create_dataset<double>("points", {n, 3}).write(p);
         h5.create_dataset<double>("info", {3})
           .write(std::vector<double>{model.f_max, double(model.identified_modes), model.sum_error});
-        h5.set_attribute("parameters", record.text());
-        h5.set_attribute("stage_key", stage_key);
-      }
-      target.commit();
+      });
     }
 
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <complex>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,14 @@
  * of Eq. (3): \f$\hat g(\omega) = (K + j\omega C - \omega^2 M)^{-1}\f$, i.e.
  * \f$\hat g(\omega) = \int_0^\infty g(t) e^{-j\omega t} dt\f$.
  */
+
+namespace dealii
+{
+  namespace HDF5
+  {
+    class File;
+  }
+} // namespace dealii
 
 namespace greentread
 {
@@ -129,6 +138,20 @@ namespace greentread
      */
     std::string
     read_green_stage_key(const std::string &file);
+
+    /**
+     * @brief Write a stage's HDF5 file atomically: @p fill writes the
+     * stage's datasets into a temporary file, then the contact points
+     * ("points", n x 3), the attribute `parameters` and, unless empty, the
+     * attribute `stage_key` are added, and the file is renamed to @p file.
+     * A file left unfinished has no key, and is never under its final name.
+     */
+    void
+    write_hdf5_stage(const std::filesystem::path                    &file,
+                     const std::vector<std::array<double, 3>>       &points,
+                     const base::ParameterRecord                    &record,
+                     const std::string                              &stage_key,
+                     const std::function<void(dealii::HDF5::File &)> &fill);
 
     /**
      * @brief The `stage_key` attribute of any stage's HDF5 file, or an empty
