@@ -123,7 +123,7 @@ namespace greentread
       if (n_cells > max_cells)
         throw InputError("parameter 'Geometry/Number of cells' = " + std::to_string(n_cells) +
                          " is not allowed with 'Mesh size' = " + format_short(mesh_size) +
-                         " m; allowed: at most " + format_short(max_cells) +
+                         " m; allowed: at most " + std::to_string(static_cast<unsigned long>(max_cells)) +
                          " (the cell would be " +
                          format_short(M_PI * rim_diameter / n_cells * 1e3) +
                          " mm thick at the rim, more than 200 times thinner than its elements)");

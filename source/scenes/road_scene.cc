@@ -80,6 +80,10 @@ namespace greentread
                           "Amplitude of the 'sinusoid' road.");
         prm.declare_entry("Sinusoid wavelength", "0.05", RangePattern::closed(1e-3, 10., "m"),
                           "Wavelength of the 'sinusoid' road.");
+        prm.declare_entry("Height scale", "1", RangePattern::closed(0., 100., "1"),
+                          "Factor on every road's heights (presets, sinusoid and texture "
+                          "files): 2 raises the texture spectrum by 6.02 dB at every "
+                          "wavelength and keeps its shape.");
         prm.declare_entry("Between points", "envelope",
                           dealii::Patterns::Selection("envelope|point"),
                           "How a tread point sees the road, which is sampled far more finely "
@@ -113,6 +117,7 @@ namespace greentread
         spacing    = prm.get_double("Spacing");
         amplitude  = prm.get_double("Sinusoid amplitude");
         wavelength = prm.get_double("Sinusoid wavelength");
+        height_scale = prm.get_double("Height scale");
         sampling   = prm.get("Between points") == "point" ? RoadSampling::point :
                                                              RoadSampling::envelope;
       }
@@ -123,6 +128,17 @@ namespace greentread
 
     road::Texture
     RoadTextureParameters::make(const std::string &name, const double width) const
+    {
+      road::Texture t = make_unscaled(name, width);
+      for (auto &z : t.z)
+        z *= height_scale;
+      return t;
+    }
+
+
+
+    road::Texture
+    RoadTextureParameters::make_unscaled(const std::string &name, const double width) const
     {
       if (!is_built_in(name))
         return road::read_texture(name);

@@ -189,7 +189,7 @@ namespace greentread
               {
                 out << exact << ',' << mass / exact - 1. << '\n';
                 mass_lines << "Pappus " << format_printf("%.6e", exact) << " kg  relative difference "
-                           << format_printf("%.1e", mass / exact - 1.) << '\n';
+                           << format_printf("%.1e", 100. * (mass / exact - 1.)) << " %\n";
               }
             else
               {

@@ -6,6 +6,7 @@
 // coarse mesh (2 cm, 32 cells) the two differ by up to 2.1% (mode 1, ours
 // lower); on a finer one (1.35 cm, 64 cells) by at most 1.5% (mode 1) and
 // 0.7% for the others, and the inflation by 0.7%: they converge together.
+#include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/abaqus_export.h>
 #include <greentread/fe/cylindrical.h>
@@ -67,7 +68,7 @@ namespace
     fe::MaterialParameters       materials;
     double                       pressure = 2e5;
     double R_out = 0.5 * parameters.rim_diameter + parameters.section_height;
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / "greentread-calculix";
+    std::filesystem::path dir = test::scratch_directory("calculix");
 
     /// Ours: the radial displacement of the crown centre under inflation,
     /// on the cell with rotational periodicity, clamped at the rim seat.

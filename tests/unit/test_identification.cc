@@ -1,5 +1,6 @@
 // LSCE identification (Appendix A) on synthetic FRFs built from known poles:
 // the recovered poles and residues against the ones they were built from.
+#include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/modal/identification.h>
 #include <greentread/modal/lsce.h>
@@ -295,7 +296,7 @@ BOOST_AUTO_TEST_CASE(frf_csv_round_trip_and_bad_files)
   ModalModel truth;
   add_mode(truth, 500., 0.02, 1e3);
   const auto frf = modal::sample(truth, 4., 101);
-  const auto dir = std::filesystem::temp_directory_path() / "greentread-test-frf";
+  const auto dir = test::scratch_directory("identification-frf");
   std::filesystem::create_directories(dir);
   base::ParameterRecord record;
   record.header = "test";
@@ -351,7 +352,7 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
       green.values[4 * k + 1] = green.values[4 * k + 2] = g01.frequency_response(w);
       green.values[4 * k + 3] = g11.frequency_response(w);
     }
-  const auto dir = std::filesystem::temp_directory_path() / "greentread-test-h5";
+  const auto dir = test::scratch_directory("identification-h5");
   std::filesystem::create_directories(dir);
   base::ParameterRecord record;
   record.header = "test";

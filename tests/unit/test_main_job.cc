@@ -5,6 +5,7 @@
 // the .prm run's saved Green's functions). And the keys that decide when the
 // main job's saved stages are reused.
 
+#include "scratch.h"
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/config.h>
@@ -58,7 +59,7 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
   // do not.
   namespace fs      = std::filesystem;
   const std::string geo = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
-  const fs::path    copy = fs::temp_directory_path() / "greentread_key_test.geo";
+  const fs::path    copy = test::scratch_directory("main-job-key") / "greentread_key_test.geo";
   fs::copy_file(geo, copy, fs::copy_options::overwrite_existing);
 
   const auto keys = [&](const std::vector<std::string> &overrides, const std::string &geo_file) {

@@ -1,6 +1,7 @@
 // The patch model (shared poles, residues of every pair): fitted to the
 // frequency responses of a known modal system, it must give them back.
 
+#include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/modal/patch_model.h>
 
@@ -176,7 +177,7 @@ BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)
   modal::IdentificationParameters       identification;
   modal::PatchModelParameters           parameters;
   const auto model = modal::fit_patch_model(green, identification, parameters, false);
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "gt_patch_model.h5";
+  const std::filesystem::path file = test::scratch_directory("patch-model") / "gt_patch_model.h5";
   base::ParameterRecord       record;
   modal::write_patch_model(file, model, record, "key 1");
   BOOST_TEST(modal::read_patch_model_key(file.string()) == "key 1");

@@ -2,6 +2,7 @@
 // directly (from the same cell, and from deal.II's own ring mesh in
 // Cartesian components), the paper's doubling against the Bloch transform,
 // reciprocity, passivity, and a thin ring's analytic natural frequencies.
+#include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/cylindrical.h>
 #include <greentread/fe/elastic_model.h>
@@ -269,7 +270,7 @@ BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
   // elements lock in membrane and the frequencies come out 3% high, at 128
   // cells 0.2%, here 0.01%.
   const double R = 1., t = 0.01, w = 0.02;
-  const auto   dir = std::filesystem::temp_directory_path() / "greentread-ring";
+  const auto   dir = test::scratch_directory("ring");
   std::filesystem::create_directories(dir);
   {
     std::ofstream geo(dir / "ring.geo");

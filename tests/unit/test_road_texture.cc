@@ -1,6 +1,7 @@
 // Road textures against closed forms: the texture spectrum and the MPD of a
 // cosine, the one-third-octave band edges, and synthetic textures that must
 // reproduce their target spectra.
+#include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/road/texture.h>
 
@@ -107,7 +108,7 @@ BOOST_AUTO_TEST_CASE(synthetic_textures_match_their_presets)
 BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
 {
   namespace fs   = std::filesystem;
-  const auto dir = fs::temp_directory_path() / "greentread-texture";
+  const auto dir = test::scratch_directory("texture");
   fs::create_directories(dir);
   std::vector<road::WavelengthBand> bands;
   std::vector<double>               target;

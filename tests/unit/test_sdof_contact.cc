@@ -45,7 +45,8 @@ BOOST_AUTO_TEST_CASE(kinematic_default_within_a_thousandth_of_A0)
 BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
 {
   // Steps incommensurate with the road period, so that events fall anywhere
-  // inside a step. Bounded at every dt; first order or better overall.
+  // inside a step. Bounded at every dt; second order overall (the README
+  // reports 2.00; a rule that fell to first order would fail here).
   std::vector<double> dts = {1e-3, 3.7e-4, 1.37e-4, 3.7e-5, 1.37e-5, 3.7e-6, 1e-6};
   std::vector<double> errors, penetrations;
   for (const double dt : dts)
@@ -69,7 +70,7 @@ BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
     }
   const double order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   BOOST_TEST_MESSAGE("observed order of convergence: " << order);
-  BOOST_TEST(order >= 1.);
+  BOOST_TEST(order >= 1.8); // the README reports 2.00
   BOOST_TEST(errors.back() < 1e-3 * errors.front());
   // The penetration inside steps vanishes with dt.
   BOOST_TEST(penetrations.back() < 1e-3 * penetrations.front());

@@ -2,6 +2,7 @@
 // the IEC 61260-1 band table, the rms of pure tones (A / sqrt(2) in their
 // band), superposition of two tones, the mean square of white noise per
 // unit bandwidth, the level floor, the CSV file, and refused inputs.
+#include "scratch.h"
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
 
@@ -227,7 +228,7 @@ BOOST_AUTO_TEST_CASE(zero_content_is_floored_and_the_csv_file_is_complete)
   BOOST_TEST(analysis::level_floor == -200.);
 
   namespace fs   = std::filesystem;
-  const auto dir = fs::temp_directory_path() / "greentread-third-octave";
+  const auto dir = test::scratch_directory("third-octave");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto file = dir / "spectrum.csv";

@@ -36,6 +36,8 @@ namespace greentread
       double                   length = 2.304;
       double                   spacing = 0.384e-3;
       double                   amplitude = 1e-3, wavelength = 0.05;
+      /// Factor on every road's heights.
+      double                   height_scale = 1.;
       RoadSampling             sampling = RoadSampling::envelope;
 
       static void
@@ -54,6 +56,11 @@ namespace greentread
       /// The texture named @p road: a preset, "sinusoid", "flat" or a file.
       road::Texture
       make(const std::string &road, double width) const;
+
+    private:
+      /// make() before the height scale.
+      road::Texture
+      make_unscaled(const std::string &road, double width) const;
     };
 
     /// Subsection "Rolling".
