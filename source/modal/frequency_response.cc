@@ -278,39 +278,39 @@ namespace greentread
       if (!std::filesystem::exists(file))
         throw InputError("Green's function file '" + file + "' does not exist");
       check_hdf5_layout(file, {"frequency", "points", "green"});
+      // deal.II's HDF5 objects abort the program when they are destroyed
+      // while an exception is in flight (an MPI build): each check records
+      // its problem, and the error is thrown once they are closed.
       FrequencyResponseMatrix green;
       std::string             dataset = "/frequency";
+      std::vector<double>     f;
+      std::string             problem;
       try
         {
           dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
-          const auto         f = h5.open_dataset("frequency").read<std::vector<double>>();
-          green.df             = check_grid(f, "Green's function file '" + file + "', /frequency");
-          green.n_lines        = static_cast<unsigned int>(f.size());
+          f = h5.open_dataset("frequency").read<std::vector<double>>();
 
-          dataset              = "/points";
-          auto points          = h5.open_dataset("points");
-          const auto pdims     = points.get_dimensions();
+          dataset          = "/points";
+          auto points      = h5.open_dataset("points");
+          const auto pdims = points.get_dimensions();
           if (pdims.size() != 2 || pdims[1] != 3)
-            throw InputError("Green's function file '" + file +
-                             "': /points must be a double array [n_p][3]");
-          const auto p = points.read<std::vector<double>>();
-          for (std::size_t i = 0; i < pdims[0]; ++i)
-            green.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});
+            problem = "/points must be a double array [n_p][3]";
+          else
+            {
+              const auto p = points.read<std::vector<double>>();
+              for (std::size_t i = 0; i < pdims[0]; ++i)
+                green.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});
 
-          dataset          = "/green";
-          auto       data  = h5.open_dataset("green");
-          const auto dims  = data.get_dimensions();
-          const auto n     = green.points.size();
-          if (dims.size() != 3 || dims[0] != f.size() || dims[1] != n || dims[2] != n)
-            throw InputError("Green's function file '" + file +
-                             "': /green must be complex [n_f][n_p][n_p] = [" +
-                             std::to_string(f.size()) + "][" + std::to_string(n) + "][" +
-                             std::to_string(n) + "]");
-          green.values = data.read<std::vector<std::complex<double>>>();
-          for (const auto &v : green.values)
-            if (!std::isfinite(v.real()) || !std::isfinite(v.imag()))
-              throw InputError("Green's function file '" + file +
-                               "': /green holds NaN or inf values");
+              dataset         = "/green";
+              auto       data = h5.open_dataset("green");
+              const auto dims = data.get_dimensions();
+              const auto n    = green.points.size();
+              if (dims.size() != 3 || dims[0] != f.size() || dims[1] != n || dims[2] != n)
+                problem = "/green must be complex [n_f][n_p][n_p] = [" + std::to_string(f.size()) +
+                          "][" + std::to_string(n) + "][" + std::to_string(n) + "]";
+              else
+                green.values = data.read<std::vector<std::complex<double>>>();
+            }
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -319,6 +319,13 @@ namespace greentread
           throw InputError("Green's function file '" + file + "': cannot read " + dataset +
                            " (is it an HDF5 file in the documented layout?): " + info.str());
         }
+      if (!problem.empty())
+        throw InputError("Green's function file '" + file + "': " + problem);
+      green.df      = check_grid(f, "Green's function file '" + file + "', /frequency");
+      green.n_lines = static_cast<unsigned int>(f.size());
+      for (const auto &v : green.values)
+        if (!std::isfinite(v.real()) || !std::isfinite(v.imag()))
+          throw InputError("Green's function file '" + file + "': /green holds NaN or inf values");
       return green;
     }
 

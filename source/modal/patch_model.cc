@@ -488,20 +488,34 @@ namespace greentread
       if (read_patch_model_key(file).empty())
         throw InputError("patch model file '" + file +
                          "' is missing or incomplete; delete it to recompute it");
-      dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
-      PatchModel         model;
-      model.lambda           = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
-      const auto        real = h5.open_dataset("real").read<std::vector<int>>();
-      const auto        p    = h5.open_dataset("points").read<std::vector<double>>();
-      const auto        e    = h5.open_dataset("errors").read<std::vector<double>>();
-      const auto        r = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
-      const auto        info = h5.open_dataset("info").read<std::vector<double>>();
-      const auto gr = h5.open_dataset("instantaneous").read<std::vector<double>>();
+      // Read everything, and close the file, before any check can throw:
+      // deal.II's HDF5 objects abort when destroyed during an exception.
+      PatchModel                        model;
+      std::vector<int>                  real;
+      std::vector<double>               p, e, info, gr;
+      std::vector<std::complex<double>> r;
+      {
+        dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
+        model.lambda = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
+        real         = h5.open_dataset("real").read<std::vector<int>>();
+        p            = h5.open_dataset("points").read<std::vector<double>>();
+        e            = h5.open_dataset("errors").read<std::vector<double>>();
+        r            = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
+        info         = h5.open_dataset("info").read<std::vector<double>>();
+        gr           = h5.open_dataset("instantaneous").read<std::vector<double>>();
+      }
       const std::size_t m = model.lambda.size(), n = p.size() / 3;
       if (real.size() != m || e.size() != n * n || r.size() != m * n * n || info.size() != 3 ||
           gr.size() != n * n)
         throw InputError("patch model file '" + file +
                          "' has inconsistent dataset sizes; delete it to recompute it");
+      const auto finite = [](const auto &values) {
+        return std::all_of(values.begin(), values.end(),
+                           [](const auto &x) { return std::isfinite(std::abs(x)); });
+      };
+      if (!finite(model.lambda) || !finite(r) || !finite(gr) || !finite(p) || !finite(info))
+        throw InputError("patch model file '" + file +
+                         "' holds a value that is not a finite number; delete it to recompute it");
       model.real.assign(real.begin(), real.end());
       for (std::size_t i = 0; i < n; ++i)
         model.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});

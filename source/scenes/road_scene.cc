@@ -16,6 +16,8 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <filesystem>
+#include <functional>
 #include <iostream>
 #include <sstream>
 
@@ -50,6 +52,28 @@ namespace greentread
       speed_label(const double v)
       {
         return format_printf("%g", v) + "kmh";
+      }
+
+      /**
+       * Read a saved stage whose key matched by @p read. A file that cannot
+       * be read in full (truncated, or holding a value that is not finite)
+       * is not an error of the user's: say so and return false, so that the
+       * stage is computed again and the file rewritten.
+       */
+      bool
+      read_saved_stage(const std::filesystem::path &file, const std::function<void()> &read)
+      {
+        try
+          {
+            read();
+            return true;
+          }
+        catch (const std::exception &e)
+          {
+            std::cout << "Not reusing " << file.string() << ", although its key matches: "
+                      << e.what() << "; computing it again\n";
+            return false;
+          }
       }
     } // namespace
 
@@ -543,15 +567,13 @@ namespace greentread
       // Stages 1-3: geometry, fe, periodic (cached Green's functions).
       const std::string green_key = green_stage_key(prm, geometry.geo_file);
       const fs::path    h5        = directory / "green_functions.h5";
-      const bool        green_cached =
-        global.reuse && modal::read_green_stage_key(h5.string()) == green_key;
       modal::FrequencyResponseMatrix G;
+      const bool green_cached =
+        global.reuse && modal::read_green_stage_key(h5.string()) == green_key &&
+        read_saved_stage(h5, [&] { G = modal::read_green_hdf5(h5.string()); });
       if (green_cached)
-        {
-          G = modal::read_green_hdf5(h5.string());
-          std::cout << "Reusing " << h5.string()
-                    << ": same geometry, materials, inflation and Green's-function parameters\n";
-        }
+        std::cout << "Reusing " << h5.string()
+                  << ": same geometry, materials, inflation and Green's-function parameters\n";
       else
         {
           std::cout << "Stages geometry -> fe -> periodic: the Green's functions at "
@@ -572,9 +594,9 @@ namespace greentread
       const std::string modal_key = patch_model_stage_key(prm, green_key);
       const fs::path    modal_h5  = directory / "patch_model.h5";
       modal::PatchModel model;
-      if (global.reuse && modal::read_patch_model_key(modal_h5.string()) == modal_key)
+      if (global.reuse && modal::read_patch_model_key(modal_h5.string()) == modal_key &&
+          read_saved_stage(modal_h5, [&] { model = modal::read_patch_model(modal_h5.string()); }))
         {
-          model = modal::read_patch_model(modal_h5.string());
           std::cout << "Reusing " << modal_h5.string()
                     << ": same Green's functions and identification parameters\n";
         }
@@ -954,11 +976,14 @@ namespace greentread
               power += p;
               moment += p * std::log10(r.spectrum.bands[b].centre);
             }
-          std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed)
-                    << " km/h: highest band " << format_number(r.spectrum.bands[peak].nominal)
-                    << " Hz (" << format_printf("%.1f", r.spectrum.level[peak])
-                    << " dB), spectral centroid "
-                    << format_printf("%.0f", std::pow(10., moment / power)) << " Hz\n";
+          std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed) << " km/h: ";
+          if (power > 0.)
+            std::cout << "highest band " << format_number(r.spectrum.bands[peak].nominal) << " Hz ("
+                      << format_printf("%.1f", r.spectrum.level[peak]) << " dB), spectral centroid "
+                      << format_printf("%.0f", std::pow(10., moment / power)) << " Hz\n";
+          else
+            std::cout << "no stress at the patch centre in any band (the point never touched "
+                         "the road)\n";
         }
       if (global.print_timings)
         std::cout << "Total run time " << format_printf("%.3g", since(start)) << " s\n";

@@ -110,13 +110,29 @@ BOOST_AUTO_TEST_CASE(thick_cylinder_under_pressure_with_rotational_periodicity)
                                                           << tangential / largest);
   BOOST_TEST(error < 1e-4 * largest);
   BOOST_TEST(tangential < 1e-6 * largest);
-  // The thin-wall formulas, u_r = p R^2 / (E t), hoop stress p R / t, hold to
-  // O(t / R) = 4%: at mid-wall,
+  // The thin-wall formulas, u_r = p R^2 / (E t) and hoop stress p R / t,
+  // hold to O(t / R) = 4%: the program's own displacement at mid-wall and
+  // its largest stress against them.
   const double R = 1., t = b - a;
-  const double u_mid = ((1. - nu) * A * R + (1. + nu) * B / R) / E;
+  double       u_mid = 0.;
+  unsigned int n_mid = 0;
+  for (const auto &node : nodes)
+    {
+      const double r = std::hypot(node.position[0], node.position[1]);
+      if (std::abs(r - R) < 1e-9)
+        {
+          u_mid += (node.position[0] * u[node.dofs[0]] + node.position[1] * u[node.dofs[1]]) / r;
+          ++n_mid;
+        }
+    }
+  BOOST_TEST_REQUIRE(n_mid > 0u);
+  u_mid /= n_mid;
+  BOOST_TEST_MESSAGE("thin wall: u_r at mid-wall " << u_mid / (p * R * R / (E * t))
+                                                   << " of p R^2 / (E t), largest von Mises "
+                                                   << model.max_von_mises(u) / (p * R / t)
+                                                   << " of p R / t");
   BOOST_TEST(std::abs(u_mid / (p * R * R / (E * t)) - 1.) < 0.04);
-  BOOST_TEST(std::abs((A + B / (R * R)) / (p * R / t) - 1.) < 0.04);
-  BOOST_TEST(model.max_von_mises(u) > 0.9 * p * R / t);
+  BOOST_TEST(std::abs(model.max_von_mises(u) / (p * R / t) - 1.) < 0.06);
 }
 
 BOOST_AUTO_TEST_CASE(no_locking_in_pure_bending_with_quadratic_elements)

@@ -267,6 +267,110 @@ BOOST_AUTO_TEST_CASE(slow_roll_follows_the_static_solution)
   BOOST_TEST(errors[0] / errors[1] > 2.);
 }
 
+BOOST_AUTO_TEST_CASE(multi_point_contact_with_a_real_residual_pole)
+{
+  // `Residual flexibility = real pole`: no G_r, the local compliance carried
+  // by a first-order lag at 3 kHz (its static compliance the same matrix), so
+  // the contact of a step is the iterative impulse rule of every point.
+  // Checked on the 12 points against two references: the direct
+  // convolution (to round-off) and, rolled slowly, the static solution of
+  // each position.
+  auto             model = synthetic_patch(0.05, false);
+  const double     fr    = 3000.;
+  Eigen::MatrixXd  local = Eigen::MatrixXd::Zero(model.n_points(), model.n_points());
+  for (unsigned int p = 0; p < model.n_points(); ++p)
+    for (unsigned int q = 0; q < model.n_points(); ++q)
+      {
+        const double r = std::hypot((model.points[p][0] - model.points[q][0]) / 6e-3,
+                                    (model.points[p][1] - model.points[q][1]) / 7e-3);
+        local(p, q)    = r < 1e-9 ? 5e-6 : (r < 1.01 ? 1e-6 : 0.);
+      }
+  model.lambda.emplace_back(-2. * M_PI * fr, 0.);
+  model.real.push_back(true);
+  model.residues.push_back((2. * M_PI * fr * local).cast<std::complex<double>>());
+  BOOST_TEST_REQUIRE(model.instantaneous.size() == 0);
+  const Eigen::VectorXd tread = tread_height(model);
+  const Eigen::MatrixXd G0    = model.static_compliance();
+
+  // Direct against modal-recursive on a 2 cm sinusoid at 20 m/s.
+  {
+    const double       dt = 2e-5, V = 20.;
+    const unsigned int n_steps = 2000;
+    const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+      for (unsigned int p = 0; p < model.n_points(); ++p)
+        {
+          const double a = 2. * M_PI * (model.points[p][0] + V * t) / 0.02;
+          d[p]           = 2e-4 + 3e-4 * std::sin(a) - tread[p];
+          dd[p]          = 3e-4 * std::cos(a) * 2. * M_PI * V / 0.02;
+        }
+    };
+    std::vector<Eigen::VectorXd> forces[2];
+    unsigned int                 run = 0;
+    const auto observe = [&](const contact::RollingStep &s) { forces[run].push_back(s.force); };
+    auto       modal   = contact::make_modal_patch_convolution(model, dt);
+    auto       direct  = contact::make_direct_patch_convolution(model, dt, n_steps + 1);
+    const auto a       = contact::roll(*modal, demand, n_steps, Eigen::VectorXd(), observe);
+    run                = 1;
+    const auto b       = contact::roll(*direct, demand, n_steps, Eigen::VectorXd(), observe);
+    double     diff = 0., peak = 0.;
+    for (unsigned int n = 0; n < n_steps; ++n)
+      {
+        diff = std::max(diff, max_abs(forces[0][n] - forces[1][n]));
+        peak = std::max(peak, max_abs(forces[1][n]));
+      }
+    BOOST_TEST_MESSAGE("real residual pole, direct vs modal-recursive: " << diff << " N of "
+                                                                          << peak << " N; steps "
+                                                                          "not converged "
+                                                                          << a.failed_steps);
+    // Known limit, reported and bounded here: at the impacts of this road the
+    // iteration of the load shapes does not settle on 12 of the 2000 steps
+    // (it cycles between two impact branches; README, 'Checks'). Those steps
+    // keep their last non-negative iterate, identically in both runs.
+    BOOST_TEST(a.failed_steps == b.failed_steps);
+    BOOST_TEST(a.failed_steps <= 20u);
+    BOOST_TEST(a.min_contact_fraction < 1.);
+    BOOST_TEST(a.max_contact_fraction > 0.);
+    BOOST_TEST(diff < 1e-9 * peak);
+  }
+
+  // Slowly (1 cm/s) over one wavelength of a 2 cm sinusoid from the static
+  // contact: the forces of each step are the static solution of its position.
+  {
+    const double dt = 1e-4, V = 0.01;
+    const auto   road = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+      for (unsigned int p = 0; p < model.n_points(); ++p)
+        {
+          const double a = 2. * M_PI * (model.points[p][0] + V * t) / 0.02;
+          d[p]           = 3e-4 * std::sin(a) - tread[p];
+          dd[p]          = 3e-4 * std::cos(a) * 2. * M_PI * V / 0.02;
+        }
+    };
+    Eigen::VectorXd d0(model.n_points()), dd0(model.n_points());
+    road(0., d0, dd0);
+    const auto eq     = contact::solve_static_contact(G0, d0, 150., 0.);
+    const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+      road(t, d, dd);
+      d.array() += eq.delta;
+    };
+    double     error = 0., peak = 0.;
+    const auto observe = [&](const contact::RollingStep &s) {
+      if (s.step % 97 != 0)
+        return;
+      const auto ref = contact::solve_static_contact(G0, s.d, 0., 0.);
+      error          = std::max(error, max_abs(s.force - ref.q));
+      peak           = std::max(peak, max_abs(ref.q));
+    };
+    auto       conv = contact::make_modal_patch_convolution(model, dt);
+    const auto s    = contact::roll(*conv, demand, static_cast<unsigned int>(0.02 / V / dt), eq.q,
+                                 observe);
+    BOOST_TEST_MESSAGE("real residual pole, slow roll: largest difference to the static solution "
+                       << error << " N of " << peak << " N");
+    check_converged(s);
+    BOOST_TEST(s.min_contact_fraction < s.max_contact_fraction);
+    BOOST_TEST(error < 1e-2 * peak);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
 {
   // Dropped onto a flat road at a fixed indentation from rest (an impact
@@ -314,7 +418,7 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
   test::RollingCase base; // 100 N over 30 cm at 90 km/h, one road sample per step
   base.load     = 100.;
   base.distance = 0.3;
-  test::check_extreme_cases(model, tread, texture, base, 0.3, 1e-3);
+  test::check_extreme_cases(model, tread, texture, base, 0.3, 1e-5);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_refused)

@@ -46,19 +46,29 @@ BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
 {
   // Steps incommensurate with the road period, so that events fall anywhere
   // inside a step. Bounded at every dt; second order overall (the README
-  // reports 2.00; a rule that fell to first order would fail here).
+  // reports 2.00; a rule that fell to first order would fail here). Where an
+  // event falls inside its step makes the error of one dt jump by a factor of
+  // 100 (an impact on the fallback branch), so the error at dt is the worst
+  // of dt, 1.1 dt and 1.21 dt, as in benchmarks/sdof_convergence.cc.
   std::vector<double> dts = {1e-3, 3.7e-4, 1.37e-4, 3.7e-5, 1.37e-5, 3.7e-6, 1e-6};
   std::vector<double> errors, penetrations;
   for (const double dt : dts)
     {
-      const auto o = simulate(test::oscillator_parameters(), test::contact_parameters(dt));
-      BOOST_TEST_MESSAGE("dt = " << dt << ": max |u - u_exact| = " << o.errors.max_u_error
-                                 << " m, penetration inside steps " << o.errors.max_penetration_step
-                                 << " m, fallback steps " << o.run.branch_count[4]);
-      BOOST_TEST(o.max_abs_u < 5e-3 + 1e-4);
-      BOOST_TEST(o.errors.max_u_error < 1e-2 * 5e-3);
-      errors.push_back(o.errors.max_u_error);
-      penetrations.push_back(o.errors.max_penetration_step);
+      double error = 0., penetration = 0.;
+      for (const double jitter : {1., 1.1, 1.21})
+        {
+          const auto o = simulate(test::oscillator_parameters(), test::contact_parameters(jitter * dt));
+          BOOST_TEST_MESSAGE("dt = " << jitter * dt << ": max |u - u_exact| = " << o.errors.max_u_error
+                                     << " m, penetration inside steps "
+                                     << o.errors.max_penetration_step << " m, fallback steps "
+                                     << o.run.branch_count[4]);
+          BOOST_TEST(o.max_abs_u < 5e-3 + 1e-4);
+          BOOST_TEST(o.errors.max_u_error < 1e-2 * 5e-3);
+          error       = std::max(error, o.errors.max_u_error);
+          penetration = std::max(penetration, o.errors.max_penetration_step);
+        }
+      errors.push_back(error);
+      penetrations.push_back(penetration);
     }
   // Least-squares slope of log(error) against log(dt).
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
