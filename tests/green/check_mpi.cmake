@@ -58,3 +58,20 @@ if(NOT CMAKE_MATCH_1 LESS 1)
   message(FATAL_ERROR "identify fitted green_7_7.csv with E = ${CMAKE_MATCH_1}:\n${output}")
 endif()
 message(STATUS "identify on green_7_7.csv: E = ${CMAKE_MATCH_1}")
+
+# Under mpirun, every scene but tire-green is refused on every rank, with a
+# message that says which scene uses MPI, and a non-zero exit.
+execute_process(COMMAND ${MPIEXEC} -np 2 ${PROGRAM} --set "Scene=sdof"
+  --set "Output directory=refused" WORKING_DIRECTORY ${WORKDIR}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "mpirun -np 2 of the sdof scene succeeded:\n${out}\n${err}")
+endif()
+if(NOT err MATCHES "only 'tire-green' uses MPI")
+  message(FATAL_ERROR "mpirun -np 2 of the sdof scene did not say why it was refused:\n${out}\n${err}")
+endif()
+file(GLOB_RECURSE left ${WORKDIR}/refused/*)
+if(left)
+  message(FATAL_ERROR "the refused MPI run left output behind: ${left}")
+endif()
+message(STATUS "mpirun -np 2 of the sdof scene: refused (${rc})")

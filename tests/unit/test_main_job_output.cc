@@ -339,7 +339,7 @@ BOOST_AUTO_TEST_CASE(passivity_of_the_tyre_patch_model)
                      << worst << " of the largest; G_r's eigenvalues from " << r.minCoeff()
                      << " to " << r.maxCoeff() << " m/N");
   BOOST_TEST(r.minCoeff() > 0.);
-  BOOST_TEST(worst >= -1.);
+  BOOST_TEST(worst >= -0.35); // measured -0.316: far from passive
 }
 
 BOOST_AUTO_TEST_SUITE_END()
