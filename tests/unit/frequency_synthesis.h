@@ -104,22 +104,21 @@ namespace test
               X[r] += beta[r][k] * (Rc * D[r]);
           }
       }
+    // u = G(0) q0 + G_r Delta q, plus the modal part
     // w(t_n) = (1 / T) sum_r X_r e^{2 pi j r n / N} = inverse FFT / dt.
+    const Eigen::VectorXd        static_u = model.static_compliance() * q[0];
     std::vector<Eigen::VectorXd> u(n_run + 1);
-    const Eigen::MatrixXd        G0 = model.static_compliance();
-    const Eigen::VectorXd        static_u = G0 * q[0];
-    std::vector<C>               line(N), w;
-    std::vector<Eigen::VectorXd> modal(N, Eigen::VectorXd::Zero(n_p));
+    for (unsigned int n = 0; n <= n_run; ++n)
+      u[n] = static_u + model.instantaneous * (q[n] - q[0]);
+    std::vector<C> line(N), w;
     for (unsigned int p = 0; p < n_p; ++p)
       {
         for (unsigned int r = 0; r < N; ++r)
           line[r] = X[r][p];
         fft.inv(w, line);
         for (unsigned int n = 0; n <= n_run; ++n)
-          modal[n][p] = std::exp(sigma * n * dt) * w[n].real() / dt;
+          u[n][p] += std::exp(sigma * n * dt) * w[n].real() / dt;
       }
-    for (unsigned int n = 0; n <= n_run; ++n)
-      u[n] = static_u + model.instantaneous * (q[n] - q[0]) + modal[n];
     return u;
   }
 } // namespace test
