@@ -75,3 +75,9 @@ if(left)
   message(FATAL_ERROR "the refused MPI run left output behind: ${left}")
 endif()
 message(STATUS "mpirun -np 2 of the sdof scene: refused (${rc})")
+
+# A failure on one rank only reaches every rank, as the same exception with
+# the lowest failing rank's message (the rule of the Green's stage's frequency
+# loop, throw_if_any_rank_failed).
+run_checked("rank_failure" ${MPIEXEC} -np 2 ${RANK_FAILURE})
+message(STATUS "a failure on one rank:\n${output}")
