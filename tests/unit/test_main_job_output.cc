@@ -296,6 +296,8 @@ BOOST_AUTO_TEST_CASE(a_corrupt_saved_stage_with_a_matching_key_is_computed_again
     {
       run_scene("corrupt-" + dataset, "road-A", 90., {},
                 [&](const fs::path &dir) { poison(dir / file, dataset); });
+      BOOST_TEST(screen_text.find(file + ", although its key matches") != std::string::npos,
+                 screen_text);
       BOOST_TEST(screen_text.find(file + ": same") == std::string::npos, screen_text);
       const std::string stage = dataset == "green" ? "Stages geometry -> fe -> periodic" : "Stage modal";
       BOOST_TEST(screen_text.find(stage) != std::string::npos, screen_text);
