@@ -20,7 +20,7 @@
 #include <greentread/periodic/contact_patch.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/periodic_cell.h>
-#include <greentread/scenes/tyre_cell_scene.h>
+#include <greentread/fe/inflation.h>
 
 #include <chrono>
 #include <cstdio>
@@ -63,7 +63,7 @@ namespace
       cell  = std::make_unique<geometry::TyreCell>(geometry);
       model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
       model->assemble();
-      model->assemble_geometric_stiffness(scenes::solve_inflation(*model, *cell, 2e5));
+      model->assemble_geometric_stiffness(fe::solve_inflation(*model, cell->angle(), 2e5));
       periodic_cell = periodic::make_periodic_cell(*model, cell->angle(), c.n_cells,
                                                    geometry::rim_seat, geometry::tread_surface,
                                                    true);

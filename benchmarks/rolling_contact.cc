@@ -19,7 +19,7 @@
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/road/texture.h>
-#include <greentread/scenes/road_scene.h>
+#include <greentread/road/patch_road.h>
 
 #include <chrono>
 #include <cmath>
@@ -107,7 +107,7 @@ main(int argc, char **argv)
       road::texture_preset("road-A", bands, levels);
       const double        spacing = 3.84e-4;
       const road::Texture texture = road::synthetic_texture(bands, levels, spacing, 6000, 300, 1);
-      const scenes::PatchRoad road(texture, model.points, scenes::RoadSampling::envelope, "road-A");
+      const road::PatchRoad road(texture, model.points, road::RoadSampling::envelope, "road-A");
       const double            V = 90. / 3.6, dt = spacing / V;
       Eigen::VectorXd         tread(n_p), z(n_p), slope(n_p);
       unsigned int            centre = 0;

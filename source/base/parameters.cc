@@ -403,5 +403,17 @@ namespace greentread
         return "";
       return best;
     }
+    std::vector<std::string>
+    split_list(const std::string &text)
+    {
+      std::vector<std::string> items;
+      for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+        if (!item.empty())
+          items.push_back(item);
+      return items;
+    }
+
+
+
   } // namespace base
 } // namespace greentread

@@ -1,5 +1,5 @@
 #include <greentread/fe/abaqus_export.h>
-#include <greentread/geometry/tyre_cell.h>
+#include <greentread/base/mesh_ids.h>
 
 #include <deal.II/grid/tria_accessor.h>
 

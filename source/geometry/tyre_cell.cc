@@ -1,6 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
-#include <greentread/fe/material.h>
+#include <greentread/base/mesh_ids.h>
 #include <greentread/geometry/tyre_cell.h>
 
 #include <deal.II/grid/grid_generator.h>

@@ -84,7 +84,7 @@ namespace greentread
 
     InflatedTyre::InflatedTyre(const geometry::GeometryParameters &geometry,
                                const fe::MaterialParameters       &materials,
-                               const InflationParameters          &inflation,
+                               const fe::InflationParameters          &inflation,
                                const periodic::PatchRequest       &patch_request)
     {
       auto start   = std::chrono::steady_clock::now();
@@ -97,11 +97,11 @@ namespace greentread
       assembly_seconds = seconds_since(start);
 
       start        = std::chrono::steady_clock::now();
-      const auto u = solve_inflation(*model, *cell, inflation.pressure);
+      const auto u = fe::solve_inflation(*model, cell->angle(), inflation.pressure);
       model->assemble_geometric_stiffness(u);
       inflation_seconds = seconds_since(start);
 
-      tread_growth = scenes::tread_growth(*model, u, geometry).first;
+      tread_growth = fe::tread_growth(*model, u, geometry.outer_radius()).first;
       periodic_cell = periodic::make_periodic_cell(
         *model, cell->angle(), cell->n_cells(), geometry::rim_seat, geometry::tread_surface, true);
       patch = periodic::place_contact_points(periodic_cell, patch_request);

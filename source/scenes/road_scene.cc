@@ -27,16 +27,6 @@ namespace greentread
   {
     namespace
     {
-      std::vector<std::string>
-      split_list(const std::string &text)
-      {
-        std::vector<std::string> items;
-        for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-          if (!item.empty())
-            items.push_back(item);
-        return items;
-      }
-
       /// A file name part for a road: its name without directories or dots.
       std::string
       road_label(const std::string &road)
@@ -76,117 +66,6 @@ namespace greentread
           }
       }
     } // namespace
-
-
-
-    void
-    RoadTextureParameters::declare_parameters(dealii::ParameterHandler &prm)
-    {
-      using base::RangePattern;
-      prm.enter_subsection("Road texture");
-      {
-        prm.declare_entry("Roads", "road-A, road-B", dealii::Patterns::Anything(),
-                          "The roads to roll over, a comma-separated list. Each is 'road-A' "
-                          "(rough, surface-dressing-like, MPD about 1.9 mm) or 'road-B' (dense "
-                          "asphalt, MPD about 0.7 mm), synthetic textures with the documented "
-                          "target spectra (README); 'sinusoid' (a sinusoid along x with "
-                          "'Sinusoid amplitude' and 'Sinusoid wavelength'); 'flat'; or a "
-                          "texture file: SDF (ISO 25178-71, ASCII or binary) or the plain "
-                          "height grid (README, 'File formats').");
-        prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0),
-                          "Seed of the synthetic textures: the same seed gives the same road.");
-        prm.declare_entry("Length", "2.304", RangePattern::closed(0.05, 20., "m"),
-                          "Length of the synthetic, sinusoidal and flat roads.");
-        prm.declare_entry("Spacing", "0.000384", RangePattern::closed(1e-5, 5e-3, "m"),
-                          "Sampling interval of the synthetic, sinusoidal and flat roads "
-                          "(the paper's measured roads: 384 um).");
-        prm.declare_entry("Sinusoid amplitude", "0.001", RangePattern::closed(0., 0.05, "m"),
-                          "Amplitude of the 'sinusoid' road.");
-        prm.declare_entry("Sinusoid wavelength", "0.05", RangePattern::closed(1e-3, 10., "m"),
-                          "Wavelength of the 'sinusoid' road.");
-        prm.declare_entry("Height scale", "1", RangePattern::closed(0., 100., "1"),
-                          "Factor on every road's heights (presets, sinusoid and texture "
-                          "files): 2 raises the texture spectrum by 6.02 dB at every "
-                          "wavelength and keeps its shape.");
-        prm.declare_entry("Between points", "envelope",
-                          dealii::Patterns::Selection("envelope|point"),
-                          "How a tread point sees the road, which is sampled far more finely "
-                          "than the points are spaced. 'envelope': the highest road point in "
-                          "the point's tributary rectangle (dx by dy around it), since the "
-                          "tread between points, interpolated as in the paper's Section 5.2, "
-                          "rests on the highest asperity under it. 'point': the road height "
-                          "under the point itself (bilinear).");
-      }
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    RoadTextureParameters::parse_parameters(dealii::ParameterHandler &prm)
-    {
-      prm.enter_subsection("Road texture");
-      {
-        roads = split_list(prm.get("Roads"));
-        if (roads.empty())
-          throw InputError("parameter 'Road texture/Roads' is empty; allowed: a list of "
-                           "road-A, road-B, sinusoid, flat or texture files");
-        for (const auto &r : roads)
-          if (!is_built_in(r) && !std::filesystem::exists(r))
-            throw InputError("parameter 'Road texture/Roads': '" + r +
-                             "' is neither road-A, road-B, sinusoid, flat nor an existing "
-                             "texture file");
-        seed       = prm.get_integer("Seed");
-        length     = prm.get_double("Length");
-        spacing    = prm.get_double("Spacing");
-        amplitude  = prm.get_double("Sinusoid amplitude");
-        wavelength = prm.get_double("Sinusoid wavelength");
-        height_scale = prm.get_double("Height scale");
-        sampling   = prm.get("Between points") == "point" ? RoadSampling::point :
-                                                             RoadSampling::envelope;
-      }
-      prm.leave_subsection();
-    }
-
-
-
-    road::Texture
-    RoadTextureParameters::make(const std::string &name, const double width) const
-    {
-      road::Texture t = make_unscaled(name, width);
-      for (auto &z : t.z)
-        z *= height_scale;
-      return t;
-    }
-
-
-
-    road::Texture
-    RoadTextureParameters::make_unscaled(const std::string &name, const double width) const
-    {
-      if (!is_built_in(name))
-        return road::read_texture(name);
-      road::Texture t;
-      t.dx = t.dy = spacing;
-      t.nx        = static_cast<unsigned int>(std::ceil(length / spacing));
-      t.ny        = static_cast<unsigned int>(std::ceil(width / spacing)) + 2;
-      if (name == "road-A" || name == "road-B")
-        {
-          std::vector<road::WavelengthBand> bands;
-          std::vector<double>               levels;
-          road::texture_preset(name, bands, levels);
-          // Even sizes with small factors keep the FFT fast.
-          t.nx += t.nx % 2;
-          t.ny += t.ny % 2;
-          return road::synthetic_texture(bands, levels, spacing, t.nx, t.ny, seed);
-        }
-      t.z.assign(std::size_t(t.nx) * t.ny, 0.);
-      if (name == "sinusoid")
-        for (unsigned int j = 0; j < t.ny; ++j)
-          for (unsigned int i = 0; i < t.nx; ++i)
-            t.z[std::size_t(j) * t.nx + i] = amplitude * std::sin(2. * M_PI * i * spacing / wavelength);
-      return t;
-    }
 
 
 
@@ -238,7 +117,7 @@ namespace greentread
       prm.enter_subsection("Rolling");
       {
         speeds.clear();
-        for (const auto &s : split_list(prm.get("Speeds")))
+        for (const auto &s : base::split_list(prm.get("Speeds")))
           speeds.push_back(std::stod(s));
         if (speeds.empty())
           throw InputError("parameter 'Rolling/Speeds' is empty; allowed: a list of speeds in "
@@ -265,113 +144,6 @@ namespace greentread
         stress_reference = prm.get_double("Stress reference");
       }
       prm.leave_subsection();
-    }
-
-
-
-    PatchRoad::PatchRoad(const road::Texture                     &texture,
-                         const std::vector<std::array<double, 3>> &points,
-                         const RoadSampling                        sampling,
-                         const std::string                        &name)
-      : spacing(texture.dx)
-    {
-      // The lattice of points: distinct x and y.
-      std::vector<double> xs, ys;
-      const auto          add = [](std::vector<double> &v, const double x) {
-        for (const double y : v)
-          if (std::abs(x - y) < 1e-7)
-            return;
-        v.push_back(x);
-      };
-      for (const auto &p : points)
-        {
-          add(xs, p[0]);
-          add(ys, p[1]);
-        }
-      std::sort(xs.begin(), xs.end());
-      std::sort(ys.begin(), ys.end());
-      dx_points = xs.size() > 1 ? (xs.back() - xs.front()) / (xs.size() - 1) : texture.dx;
-      dy_points = ys.size() > 1 ? (ys.back() - ys.front()) / (ys.size() - 1) : texture.dy;
-      const double width  = ys.back() - ys.front() + dy_points;
-      const double needed = width + 2. * texture.dy;
-      if (texture.ny * texture.dy < needed && texture.ny > 1)
-        throw InputError("road '" + name + "' is " + format_short(texture.ny * texture.dy) +
-                         " m wide; the patch needs " + format_short(needed) +
-                         " m (its width plus one point spacing)");
-      x_offset = -xs.front() + 0.5 * dx_points;
-      usable   = texture.length() - (xs.back() - xs.front()) - dx_points - 2. * texture.dx;
-      if (usable <= 0.)
-        throw InputError("road '" + name + "' is " + format_short(texture.length()) +
-                         " m long, shorter than the patch (" +
-                         format_short(xs.back() - xs.front() + dx_points) + " m)");
-
-      // One profile per row of points across the tread.
-      const double y_centre = 0.5 * (texture.ny - 1) * texture.dy;
-      for (const double y : ys)
-        {
-          std::vector<double> profile(texture.nx, -INFINITY);
-          if (texture.ny == 1)
-            for (unsigned int i = 0; i < texture.nx; ++i)
-              profile[i] = texture(i, 0);
-          else if (sampling == RoadSampling::point)
-            {
-              const double       s = (y + y_centre) / texture.dy;
-              const unsigned int j = std::min<unsigned int>(texture.ny - 2, std::floor(s));
-              const double       w = s - j;
-              for (unsigned int i = 0; i < texture.nx; ++i)
-                profile[i] = (1. - w) * texture(i, j) + w * texture(i, j + 1);
-            }
-          else
-            {
-              // Highest point across the tributary strip...
-              const int j0 = std::max(0, int(std::ceil((y - 0.5 * dy_points + y_centre) / texture.dy)));
-              const int j1 = std::min(int(texture.ny) - 1,
-                                      int(std::floor((y + 0.5 * dy_points + y_centre) / texture.dy)));
-              for (int j = j0; j <= j1; ++j)
-                for (unsigned int i = 0; i < texture.nx; ++i)
-                  profile[i] = std::max(profile[i], texture(i, j));
-              // ... and along x over the tributary length (a sliding maximum).
-              const int           half = std::max(0, int(std::floor(0.5 * dx_points / texture.dx)));
-              std::vector<double> across = profile;
-              std::deque<int>     window;
-              for (int i = 0; i < int(texture.nx) + half; ++i)
-                {
-                  if (i < int(texture.nx))
-                    {
-                      while (!window.empty() && across[window.back()] <= across[i])
-                        window.pop_back();
-                      window.push_back(i);
-                    }
-                  const int centre = i - half;
-                  while (!window.empty() && window.front() < centre - half)
-                    window.pop_front();
-                  if (centre >= 0)
-                    profile[centre] = across[window.front()];
-                }
-            }
-          rows.push_back(std::move(profile));
-        }
-      for (const auto &p : points)
-        {
-          const auto it = std::min_element(ys.begin(), ys.end(), [&](double a, double b) {
-            return std::abs(a - p[1]) < std::abs(b - p[1]);
-          });
-          row_of.push_back(it - ys.begin());
-          x_of.push_back(p[0] + x_offset);
-        }
-    }
-
-
-
-    void
-    PatchRoad::height(const unsigned int p, const double s, double &z, double &slope) const
-    {
-      const auto        &row = rows[row_of[p]];
-      const double       x   = (x_of[p] + s) / spacing;
-      const unsigned int i   = std::min<unsigned int>(row.size() - 2, std::max(0., std::floor(x)));
-      const double       w   = x - i;
-      z                      = (1. - w) * row[i] + w * row[i + 1];
-      slope                  = (row[i + 1] - row[i]) / spacing;
     }
 
 
@@ -439,7 +211,7 @@ namespace greentread
       // asked for; the points snap to tread nodes later, and PatchRoad
       // checks their exact extent again.
       for (const auto &name : roads.roads)
-        if (!RoadTextureParameters::is_built_in(name) && texture_files.count(name) == 0)
+        if (!road::RoadTextureParameters::is_built_in(name) && texture_files.count(name) == 0)
           {
             road::Texture t = road::read_texture(name);
             const double  needed_width = green.patch.width + 2. * t.dy;
@@ -680,7 +452,7 @@ namespace greentread
           const auto          file    = texture_files.find(road_name);
           const road::Texture texture =
             file != texture_files.end() ? file->second : roads.make(road_name, width);
-          const PatchRoad     patch_road(texture, model.points, roads.sampling, road_name);
+          const road::PatchRoad patch_road(texture, model.points, roads.sampling, road_name);
           {
             const auto   bands    = road::wavelength_bands(std::max(2e-3, 4. * texture.dx),
                                                       std::min(0.1, 0.5 * texture.length()));

@@ -70,10 +70,10 @@ namespace greentread
       modal::IdentificationParameters::declare_parameters(prm);
       geometry::GeometryParameters::declare_parameters(prm);
       fe::MaterialParameters::declare_parameters(prm);
-      InflationParameters::declare_parameters(prm);
+      fe::InflationParameters::declare_parameters(prm);
       periodic::GreenParameters::declare_parameters(prm);
       modal::PatchModelParameters::declare_parameters(prm);
-      RoadTextureParameters::declare_parameters(prm);
+      road::RoadTextureParameters::declare_parameters(prm);
       RollingParameters::declare_parameters(prm);
     }
 

@@ -5,6 +5,7 @@
 #include <greentread/fe/abaqus_export.h>
 #include <greentread/fe/cylindrical.h>
 #include <greentread/fe/elastic_model.h>
+#include <greentread/fe/inflation.h>
 #include <greentread/scenes/tyre_cell_scene.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -42,70 +43,6 @@ namespace greentread
 
 
 
-    void
-    InflationParameters::declare_parameters(dealii::ParameterHandler &prm)
-    {
-      prm.enter_subsection("Inflation");
-      prm.declare_entry("Pressure", "2e5", base::RangePattern::non_negative("Pa"),
-                        "Inflation pressure P on the inner surface (gauge). Unit: Pa. "
-                        "Paper: 2 bar = 2e5 Pa.");
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    InflationParameters::parse_parameters(dealii::ParameterHandler &prm)
-    {
-      prm.enter_subsection("Inflation");
-      pressure = prm.get_double("Pressure");
-      prm.leave_subsection();
-    }
-
-
-
-    dealii::Vector<double>
-    solve_inflation(const fe::ElasticModel   &model,
-                    const geometry::TyreCell &cell,
-                    const double              pressure)
-    {
-      // The cell closed into the ring by rotational periodicity.
-      dealii::AffineConstraints<double> constraints;
-      model.add_clamp(geometry::rim_seat, constraints);
-      model.add_rotational_periodicity(geometry::periodic_first, geometry::periodic_second,
-                                       cell.angle(), constraints);
-      constraints.close();
-      return model.solve_static(constraints,
-                                model.pressure_load(geometry::inner_surface, pressure));
-    }
-
-
-
-    std::pair<double, double>
-    tread_growth(const fe::ElasticModel             &model,
-                 const dealii::Vector<double>       &u,
-                 const geometry::GeometryParameters &geometry)
-    {
-      // The radial displacement of the nodes on the outer radius.
-      const double outer = 0.5 * geometry.rim_diameter + geometry.section_height;
-      double       largest = 0., crown = 0.;
-      for (const auto &node : fe::nodes(model.dof_handler(), model.mapping()))
-        {
-          const double r = std::hypot(node.position[0], node.position[1]);
-          if (std::abs(r - outer) < 1e-9 * outer)
-            {
-              const double u_r =
-                (node.position[0] * u[node.dofs[0]] + node.position[1] * u[node.dofs[1]]) / r;
-              largest = std::max(largest, u_r);
-              if (std::abs(node.position[2]) < 1e-9)
-                crown = u_r;
-            }
-        }
-      return {largest, crown};
-    }
-
-
-
     TyreCellScene::TyreCellScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
       : prm(prm_)
       , global(global_)
@@ -134,7 +71,7 @@ namespace greentread
       model.assemble();
       const double assembly_time = clock.lap();
 
-      const auto   u              = solve_inflation(model, *cell, inflation.pressure);
+      const auto   u              = fe::solve_inflation(model, cell->angle(), inflation.pressure);
       const double inflation_time = clock.lap();
 
       double kp_time = 0.;
@@ -144,7 +81,7 @@ namespace greentread
           kp_time = clock.lap();
         }
 
-      const auto [growth, crown] = tread_growth(model, u, geometry);
+      const auto [growth, crown] = fe::tread_growth(model, u, geometry.outer_radius());
 
       // Outputs.
       {

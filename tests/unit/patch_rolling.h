@@ -11,7 +11,7 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/texture.h>
-#include <greentread/scenes/road_scene.h>
+#include <greentread/road/patch_road.h>
 
 #include <Eigen/Core>
 
@@ -58,7 +58,7 @@ namespace test
     road::Texture t = texture;
     for (auto &z : t.z)
       z = run.flat ? 0. : z * run.roughness;
-    const scenes::PatchRoad road(t, model.points, scenes::RoadSampling::envelope, "test");
+    const road::PatchRoad road(t, model.points, road::RoadSampling::envelope, "test");
     const double            V  = run.speed_kmh / 3.6;
     const double            dt = run.time_step(texture);
     Eigen::VectorXd         z(model.n_points()), slope(model.n_points());

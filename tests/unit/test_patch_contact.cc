@@ -8,7 +8,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/road/texture.h>
-#include <greentread/scenes/road_scene.h>
 #include <greentread/sdof/exact_solution.h>
 
 #include <boost/test/unit_test.hpp>

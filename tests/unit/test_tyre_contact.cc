@@ -15,7 +15,6 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/texture.h>
-#include <greentread/scenes/road_scene.h>
 
 #include <boost/test/unit_test.hpp>
 

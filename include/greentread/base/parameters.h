@@ -87,6 +87,10 @@ namespace greentread
     /**
      * @brief Every declared parameter in declaration order.
      */
+    /// The non-empty items of a comma-separated list, trimmed.
+    std::vector<std::string>
+    split_list(const std::string &text);
+
     std::vector<ParameterEntry>
     list_parameters(const dealii::ParameterHandler &prm);
 

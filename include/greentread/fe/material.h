@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/base/mesh_ids.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -63,15 +64,6 @@ namespace greentread
      */
     std::pair<double, double>
     rayleigh_coefficients(double loss_factor, double f1, double f2);
-
-    /// Material ids of the tyre's layers (the .geo physical surfaces).
-    enum MaterialId : unsigned char
-    {
-      tread_id    = 1,
-      belt_id     = 2,
-      sidewall_id = 3,
-      bead_id     = 4
-    };
 
     /**
      * @brief Subsection "Materials": the layers of Table A.4 and damping.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/base/mesh_ids.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
@@ -20,17 +21,6 @@ namespace greentread
 {
   namespace geometry
   {
-    /// Boundary ids of the cell.
-    enum BoundaryId : unsigned char
-    {
-      free_surface    = 0, ///< every untagged outer face
-      rim_seat        = 1, ///< clamped to the rim
-      inner_surface   = 2, ///< carries the inflation pressure
-      tread_surface   = 3, ///< touches the road
-      periodic_first  = 4, ///< the section at theta = 0
-      periodic_second = 5  ///< the section at theta = 2 pi / N
-    };
-
     /**
      * @brief Subsection "Geometry".
      *
@@ -70,6 +60,13 @@ namespace greentread
       /// The cell angle 2 pi / N [rad].
       double
       angle() const;
+
+      /// The tread surface's radius before inflation, rim / 2 + section height [m].
+      double
+      outer_radius() const
+      {
+        return 0.5 * rim_diameter + section_height;
+      }
 
       /// The ONELAB numbers handed to the .geo file.
       std::map<std::string, double>

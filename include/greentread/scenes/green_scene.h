@@ -35,7 +35,7 @@ namespace greentread
 
       InflatedTyre(const geometry::GeometryParameters &geometry,
                    const fe::MaterialParameters       &materials,
-                   const InflationParameters          &inflation,
+                   const fe::InflationParameters          &inflation,
                    const periodic::PatchRequest       &patch_request);
     };
 
@@ -99,7 +99,7 @@ namespace greentread
       GlobalParameters             global;
       geometry::GeometryParameters geometry;
       fe::MaterialParameters       materials;
-      InflationParameters          inflation;
+      fe::InflationParameters          inflation;
       periodic::GreenParameters    green;
     };
   } // namespace scenes

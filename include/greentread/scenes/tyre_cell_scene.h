@@ -1,6 +1,7 @@
 #pragma once
 
 #include <greentread/fe/elastic_model.h>
+#include <greentread/fe/inflation.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/scenes/scene.h>
@@ -11,37 +12,6 @@ namespace greentread
 {
   namespace scenes
   {
-    /**
-     * @brief Subsection "Inflation".
-     */
-    struct InflationParameters
-    {
-      double pressure = 2e5;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
-    /**
-     * @brief The static inflation of the cell in the ring: rim seat clamped,
-     * rotational periodicity, @p pressure on the inner surface. Returns the
-     * displacement; @p model must be assembled.
-     * @throws NumericalError if the static system is singular.
-     */
-    dealii::Vector<double>
-    solve_inflation(const fe::ElasticModel &model, const geometry::TyreCell &cell, double pressure);
-
-    /**
-     * @brief The inflated tread's radial growth: the largest over the tread
-     * surface, and at the crown (z = 0) [m].
-     */
-    std::pair<double, double>
-    tread_growth(const fe::ElasticModel             &model,
-                 const dealii::Vector<double>       &u,
-                 const geometry::GeometryParameters &geometry);
-
     /**
      * @brief Scenes "geometry-study" and "tire-cell": the tyre's periodic
      * cell (paper, Section 4, Tables A.3-A.4, Eq. 41).
@@ -72,7 +42,7 @@ namespace greentread
       bool                          full;
       geometry::GeometryParameters geometry;
       fe::MaterialParameters       materials;
-      InflationParameters          inflation;
+      fe::InflationParameters          inflation;
     };
   } // namespace scenes
 } // namespace greentread
