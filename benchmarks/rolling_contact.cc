@@ -18,6 +18,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/road/texture.h>
 #include <greentread/road/patch_road.h>
 
@@ -108,28 +109,22 @@ main(int argc, char **argv)
       const double        spacing = 3.84e-4;
       const road::Texture texture = road::synthetic_texture(bands, levels, spacing, 6000, 300, 1);
       const road::PatchRoad road(texture, model.points, road::RoadSampling::envelope, "road-A");
-      const double            V = 90. / 3.6, dt = spacing / V;
-      Eigen::VectorXd         tread(n_p), z(n_p), slope(n_p);
-      unsigned int            centre = 0;
+      const double    V = 90. / 3.6, dt = spacing / V;
+      const Eigen::VectorXd tread = contact::tread_heights(model.points);
+      unsigned int          centre = 0;
       for (unsigned int p = 0; p < n_p; ++p)
-        {
-          const double r = model.points[p][2], x = model.points[p][0];
-          tread[p]       = r - std::sqrt(r * r - x * x);
-          if (std::hypot(x, model.points[p][1]) <
-              std::hypot(model.points[centre][0], model.points[centre][1]))
-            centre = p;
-        }
-      const auto sample = [&](const double s) {
-        for (unsigned int p = 0; p < n_p; ++p)
-          road.height(p, s, z[p], slope[p]);
+        if (std::hypot(model.points[p][0], model.points[p][1]) <
+            std::hypot(model.points[centre][0], model.points[centre][1]))
+          centre = p;
+      const contact::PatchRoadHeights heights = [&road](const double s, Eigen::VectorXd &z,
+                                                        Eigen::VectorXd &slope) {
+        road.heights(s, z, slope);
       };
-      sample(0.);
-      const auto eq = contact::solve_static_contact(model.static_compliance(), z - tread, 600., 0.);
-      const auto demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
-        sample(V * t);
-        d  = (eq.delta + z.array() - tread.array()).matrix();
-        dd = V * slope;
-      };
+      contact::RollingSetup setup;
+      setup.speed       = V;
+      setup.time_step   = dt;
+      setup.static_load = 600.;
+      const auto eq     = contact::start_contact(model.static_compliance(), tread, heights, setup);
       const double area = 6.684e-3 * 7.65e-3;
 
       const auto run = [&](contact::PatchConvolution &conv, const unsigned int n_steps) {
@@ -139,7 +134,9 @@ main(int argc, char **argv)
           r.stress.push_back(s.force / area);
         };
         const auto start = std::chrono::steady_clock::now();
-        r.summary        = contact::roll(conv, demand, n_steps, eq.q, observe);
+        contact::RollingSetup this_run = setup;
+        this_run.n_steps               = n_steps;
+        r.summary = contact::roll_patch(conv, tread, heights, eq, this_run, observe);
         r.seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;

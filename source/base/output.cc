@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <iostream>
 #include <sstream>
 
 namespace greentread
@@ -126,6 +127,24 @@ namespace greentread
       test.close();
       std::filesystem::remove(probe, error);
       return path;
+    }
+
+
+
+    bool
+    read_saved_stage(const std::filesystem::path &file, const std::function<void()> &read)
+    {
+      try
+        {
+          read();
+          return true;
+        }
+      catch (const std::exception &e)
+        {
+          std::cout << "Not reusing " << file.string() << ", although its key matches: "
+                    << e.what() << "; computing it again\n";
+          return false;
+        }
     }
   } // namespace base
 } // namespace greentread

@@ -226,5 +226,16 @@ namespace greentread
       z                      = (1. - w) * row[i] + w * row[i + 1];
       slope                  = (row[i + 1] - row[i]) / spacing;
     }
+
+
+
+    void
+    PatchRoad::heights(const double s, Eigen::VectorXd &z, Eigen::VectorXd &slope) const
+    {
+      z.resize(row_of.size());
+      slope.resize(row_of.size());
+      for (unsigned int p = 0; p < row_of.size(); ++p)
+        height(p, s, z[p], slope[p]);
+    }
   } // namespace road
 } // namespace greentread

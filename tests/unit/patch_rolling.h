@@ -1,14 +1,16 @@
 #pragma once
 
-// One rolling run of a patch model over a texture, as the tire-road-contact
-// scene does it (envelope sampling, a start from the static contact that
-// carries the load at x = 0, the indentation held): shared by the checks on
+// One rolling run of a patch model over a texture through the recipe the
+// tire-road-contact scene uses (contact/rolling.h: envelope sampling, a start
+// from the static contact that carries the load at x = 0, the indentation
+// held), with the model's own static compliance: shared by the checks on
 // a synthetic patch (test_patch_contact.cc) and on a real tyre
 // (test_tyre_contact.cc).
 
 #include "frequency_synthesis.h"
 
 #include <greentread/contact/patch_contact.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/texture.h>
 #include <greentread/road/patch_road.h>
@@ -58,27 +60,22 @@ namespace test
     road::Texture t = texture;
     for (auto &z : t.z)
       z = run.flat ? 0. : z * run.roughness;
-    const road::PatchRoad road(t, model.points, road::RoadSampling::envelope, "test");
-    const double            V  = run.speed_kmh / 3.6;
-    const double            dt = run.time_step(texture);
-    Eigen::VectorXd         z(model.n_points()), slope(model.n_points());
-    const auto              sample = [&](const double x) {
-      for (unsigned int p = 0; p < model.n_points(); ++p)
-        road.height(p, x, z[p], slope[p]);
+    const road::PatchRoad            road(t, model.points, road::RoadSampling::envelope, "test");
+    const contact::PatchRoadHeights heights = [&road](const double s, Eigen::VectorXd &z,
+                                                      Eigen::VectorXd &slope) {
+      road.heights(s, z, slope);
     };
-    sample(0.);
-    const auto eq = contact::solve_static_contact(model.static_compliance(), z - tread, run.load, 0.);
+    contact::RollingSetup setup;
+    setup.speed       = run.speed_kmh / 3.6;
+    setup.time_step   = run.time_step(texture);
+    setup.n_steps     = static_cast<unsigned int>(run.distance / (setup.speed * setup.time_step));
+    setup.static_load = run.load;
+    setup.convolution = run.direct ? contact::PatchConvolutionMethod::direct :
+                                     contact::PatchConvolutionMethod::modal_recursive;
+    const auto eq = contact::start_contact(model.static_compliance(), tread, heights, setup);
     if (start)
       *start = eq.q;
-    const auto demand = [&](const double time, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
-      sample(V * time);
-      d  = (eq.delta + z.array() - tread.array()).matrix();
-      dd = V * slope;
-    };
-    const unsigned int n_steps = static_cast<unsigned int>(run.distance / (V * dt));
-    auto conv = run.direct ? contact::make_direct_patch_convolution(model, dt, n_steps + 1) :
-                             contact::make_modal_patch_convolution(model, dt);
-    return contact::roll(*conv, demand, n_steps, eq.q, observe);
+    return contact::roll_patch(model, tread, heights, eq, setup, observe);
   }
 
   /// What check_run() measured of one rolling run.

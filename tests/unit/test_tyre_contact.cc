@@ -13,6 +13,7 @@
 
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/patch_contact.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/texture.h>
 
@@ -42,12 +43,7 @@ namespace
                          file << " is missing: it is written by the test road/coarse "
                                  "(ctest runs it first; alone: ctest -R road/coarse)");
       model = modal::read_patch_model(file);
-      tread.resize(model.n_points());
-      for (unsigned int p = 0; p < model.n_points(); ++p)
-        {
-          const double r = model.points[p][2], x = model.points[p][0];
-          tread[p]       = r - std::sqrt(r * r - x * x);
-        }
+      tread = contact::tread_heights(model.points);
       std::vector<road::WavelengthBand> bands;
       std::vector<double>               levels;
       road::texture_preset("road-A", bands, levels);

@@ -3,6 +3,7 @@
 #include <greentread/base/parameters.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -99,5 +100,14 @@ namespace greentread
      */
     std::filesystem::path
     prepare_output_directory(const std::string &directory);
+
+    /**
+     * @brief Read a saved stage whose key matched, by @p read. A file that
+     * cannot be read in full (truncated, or holding a value that is not
+     * finite) is not the user's error: say so on screen and return false, so
+     * that the stage is computed again and the file rewritten.
+     */
+    bool
+    read_saved_stage(const std::filesystem::path &file, const std::function<void()> &read);
   } // namespace base
 } // namespace greentread

@@ -84,13 +84,13 @@ namespace greentread
       std::string allowed;
     };
 
-    /**
-     * @brief Every declared parameter in declaration order.
-     */
     /// The non-empty items of a comma-separated list, trimmed.
     std::vector<std::string>
     split_list(const std::string &text);
 
+    /**
+     * @brief Every declared parameter in declaration order.
+     */
     std::vector<ParameterEntry>
     list_parameters(const dealii::ParameterHandler &prm);
 

@@ -4,6 +4,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <Eigen/Core>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -76,6 +78,10 @@ namespace greentread
       /// The road height under point @p p at patch position @p s along the texture, and its slope.
       void
       height(unsigned int p, double s, double &z, double &slope) const;
+
+      /// height() of every point at once (@p z and @p slope are resized).
+      void
+      heights(double s, Eigen::VectorXd &z, Eigen::VectorXd &slope) const;
 
       /// The x range the points can use: [0, usable_length()].
       double

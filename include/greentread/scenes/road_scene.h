@@ -1,9 +1,13 @@
 #pragma once
 
+#include <greentread/analysis/rolling_output.h>
+#include <greentread/base/output.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
 #include <greentread/modal/patch_model.h>
+#include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_functions.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/scenes/scene.h>
@@ -13,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -30,7 +35,7 @@ namespace greentread
       double              static_load = 600.;
       double              indentation = 0.;
       bool                static_start = true;
-      std::string         convolution = "modal-recursive";
+      contact::PatchConvolutionMethod convolution = contact::PatchConvolutionMethod::modal_recursive;
       unsigned int        direct_kernel = 0;
       unsigned int        frames = 40;
       double              stress_reference = 100.;
@@ -40,15 +45,6 @@ namespace greentread
       void
       parse_parameters(dealii::ParameterHandler &prm);
     };
-
-    /**
-     * @brief The key saved with patch_model.h5: the Green's stage's key
-     * (green_stage_key()), a digest of the modal sources, and the
-     * parameters of "Identification" and "Patch model". Not the git
-     * revision: a commit elsewhere keeps the fit.
-     */
-    std::string
-    patch_model_stage_key(const dealii::ParameterHandler &prm, const std::string &green_key);
 
     /**
      * @brief Scene 'tire-road-contact': geometry -> fe -> periodic -> modal ->
@@ -63,6 +59,20 @@ namespace greentread
       run() override;
 
     private:
+      /// Stages geometry, fe, periodic: the Green's functions, read from
+      /// @p h5 when its key is @p key, computed and saved otherwise.
+      modal::FrequencyResponseMatrix
+      green_stage(const std::filesystem::path &h5, const std::string &key,
+                  const base::ParameterRecord &record) const;
+
+      /// One run: road @p road_name at @p speed_kmh, from the static contact
+      /// (compliance @p G0), with its outputs; returns its spectrum.
+      analysis::RunSpectrum
+      roll(const modal::PatchModel &model, const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
+           const analysis::PatchLattice &lattice, const road::Texture &texture,
+           const road::PatchRoad &patch_road, const std::string &road_name, double speed_kmh,
+           const std::filesystem::path &directory, const base::ParameterRecord &record) const;
+
       dealii::ParameterHandler          &prm;
       GlobalParameters                   global;
       geometry::GeometryParameters       geometry;

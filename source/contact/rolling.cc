@@ -1,0 +1,106 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/base/output.h>
+#include <greentread/contact/rolling.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace greentread
+{
+  namespace contact
+  {
+    std::string
+    to_string(const PatchConvolutionMethod method)
+    {
+      return method == PatchConvolutionMethod::direct ? "direct" : "modal-recursive";
+    }
+
+
+
+    PatchConvolutionMethod
+    parse_patch_convolution(const std::string &name, const std::string &parameter)
+    {
+      for (const auto m : {PatchConvolutionMethod::direct, PatchConvolutionMethod::modal_recursive})
+        if (name == to_string(m))
+          return m;
+      throw InputError("parameter '" + parameter + "' = " + name +
+                       " is not allowed; allowed: direct, modal-recursive");
+    }
+
+
+
+    Eigen::VectorXd
+    tread_heights(const std::vector<std::array<double, 3>> &points)
+    {
+      Eigen::VectorXd t(points.size());
+      for (std::size_t p = 0; p < points.size(); ++p)
+        {
+          const double r = points[p][2], x = points[p][0];
+          t[p]           = r - std::sqrt(r * r - x * x);
+        }
+      return t;
+    }
+
+
+
+    StaticContact
+    start_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
+                  const PatchRoadHeights &road, const RollingSetup &setup)
+    {
+      Eigen::VectorXd z(tread.size()), slope(tread.size());
+      road(0., z, slope);
+      return solve_static_contact(G0, z - tread, setup.static_load, setup.indentation);
+    }
+
+
+
+    std::unique_ptr<PatchConvolution>
+    make_patch_convolution(const PatchConvolutionMethod method, const modal::PatchModel &model,
+                           const double dt, const unsigned int n_steps,
+                           const unsigned int direct_kernel, const unsigned int threads)
+    {
+      if (method == PatchConvolutionMethod::modal_recursive)
+        return make_modal_patch_convolution(model, dt, threads);
+      const unsigned int n_p      = model.n_points();
+      const unsigned int n_kernel =
+        direct_kernel > 0 ? std::min(direct_kernel, n_steps + 1) : n_steps + 1;
+      const double bytes = 8. * 8. * n_p * n_p * n_kernel;
+      if (bytes > 8e9)
+        throw InputError("'Rolling/Convolution' = direct would store " + format_short(bytes / 1e9) +
+                         " GB of kernels; shorten 'Rolling/Distance' or set "
+                         "'Rolling/Direct kernel length' (at most " +
+                         std::to_string(static_cast<unsigned int>(8e9 / (64. * n_p * n_p))) +
+                         " steps)");
+      return make_direct_patch_convolution(model, dt, n_kernel);
+    }
+
+
+
+    RollingSummary
+    roll_patch(const modal::PatchModel &model, const Eigen::VectorXd &tread,
+               const PatchRoadHeights &road, const StaticContact &start,
+               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
+    {
+      const auto conv = make_patch_convolution(setup.convolution, model, setup.time_step,
+                                               setup.n_steps, setup.direct_kernel, setup.threads);
+      return roll_patch(*conv, tread, road, start, setup, observe);
+    }
+
+
+
+    RollingSummary
+    roll_patch(PatchConvolution &convolution, const Eigen::VectorXd &tread,
+               const PatchRoadHeights &road, const StaticContact &start,
+               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
+    {
+      Eigen::VectorXd z(tread.size()), slope(tread.size());
+      const auto      demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
+        road(setup.speed * t, z, slope);
+        d  = (start.delta + z.array() - tread.array()).matrix();
+        dd = setup.speed * slope;
+      };
+      return roll(convolution, demand, setup.n_steps,
+                  setup.static_start ? start.q : Eigen::VectorXd(), observe);
+    }
+  } // namespace contact
+} // namespace greentread
