@@ -1,0 +1,328 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/exponential_integrals.h>
+
+#include <deal.II/base/thread_management.h>
+
+#include <cmath>
+#include <utility>
+
+namespace greentread
+{
+  namespace contact
+  {
+    namespace
+    {
+      /// Per-pole quantities shared by both convolutions.
+      struct PoleWeights
+      {
+        // Per term k: e^{lambda dt} and the weights of the start and end
+        // values of a linear load (greentread/convolution/
+        // modal_recursive_convolution.h).
+        std::vector<std::complex<double>> alpha, beta_a, beta_b;
+        // Per term k: c_u = s R, c_v = s R lambda, s = 2 for pairs, 1 for real poles.
+        std::vector<Eigen::MatrixXcd> cu, cv;
+        // The instantaneous compliance (may be empty) and the step.
+        Eigen::MatrixXd instantaneous;
+        double          dt;
+
+        PoleWeights(const modal::PatchModel &model, const double dt_)
+          : instantaneous(model.instantaneous)
+          , dt(dt_)
+        {
+          if (!(dt > 0.) || !std::isfinite(dt))
+            throw InputError("patch convolution: time step " + format_short(dt) +
+                             " s is not allowed; allowed: a finite number > 0");
+          for (unsigned int k = 0; k < model.n_terms(); ++k)
+            {
+              const std::complex<double> l = model.lambda[k];
+              if (!(l.real() < 0.))
+                throw NumericalError("patch convolution: pole " + std::to_string(k) +
+                                     " has Re(lambda) = " + format_short(l.real()) +
+                                     " >= 0; only stable poles can be convolved");
+              const auto psi = convolution::exponential_moments(l * dt);
+              alpha.push_back(std::exp(l * dt));
+              beta_a.push_back(dt * psi[1]);
+              beta_b.push_back(dt * (psi[0] - psi[1]));
+              const double scale = model.real[k] ? 1. : 2.;
+              Eigen::MatrixXcd r = scale * model.residues[k];
+              if (model.real[k])
+                r = r.real().cast<std::complex<double>>();
+              cu.push_back(r);
+              cv.push_back(r * l);
+            }
+        }
+
+        /// Re sum_k c_k z_k for per-term coefficients z.
+        static Eigen::MatrixXd
+        contract(const std::vector<Eigen::MatrixXcd>        &c,
+                 const std::vector<std::complex<double>> &z)
+        {
+          Eigen::MatrixXd result = Eigen::MatrixXd::Zero(c[0].rows(), c[0].cols());
+          for (std::size_t k = 0; k < c.size(); ++k)
+            result += (c[k].real() * z[k].real() - c[k].imag() * z[k].imag());
+          return result;
+        }
+
+        PatchInfluence
+        influence() const
+        {
+          const std::vector<std::complex<double>> ones(alpha.size(), 1.);
+          PatchInfluence                          psi;
+          const Eigen::MatrixXd                   g0 = contract(cu, ones);
+          psi.u = {{contract(cu, alpha), contract(cu, beta_a), contract(cu, beta_b), g0}};
+          psi.v = {{contract(cv, alpha), contract(cv, beta_a), contract(cv, beta_b) + g0,
+                    contract(cv, ones)}};
+          if (instantaneous.size() && instantaneous.cwiseAbs().maxCoeff() > 0.)
+            {
+              // u = G_r q(t): the end value acts at once; the slope of the
+              // linear load, (end - start) / dt, gives G_r q'.
+              psi.u[2] += instantaneous;
+              psi.v[1] -= instantaneous / dt;
+              psi.v[2] += instantaneous / dt;
+              psi.instantaneous = true;
+            }
+          return psi;
+        }
+      };
+
+
+
+      class ModalPatchConvolution : public PatchConvolution
+      {
+      public:
+        ModalPatchConvolution(const modal::PatchModel &model, const double dt,
+                              const unsigned int n_threads)
+          : PatchConvolution(model.n_points(), dt)
+          , n_terms(model.n_terms())
+          , threads(n_threads)
+        {
+          const PoleWeights w(model, dt);
+          psi                   = w.influence();
+          const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
+          Au.resize(n_p, 2 * nk);
+          Av.resize(n_p, 2 * nk);
+          for (unsigned int k = 0; k < n_terms; ++k)
+            {
+              Au.middleCols(Eigen::Index(k) * n_p, n_p)      = w.cu[k].real();
+              Au.middleCols(nk + Eigen::Index(k) * n_p, n_p) = -w.cu[k].imag();
+              Av.middleCols(Eigen::Index(k) * n_p, n_p)      = w.cv[k].real();
+              Av.middleCols(nk + Eigen::Index(k) * n_p, n_p) = -w.cv[k].imag();
+            }
+          lambda.resize(n_terms);
+          alpha.resize(n_terms);
+          beta_a.resize(n_terms);
+          beta_b.resize(n_terms);
+          for (unsigned int k = 0; k < n_terms; ++k)
+            {
+              lambda[k] = model.lambda[k];
+              alpha[k]  = w.alpha[k];
+              beta_a[k] = w.beta_a[k];
+              beta_b[k] = w.beta_b[k];
+            }
+          state = Eigen::VectorXd::Zero(2 * nk);
+          hist  = Eigen::VectorXd::Zero(2 * nk);
+        }
+
+        void
+        history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
+        {
+          const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
+          for (unsigned int k = 0; k < n_terms; ++k)
+            {
+              const double ar = alpha[k].real(), ai = alpha[k].imag();
+              auto         sr = state.segment(Eigen::Index(k) * n_p, n_p);
+              auto         si = state.segment(nk + Eigen::Index(k) * n_p, n_p);
+              hist.segment(Eigen::Index(k) * n_p, n_p)      = ar * sr - ai * si;
+              hist.segment(nk + Eigen::Index(k) * n_p, n_p) = ar * si + ai * sr;
+            }
+          if (threads > 1)
+            {
+              auto task = dealii::Threads::new_task([&]() { u.noalias() = Au * hist; });
+              v.noalias() = Av * hist;
+              task.join();
+            }
+          else
+            {
+              u.noalias() = Au * hist;
+              v.noalias() = Av * hist;
+            }
+          history_ready = true;
+        }
+
+        void
+        advance(const PatchLoad &load) override
+        {
+          if (!history_ready)
+            {
+              Eigen::VectorXd u(n_p), v(n_p);
+              history(u, v);
+            }
+          const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
+          const auto &p = load.component[0], &a = load.component[1], &b = load.component[2],
+                     &e = load.component[3];
+          for (unsigned int k = 0; k < n_terms; ++k)
+            {
+              state.segment(Eigen::Index(k) * n_p, n_p) =
+                hist.segment(Eigen::Index(k) * n_p, n_p) + beta_a[k].real() * a +
+                beta_b[k].real() * b + alpha[k].real() * p + e;
+              state.segment(nk + Eigen::Index(k) * n_p, n_p) =
+                hist.segment(nk + Eigen::Index(k) * n_p, n_p) + beta_a[k].imag() * a +
+                beta_b[k].imag() * b + alpha[k].imag() * p;
+            }
+          history_ready = false;
+        }
+
+        void
+        preload(const Eigen::VectorXd &q0) override
+        {
+          // s_k = int_{-inf}^0 e^{-lambda tau} q0 dtau = -q0 / lambda_k.
+          const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
+          for (unsigned int k = 0; k < n_terms; ++k)
+            {
+              const std::complex<double> f = -1. / lambda[k];
+              state.segment(Eigen::Index(k) * n_p, n_p)      = f.real() * q0;
+              state.segment(nk + Eigen::Index(k) * n_p, n_p) = f.imag() * q0;
+            }
+          history_ready = false;
+        }
+
+        std::string
+        name() const override
+        {
+          return "modal-recursive";
+        }
+
+      private:
+        unsigned int                      n_terms;
+        unsigned int                      threads;
+        Eigen::MatrixXd                   Au, Av;
+        std::vector<std::complex<double>> lambda, alpha, beta_a, beta_b;
+        Eigen::VectorXd                   state, hist;
+        bool                              history_ready = false;
+      };
+
+
+
+      class DirectPatchConvolution : public PatchConvolution
+      {
+      public:
+        DirectPatchConvolution(const modal::PatchModel &model, const double dt,
+                               const unsigned int n_kernel_)
+          : PatchConvolution(model.n_points(), dt)
+          , n_kernel(std::max(2u, n_kernel_))
+          , preload_model(model, dt, 1)
+        {
+          const PoleWeights w(model, dt);
+          psi = w.influence();
+          // Lag m >= 1: the loads of step n - m seen at t_{n+1} are those of
+          // the current step's influence, decayed over m steps:
+          // W_m = Re sum_k c_k e^{lambda_k m dt} w_k, w = (alpha, beta_a, beta_b, 1).
+          // All lags at once as one product: rows (lag, generator), columns
+          // (i, j), inner dimension the real and imaginary part of each pole.
+          const unsigned int n_terms = model.n_terms();
+          const Eigen::Index n_lags  = n_kernel - 1;
+          Eigen::MatrixXd    Z(n_lags * 4, 2 * n_terms);
+          for (Eigen::Index m = 0; m < n_lags; ++m)
+            for (unsigned int k = 0; k < n_terms; ++k)
+              {
+                const std::complex<double> decay = std::exp(model.lambda[k] * double(m + 1) * dt);
+                const std::complex<double> gen[4] = {w.alpha[k], w.beta_a[k], w.beta_b[k], 1.};
+                for (unsigned int g = 0; g < 4; ++g)
+                  {
+                    const std::complex<double> z = decay * gen[g];
+                    Z(4 * m + g, k)              = z.real();
+                    Z(4 * m + g, n_terms + k)    = -z.imag();
+                  }
+              }
+          for (const auto *c : {&w.cu, &w.cv})
+            {
+              Eigen::MatrixXd C(2 * n_terms, Eigen::Index(n_p) * n_p);
+              for (unsigned int k = 0; k < n_terms; ++k)
+                {
+                  // Column index i + n_p * j: a column-major n_p x n_p block.
+                  C.row(k)           = Eigen::Map<const Eigen::MatrixXd>(
+                                         Eigen::MatrixXd((*c)[k].real()).data(), 1,
+                                         Eigen::Index(n_p) * n_p);
+                  C.row(n_terms + k) = Eigen::Map<const Eigen::MatrixXd>(
+                                         Eigen::MatrixXd((*c)[k].imag()).data(), 1,
+                                         Eigen::Index(n_p) * n_p);
+                }
+              const Eigen::MatrixXd W = Z * C;
+              // Store per lag one n_p x 4 n_p block [W_g0 W_g1 W_g2 W_g3].
+              auto &target = (c == &w.cu) ? Wu : Wv;
+              target.assign(n_lags, Eigen::MatrixXd(n_p, 4 * n_p));
+              for (Eigen::Index m = 0; m < n_lags; ++m)
+                for (unsigned int g = 0; g < 4; ++g)
+                  target[m].middleCols(g * n_p, n_p) =
+                    Eigen::Map<const Eigen::MatrixXd>(W.row(4 * m + g).eval().data(), n_p, n_p);
+            }
+          past.assign(n_lags, Eigen::VectorXd::Zero(4 * n_p));
+        }
+
+        void
+        history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
+        {
+          preload_model.history(u, v);
+          const std::size_t n_lags = std::min<std::size_t>(n_recorded, past.size());
+          for (std::size_t m = 0; m < n_lags; ++m)
+            {
+              // past[(head - 1 - m) mod size] is the step m + 1 steps back.
+              const std::size_t slot = (head + past.size() - 1 - m) % past.size();
+              u.noalias() += Wu[m] * past[slot];
+              v.noalias() += Wv[m] * past[slot];
+            }
+        }
+
+        void
+        advance(const PatchLoad &load) override
+        {
+          Eigen::VectorXd &slot = past[head];
+          for (unsigned int g = 0; g < 4; ++g)
+            slot.segment(g * n_p, n_p) = load.component[g];
+          head = (head + 1) % past.size();
+          ++n_recorded;
+          // The preload decays freely.
+          preload_model.advance(PatchLoad(n_p));
+        }
+
+        void
+        preload(const Eigen::VectorXd &q0) override
+        {
+          preload_model.preload(q0);
+        }
+
+        std::string
+        name() const override
+        {
+          return "direct";
+        }
+
+      private:
+        unsigned int                 n_kernel;
+        ModalPatchConvolution        preload_model;
+        std::vector<Eigen::MatrixXd> Wu, Wv;
+        std::vector<Eigen::VectorXd> past;
+        std::size_t                  head = 0, n_recorded = 0;
+      };
+    } // namespace
+
+
+
+    std::unique_ptr<PatchConvolution>
+    make_modal_patch_convolution(const modal::PatchModel &model, const double dt,
+                                 const unsigned int n_threads)
+    {
+      return std::make_unique<ModalPatchConvolution>(model, dt, n_threads);
+    }
+
+
+
+    std::unique_ptr<PatchConvolution>
+    make_direct_patch_convolution(const modal::PatchModel &model, const double dt,
+                                  const unsigned int n_kernel)
+    {
+      return std::make_unique<DirectPatchConvolution>(model, dt, n_kernel);
+    }
+  } // namespace contact
+} // namespace greentread
