@@ -200,9 +200,7 @@ namespace greentread
           directory_name = base::prepare_output_directory(global.output_directory).string();
       });
       const fs::path directory = dealii::Utilities::MPI::broadcast(comm, directory_name, 0);
-      const auto     record    = base::ParameterRecord::from(
-               prm, global.scene,
-               {"Scene", "Output directory", "Geometry", "Materials", "Inflation", "Green's functions"});
+      const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
 
       // Every rank builds the tyre; a rank that fails (a file it cannot
       // read) must not leave the others waiting in the frequency loop.

@@ -75,7 +75,7 @@ namespace greentread
 
       const fs::path directory = base::prepare_output_directory(global.output_directory);
       const auto     record =
-        base::ParameterRecord::from(prm, "identify", {"Scene", "Output directory", "Identification"});
+        base::ParameterRecord::from(prm, "identify", recorded_sections("identify"));
 
       std::cout << "GreenTread: scene 'identify', LSCE modal identification (Appendix A) of "
                 << pairs.size() << " FRF" << (pairs.size() > 1 ? "s" : "") << " from "

@@ -221,10 +221,7 @@ namespace greentread
       namespace fs     = std::filesystem;
       const auto start = std::chrono::steady_clock::now();
       const fs::path directory = base::prepare_output_directory(global.output_directory);
-      const auto     record    = base::ParameterRecord::from(
-        prm, global.scene,
-        {"Scene", "Output directory", "Geometry", "Materials", "Inflation", "Green's functions",
-         "Identification", "Patch model", "Road texture", "Rolling"});
+      const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
       std::cout << "GreenTread: scene 'tire-road-contact', dynamic contact of the rolling tyre "
                    "on road textures (Meftah et al. 2013, Section 5)\n";
 

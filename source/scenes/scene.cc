@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
@@ -13,6 +14,8 @@
 #include <greentread/scenes/sdof_scene.h>
 #include <greentread/scenes/tyre_cell_scene.h>
 #include <greentread/sdof/oscillator.h>
+
+#include <algorithm>
 
 namespace greentread
 {
@@ -79,11 +82,64 @@ namespace greentread
 
 
 
+    std::vector<std::string>
+    subsections_read(const std::string &scene)
+    {
+      if (scene == "sdof")
+        return {"Oscillator", "Road", "Contact", "Time stepping", "Convolution", "Identification"};
+      if (scene == "identify")
+        return {"Identification"};
+      if (scene == "geometry-study" || scene == "tire-cell")
+        return {"Geometry", "Materials", "Inflation"};
+      if (scene == "tire-green")
+        return {"Geometry", "Materials", "Inflation", "Green's functions"};
+      return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
+              "Identification", "Patch model", "Road texture", "Rolling"};
+    }
+
+
+
+    std::vector<std::string>
+    recorded_sections(const std::string &scene)
+    {
+      std::vector<std::string> sections = {"Scene", "Output directory"};
+      for (const auto &s : subsections_read(scene))
+        sections.push_back(s);
+      return sections;
+    }
+
+
+
+    void
+    check_subsections(const dealii::ParameterHandler &prm, const std::string &scene)
+    {
+      const auto read = subsections_read(scene);
+      for (const auto &entry : base::list_parameters(prm))
+        {
+          const auto slash = entry.path.find('/');
+          if (slash == std::string::npos || entry.value == entry.default_value)
+            continue;
+          const std::string section = entry.path.substr(0, slash);
+          if (std::find(read.begin(), read.end(), section) != read.end())
+            continue;
+          std::string list;
+          for (const auto &r : read)
+            list += (list.empty() ? "" : ", ") + r;
+          throw InputError("parameter '" + entry.path + "' = " + entry.value +
+                           " is set, but scene '" + scene + "' does not read subsection '" +
+                           section + "'; allowed: the subsections scene '" + scene +
+                           "' reads: " + list);
+        }
+    }
+
+
+
     std::unique_ptr<Scene>
     create_scene(dealii::ParameterHandler &prm)
     {
       GlobalParameters global;
       global.parse_parameters(prm);
+      check_subsections(prm, global.scene);
       // Only the Green's functions are spread over MPI ranks.
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       if (n_ranks > 1 && global.scene != "tire-green")

@@ -64,8 +64,7 @@ namespace greentread
       const double mesh_time = clock.lap();
 
       const fs::path directory = base::prepare_output_directory(global.output_directory);
-      const auto     record    = base::ParameterRecord::from(
-        prm, global.scene, {"Scene", "Output directory", "Geometry", "Materials", "Inflation"});
+      const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
 
       fe::ElasticModel model(cell->cell(), materials.materials());
       model.assemble();

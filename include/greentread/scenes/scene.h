@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 /**
  * @file
@@ -58,5 +59,26 @@ namespace greentread
      */
     std::unique_ptr<Scene>
     create_scene(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief The subsections scene @p scene reads, in the order of its
+     * stages (the top-level entries aside).
+     */
+    std::vector<std::string>
+    subsections_read(const std::string &scene);
+
+    /// What a scene records with its outputs: "Scene", "Output directory"
+    /// and subsections_read().
+    std::vector<std::string>
+    recorded_sections(const std::string &scene);
+
+    /**
+     * @brief Refuse a value set in a subsection that @p scene does not read:
+     * it would be silently ignored.
+     * @throws InputError naming the parameter, the scene and the subsections
+     * it reads.
+     */
+    void
+    check_subsections(const dealii::ParameterHandler &prm, const std::string &scene);
   } // namespace scenes
 } // namespace greentread
