@@ -3,7 +3,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
-#include <greentread/base/plot.h>
 #include <greentread/base/progress.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
@@ -11,16 +10,12 @@
 #include <greentread/scenes/road_scene.h>
 
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <filesystem>
-#include <functional>
 #include <iostream>
-#include <sstream>
 
 namespace greentread
 {
