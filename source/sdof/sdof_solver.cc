@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/progress.h>
+#include <greentread/contact/contact_law.h>
 #include <greentread/convolution/direct_convolution.h>
 #include <greentread/convolution/modal_paper_convolution.h>
 #include <greentread/convolution/modal_recursive_convolution.h>
@@ -82,10 +83,6 @@ namespace greentread
       const unsigned int n_steps = contact.n_steps();
       const double       weight  = oscillator.mass() * oscillator.gravity();
       const auto        &psi     = convolution.influence();
-      const std::unique_ptr<contact::KinematicContact> kinematic =
-        contact.law == contact::ContactLaw::kinematic ?
-          std::make_unique<contact::KinematicContact>(psi) :
-          nullptr;
       // No physical motion of this problem leaves the band of the road's
       // amplitude, the static deflection and the swing that the road's
       // fastest motion can launch (an elastic bounce at most doubles it); ten
@@ -119,23 +116,8 @@ namespace greentread
       run.v[0] = 0.;
       run.F[0] = 0.;
 
-      // The explicit penalty of Eq. (37) is stable up to omega_c dt of about
-      // 1.6 (measured, see README); say so before it matters. At 1 its
-      // results match those of much smaller steps.
-      if (contact.law == contact::ContactLaw::penalty)
-        {
-          const double omega_c_dt =
-            std::sqrt((oscillator.stiffness() + contact.contact_stiffness) / oscillator.mass()) * dt;
-          if (omega_c_dt > 1.25)
-            std::cerr << "warning: penalty contact: omega_c dt = sqrt((K + kc)/M) dt = "
-                      << format_short(omega_c_dt)
-                      << " > 1.25; the explicit penalty is stable only up to about 1.6 and "
-                         "its results degrade before that. A time step below "
-                      << format_short(dt / omega_c_dt) << " s keeps omega_c dt <= 1.\n";
-        }
-
+      const auto law = contact::create(contact, psi, oscillator.stiffness(), oscillator.mass());
       const StepLoad   gravity{0., -weight, -weight, 0.};
-      double           penalty_force = 0.; // force at t_n, penalty law
       base::Progress   progress("sdof time steps", n_steps);
       const auto       start = std::chrono::steady_clock::now();
 
@@ -146,28 +128,10 @@ namespace greentread
           double         ur, vr;
           road.height_and_velocity(t1, ur, vr);
 
-          StepLoad known = gravity;
-          StepLoad load;
-          if (contact.law == contact::ContactLaw::kinematic)
-            {
-              const Response known_response = psi.of(known);
-              const Response predicted{history.u + known_response.u, history.v + known_response.v};
-              contact::KinematicStep step;
-              if (predicted.u <= ur)
-                step = kinematic->solve(ur - predicted.u, vr - predicted.v);
-              load = step.load;
-              ++run.branch_count[static_cast<unsigned int>(step.branch)];
-            }
-          else
-            {
-              // Eq. (37): the force at t_{n+1} from the predicted penetration,
-              // linear in time from the force at t_n.
-              known.start += penalty_force;
-              const double predicted = history.u + psi.of(known).u;
-              const double force     = contact.contact_stiffness * std::max(ur - predicted, 0.);
-              load                   = StepLoad{0., penalty_force, force, 0.};
-              penalty_force          = force;
-            }
+          const contact::ContactStep step = law->step(history, gravity, ur, vr);
+          const StepLoad             load = step.load;
+          if (step.branch >= 0)
+            ++run.branch_count[static_cast<unsigned int>(step.branch)];
 
           StepLoad total = gravity;
           total += load;
@@ -190,16 +154,7 @@ namespace greentread
           if (!std::isfinite(state.u) || !std::isfinite(state.v) ||
               std::abs(state.u) > bound)
             {
-              std::string hint;
-              if (contact.law == contact::ContactLaw::penalty)
-                {
-                  const double omega_c = std::sqrt((oscillator.stiffness() + contact.contact_stiffness) /
-                                                   oscillator.mass());
-                  hint = " The penalty contact mode has omega_c dt = sqrt((K + kc)/M) dt = " +
-                         format_short(omega_c * dt) +
-                         "; the explicit penalty of Eq. (37) needs a smaller time step or a "
-                         "smaller 'Contact/Contact stiffness'.";
-                }
+              const std::string hint = law->divergence_hint(dt);
               throw NumericalError("the 1-DoF run diverged at t = " + format_short(t1) +
                                    " s (step " + std::to_string(n + 1) + "): |u| = " +
                                    format_short(std::abs(state.u)) + " m exceeds " +
