@@ -9,26 +9,6 @@ namespace greentread
 {
   namespace contact
   {
-    std::string
-    to_string(const PatchConvolutionMethod method)
-    {
-      return method == PatchConvolutionMethod::direct ? "direct" : "modal-recursive";
-    }
-
-
-
-    PatchConvolutionMethod
-    parse_patch_convolution(const std::string &name, const std::string &parameter)
-    {
-      for (const auto m : {PatchConvolutionMethod::direct, PatchConvolutionMethod::modal_recursive})
-        if (name == to_string(m))
-          return m;
-      throw InputError("parameter '" + parameter + "' = " + name +
-                       " is not allowed; allowed: direct, modal-recursive");
-    }
-
-
-
     Eigen::VectorXd
     tread_heights(const std::vector<std::array<double, 3>> &points)
     {
@@ -55,18 +35,21 @@ namespace greentread
 
 
     std::unique_ptr<PatchConvolution>
-    make_patch_convolution(const PatchConvolutionMethod method, const modal::PatchModel &model,
+    make_patch_convolution(const convolution::Method method, const modal::PatchModel &model,
                            const double dt, const unsigned int n_steps,
                            const unsigned int direct_kernel, const unsigned int threads)
     {
-      if (method == PatchConvolutionMethod::modal_recursive)
+      if (method == convolution::Method::modal_recursive)
         return make_modal_patch_convolution(model, dt, threads);
+      if (method != convolution::Method::direct)
+        throw InputError("parameter 'Convolution/Method' = " + convolution::to_string(method) +
+                         " is not allowed for a contact patch; allowed: direct, modal-recursive");
       const unsigned int n_p      = model.n_points();
       const unsigned int n_kernel =
         direct_kernel > 0 ? std::min(direct_kernel, n_steps + 1) : n_steps + 1;
       const double bytes = 8. * 8. * n_p * n_p * n_kernel;
       if (bytes > 8e9)
-        throw InputError("'Rolling/Convolution' = direct would store " + format_short(bytes / 1e9) +
+        throw InputError("'Convolution/Method' = direct would store " + format_short(bytes / 1e9) +
                          " GB of kernels; shorten 'Rolling/Distance' or set "
                          "'Rolling/Direct kernel length' (at most " +
                          std::to_string(static_cast<unsigned int>(8e9 / (64. * n_p * n_p))) +

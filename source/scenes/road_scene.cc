@@ -4,9 +4,10 @@
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/progress.h>
+#include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/scenes/green_scene.h>
+#include <greentread/periodic/green_stage.h>
 #include <greentread/scenes/road_scene.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -31,9 +32,6 @@ namespace greentread
                           "Rolling speeds V0 in km/h, a comma-separated list (1 to 400).");
         prm.declare_entry("Distance", "2", RangePattern::closed(0.01, 20., "m"),
                           "Distance rolled in each run (the paper: 2 m).");
-        prm.declare_entry("Time step", "auto", dealii::Patterns::Anything(),
-                          "'auto': the road's sampling interval divided by the speed (one road "
-                          "sample per step, as the paper); or a time step in s (1e-8 to 1e-3).");
         prm.declare_entry("Static load", "600", RangePattern::closed(0., 1e5, "N"),
                           "Static load carried by the patch; the indentation that carries it is "
                           "found on the road where the run starts and then held (the rim does "
@@ -45,13 +43,8 @@ namespace greentread
                           "Start each run from the static contact (the loads applied for ever, "
                           "the tyre at rest) so that no impact transient pollutes the spectra; "
                           "'false' starts from an unloaded tyre suddenly indented.");
-        prm.declare_entry("Convolution", "modal-recursive",
-                          dealii::Patterns::Selection("modal-recursive|direct"),
-                          "'modal-recursive': the exact modal recursion, O(N_m N_p^2) per step. "
-                          "'direct': the convolution sum over every past step with the same "
-                          "kernels (the reference; O(N_p^2 N_g) per step and memory).");
         prm.declare_entry("Direct kernel length", "0", dealii::Patterns::Integer(0),
-                          "Steps kept by 'direct' (0: the whole run).");
+                          "Steps kept by 'Convolution/Method' = direct (0: the whole run).");
         prm.declare_entry("Frames", "40", dealii::Patterns::Integer(1, 10000),
                           "Contact-stress maps written per run (VTU time series).");
         prm.declare_entry("Stress reference", "100", RangePattern::positive("Pa"),
@@ -75,26 +68,19 @@ namespace greentread
           throw InputError("parameter 'Rolling/Speeds' is empty; allowed: a list of speeds in "
                            "km/h from 1 to 400");
         distance             = prm.get_double("Distance");
-        const std::string ts = prm.get("Time step");
-        if (ts == "auto")
-          time_step = 0.;
-        else
-          {
-            char  *end = nullptr;
-            time_step  = std::strtod(ts.c_str(), &end);
-            if (end == ts.c_str() || *end != '\0' || !(time_step >= 1e-8 && time_step <= 1e-3))
-              throw InputError("parameter 'Rolling/Time step' = '" + ts +
-                               "' is not allowed; allowed: 'auto' or a number from 1e-8 to "
-                               "1e-3 (s)");
-          }
         static_load      = prm.get_double("Static load");
         indentation      = prm.get_double("Indentation");
         static_start     = prm.get_bool("Start from static equilibrium");
-        convolution      = contact::parse_patch_convolution(prm.get("Convolution"), "Rolling/Convolution");
         direct_kernel    = prm.get_integer("Direct kernel length");
         frames           = prm.get_integer("Frames");
         stress_reference = prm.get_double("Stress reference");
       }
+      prm.leave_subsection();
+      time_step = contact::read_time_step(prm);
+      prm.enter_subsection("Convolution");
+      convolution = convolution::parse_method(
+        prm.get("Method"), {convolution::Method::direct, convolution::Method::modal_recursive},
+        "in scene tire-road-contact (the paper's modal form overflows over a rolling run)");
       prm.leave_subsection();
     }
 
@@ -105,7 +91,7 @@ namespace greentread
       /**
        * The highest band of a run's spectrum: 5 kHz, or the highest band
        * below the Nyquist frequency 1 / (2 dt) of a coarser time step.
-       * @throws InputError naming 'Rolling/Time step' if not even the 100 Hz
+       * @throws InputError naming 'Time stepping/Time step' if not even the 100 Hz
        * band fits.
        */
       double
@@ -116,7 +102,7 @@ namespace greentread
           if (band.upper <= 0.5 / dt)
             top = band.nominal;
         if (top == 0.)
-          throw InputError("parameter 'Rolling/Time step' = " + format_short(dt) +
+          throw InputError("parameter 'Time stepping/Time step' = " + format_short(dt) +
                            " s: the spectra need frequencies up to at least 112 Hz (the 100 Hz "
                            "band); allowed: a time step <= " +
                            format_short(0.5 / analysis::third_octave_bands(100., 100.)[0].upper) +
@@ -221,7 +207,7 @@ namespace greentread
                    "on road textures (Meftah et al. 2013, Section 5)\n";
 
       // Stages 1-3: geometry, fe, periodic: the Green's functions (saved).
-      const std::string                    green_key = green_stage_key(prm, geometry.geo_file);
+      const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
       const fs::path                       h5        = directory / "green_functions.h5";
       const modal::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
       const unsigned int                   n_p       = G.n_points();
@@ -292,9 +278,9 @@ namespace greentread
                     << green.patch.points_along * green.patch.points_across << " points, 0 to "
                     << format_number(green.max_frequency) << " Hz (" << green.n_lines()
                     << " lines)\n";
-          const InflatedTyre tyre(geometry, materials, inflation, green.patch);
+          const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch);
           std::cout << "  " << tyre.patch.describe(green.patch) << '\n';
-          const auto result = run_green_stage(tyre, green, key, h5, record, false,
+          const auto result = periodic::run_green_stage(tyre, green, key, h5, record, false,
                                               global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;
           std::cout << "  every solve checked: largest backward error "
@@ -330,7 +316,7 @@ namespace greentread
       const std::string run = analysis::road_label(road_name) + "_" + analysis::speed_label(speed_kmh);
       std::cout << "  run " << run << ": V0 = " << format_number(speed_kmh)
                 << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, "
-                << n_steps << " steps, " << contact::to_string(rolling.convolution) << '\n';
+                << n_steps << " steps, " << convolution::to_string(rolling.convolution) << '\n';
       const auto t_run = std::chrono::steady_clock::now();
       const unsigned int n_p = model.n_points();
 

@@ -94,7 +94,8 @@ namespace greentread
       if (scene == "tire-green")
         return {"Geometry", "Materials", "Inflation", "Green's functions"};
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
-              "Identification", "Patch model", "Road texture", "Rolling"};
+              "Identification", "Patch model", "Road texture", "Rolling",
+              "Time stepping/Time step", "Convolution/Method"};
     }
 
 
@@ -120,14 +121,20 @@ namespace greentread
           if (slash == std::string::npos || entry.value == entry.default_value)
             continue;
           const std::string section = entry.path.substr(0, slash);
-          if (std::find(read.begin(), read.end(), section) != read.end())
+          if (std::find(read.begin(), read.end(), section) != read.end() ||
+              std::find(read.begin(), read.end(), entry.path) != read.end())
             continue;
           std::string list;
+          bool        reads_part = false;
           for (const auto &r : read)
-            list += (list.empty() ? "" : ", ") + r;
+            {
+              list += (list.empty() ? "" : ", ") + r;
+              reads_part = reads_part || r.rfind(section + "/", 0) == 0;
+            }
           throw InputError("parameter '" + entry.path + "' = " + entry.value +
-                           " is set, but scene '" + scene + "' does not read subsection '" +
-                           section + "'; allowed: the subsections scene '" + scene +
+                           " is set, but scene '" + scene + "' does not read " +
+                           (reads_part ? "it" : "subsection '" + section + "'") +
+                           "; allowed: the subsections and entries scene '" + scene +
                            "' reads: " + list);
         }
     }

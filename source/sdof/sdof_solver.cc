@@ -1,11 +1,9 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/progress.h>
 #include <greentread/contact/contact_law.h>
-#include <greentread/convolution/direct_convolution.h>
-#include <greentread/convolution/modal_paper_convolution.h>
-#include <greentread/convolution/modal_recursive_convolution.h>
 #include <greentread/sdof/sdof_solver.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -21,37 +19,31 @@ namespace greentread
                      const unsigned int                        n_steps,
                      const convolution::ModalModel            *model)
     {
-      using namespace convolution;
-      switch (parameters.method)
-        {
-          case Method::direct:
-            {
-              std::function<double(double)> g, dg;
-              double                        rate;
-              if (model)
-                {
-                  g    = [model](double t) { return model->impulse_response(t); };
-                  dg   = [model](double t) { return model->impulse_response_derivative(t); };
-                  rate = model->max_modulus();
-                }
-              else
-                {
-                  g    = [&oscillator](double t) { return oscillator.green(t); };
-                  dg   = [&oscillator](double t) { return oscillator.green_derivative(t); };
-                  rate = oscillator.natural_frequency() * (oscillator.damping_ratio() + 1.);
-                }
-              const unsigned int n_g =
-                truncation_length(g, dt, parameters.truncation_threshold, n_steps);
-              return std::make_unique<DirectConvolution>(g, dg, dt, n_g, n_steps, rate);
-            }
-          case Method::modal_paper:
-            return std::make_unique<ModalPaperConvolution>(model ? *model : oscillator.modal_model(),
-                                                           dt);
-          case Method::modal_recursive:
-            return std::make_unique<ModalRecursiveConvolution>(
-              model ? *model : oscillator.modal_model(), dt);
-        }
-      return nullptr;
+      if (model)
+        return convolution::create(parameters, *model, dt, n_steps);
+      // The oscillator's own: its closed-form g(t) for the direct method.
+      const convolution::ImpulseResponse exact{
+        [&oscillator](double t) { return oscillator.green(t); },
+        [&oscillator](double t) { return oscillator.green_derivative(t); },
+        oscillator.natural_frequency() * (oscillator.damping_ratio() + 1.)};
+      return convolution::create(parameters, oscillator.modal_model(), dt, n_steps, &exact);
+    }
+
+
+
+    IdentifiedGreen
+    identify_green(const Oscillator                      &oscillator,
+                   const OscillatorParameters            &parameters,
+                   const modal::IdentificationParameters &identification)
+    {
+      auto frf = frequency_response(oscillator, parameters.frf_max_frequency,
+                                    parameters.frf_line_spacing);
+      auto       identified = modal::identify(frf, identification);
+      const auto exact      = oscillator.modal_model().terms()[0].lambda;
+      double     pole_error = INFINITY;
+      for (const auto &term : identified.model.terms())
+        pole_error = std::min(pole_error, std::abs(term.lambda - exact) / std::abs(exact));
+      return {std::move(frf), std::move(identified), pole_error};
     }
 
 
@@ -131,7 +123,10 @@ namespace greentread
           const contact::ContactStep step = law->step(history, gravity, ur, vr);
           const StepLoad             load = step.load;
           if (step.branch >= 0)
-            ++run.branch_count[static_cast<unsigned int>(step.branch)];
+            {
+              ++run.branch_count[static_cast<unsigned int>(step.branch)];
+              run.branches = true;
+            }
 
           StepLoad total = gravity;
           total += load;

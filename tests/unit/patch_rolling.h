@@ -70,8 +70,8 @@ namespace test
     setup.time_step   = run.time_step(texture);
     setup.n_steps     = static_cast<unsigned int>(run.distance / (setup.speed * setup.time_step));
     setup.static_load = run.load;
-    setup.convolution = run.direct ? contact::PatchConvolutionMethod::direct :
-                                     contact::PatchConvolutionMethod::modal_recursive;
+    setup.convolution = run.direct ? convolution::Method::direct :
+                                     convolution::Method::modal_recursive;
     const auto eq = contact::start_contact(model.static_compliance(), tread, heights, setup);
     if (start)
       *start = eq.q;

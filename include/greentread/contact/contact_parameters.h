@@ -16,7 +16,8 @@ namespace greentread
     };
 
     /**
-     * @brief Subsections "Contact" and "Time stepping".
+     * @brief Subsections "Contact" and "Time stepping" of the 1-DoF scene;
+     * its 'auto' time step is 1e-5 s, the finer step of Table A.2.
      */
     struct ContactParameters
     {
@@ -30,6 +31,10 @@ namespace greentread
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
+      /// The law as the screen shows it: "kinematic", "penalty (kc = 1e+07 N/m)".
+      std::string
+      describe() const;
+
       /// The number of steps, end time / time step rounded to nearest.
       unsigned int
       n_steps() const;
@@ -37,5 +42,14 @@ namespace greentread
 
     std::string
     to_string(ContactLaw law);
+
+    /**
+     * @brief 'Time stepping/Time step', which every scene with a time loop
+     * reads: 0 for 'auto' (the scene's own choice), else the step in s.
+     * @throws InputError naming the parameter unless it is 'auto' or a
+     * number from 1e-8 to 1e-2 s.
+     */
+    double
+    read_time_step(dealii::ParameterHandler &prm);
   } // namespace contact
 } // namespace greentread

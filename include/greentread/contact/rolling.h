@@ -1,6 +1,7 @@
 #pragma once
 
 #include <greentread/contact/patch_contact.h>
+#include <greentread/convolution/convolution_parameters.h>
 #include <greentread/modal/patch_model.h>
 
 #include <Eigen/Core>
@@ -23,21 +24,6 @@ namespace greentread
 {
   namespace contact
   {
-    /// The convolutions of a patch (greentread/contact/patch_contact.h).
-    enum class PatchConvolutionMethod
-    {
-      direct,         ///< the reference: the convolution sum over every past step
-      modal_recursive ///< one recursive state per pole and loaded point
-    };
-
-    /// The names of the .prm files: "direct", "modal-recursive".
-    std::string
-    to_string(PatchConvolutionMethod method);
-
-    /// @p name as a method; @throws InputError naming @p parameter otherwise.
-    PatchConvolutionMethod
-    parse_patch_convolution(const std::string &name, const std::string &parameter);
-
     /// Everything a rolling run needs besides the model and the road.
     struct RollingSetup
     {
@@ -49,7 +35,7 @@ namespace greentread
       double indentation = 0.; ///< [m], with static_load = 0
       /// Start from the static contact (forces held since t = -infinity) or from rest.
       bool                   static_start  = true;
-      PatchConvolutionMethod convolution   = PatchConvolutionMethod::modal_recursive;
+      convolution::Method    convolution   = convolution::Method::modal_recursive;
       unsigned int           direct_kernel = 0; ///< steps kept by `direct`; 0: the whole run
       unsigned int           threads       = 1; ///< of the modal recursion
     };
@@ -83,7 +69,7 @@ namespace greentread
      * naming the parameters that shorten it.
      */
     std::unique_ptr<PatchConvolution>
-    make_patch_convolution(PatchConvolutionMethod method, const modal::PatchModel &model,
+    make_patch_convolution(convolution::Method method, const modal::PatchModel &model,
                            double dt, unsigned int n_steps, unsigned int direct_kernel,
                            unsigned int threads);
 

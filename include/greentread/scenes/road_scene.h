@@ -26,16 +26,16 @@ namespace greentread
 {
   namespace scenes
   {
-    /// Subsection "Rolling".
+    /// Subsection "Rolling", with 'Time stepping/Time step' and 'Convolution/Method'.
     struct RollingParameters
     {
       std::vector<double> speeds = {50., 70., 90.}; // km/h
       double              distance = 2.;
-      double              time_step = 0.; // 0: the road sampling interval / V
+      double              time_step = 0.; // Time stepping/Time step; 0: the road sampling interval / V
       double              static_load = 600.;
       double              indentation = 0.;
       bool                static_start = true;
-      contact::PatchConvolutionMethod convolution = contact::PatchConvolutionMethod::modal_recursive;
+      convolution::Method convolution = convolution::Method::modal_recursive;
       unsigned int        direct_kernel = 0;
       unsigned int        frames = 40;
       double              stress_reference = 100.;

@@ -62,7 +62,8 @@ namespace greentread
 
     /**
      * @brief The subsections scene @p scene reads, in the order of its
-     * stages (the top-level entries aside).
+     * stages (the top-level entries aside), and the single entries
+     * ("Section/Name") it reads from subsections it shares with others.
      */
     std::vector<std::string>
     subsections_read(const std::string &scene);

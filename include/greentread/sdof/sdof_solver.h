@@ -5,6 +5,7 @@
 #include <greentread/convolution/convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/modal/frequency_response.h>
+#include <greentread/modal/identification.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/sdof/exact_solution.h>
 #include <greentread/sdof/oscillator.h>
@@ -43,6 +44,8 @@ namespace greentread
 
       /// Steps decided by each KinematicBranch (kinematic law).
       std::array<unsigned int, 5> branch_count{};
+      /// Whether the law decides each step by a branch (the kinematic law).
+      bool branches = false;
       /// Steps with a positive contact impulse.
       unsigned int contact_steps = 0;
 
@@ -69,8 +72,27 @@ namespace greentread
     };
 
     /**
+     * @brief The oscillator's Green's function identified by LSCE from its
+     * FRF (the round trip of the 1-DoF scene), with the relative error of
+     * the nearest identified pole to the exact one.
+     */
+    struct IdentifiedGreen
+    {
+      modal::FrequencyResponse frf;
+      modal::Identification    identification;
+      double                   pole_error = 0.;
+    };
+
+    IdentifiedGreen
+    identify_green(const Oscillator                      &oscillator,
+                   const OscillatorParameters            &parameters,
+                   const modal::IdentificationParameters &identification);
+
+    /**
      * @brief The convolution of the oscillator's Green's function by the
-     * chosen method, for a run of @p n_steps steps of @p dt.
+     * chosen method, for a run of @p n_steps steps of @p dt (through
+     * convolution::create(), with the oscillator's closed-form g(t) for the
+     * direct method).
      *
      * @param[in] model If given, a modal model used instead of the
      * oscillator's own (an identified one): the modal methods convolve with
