@@ -10,7 +10,7 @@
 #include <greentread/base/parameters.h>
 #include <greentread/config.h>
 #include <greentread/modal/patch_model_stage.h>
-#include <greentread/scenes/green_scene.h>
+#include <greentread/periodic/green_stage.h>
 #include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
 
@@ -68,7 +68,7 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
     scenes::declare_parameters(prm);
     for (const auto &o : overrides)
       base::apply_override(prm, o);
-    const std::string green = scenes::green_stage_key(prm, geo_file);
+    const std::string green = periodic::green_stage_key(prm, geo_file);
     return std::make_pair(green, modal::patch_model_stage_key(prm, green));
   };
   const auto reference = keys({}, geo);

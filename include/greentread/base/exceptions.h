@@ -95,4 +95,32 @@ namespace greentread
    */
   void
   throw_if_any_rank_failed(MPI_Comm comm, RankFailure failure, const std::string &message);
+
+  /**
+   * @brief Run @p work on every rank of @p comm; an InputError or
+   * NumericalError on any rank is thrown on all of them
+   * (throw_if_any_rank_failed()).
+   */
+  template <typename Work>
+  void
+  collectively(const MPI_Comm comm, Work &&work)
+  {
+    RankFailure failure = RankFailure::none;
+    std::string message;
+    try
+      {
+        work();
+      }
+    catch (const InputError &e)
+      {
+        failure = RankFailure::input;
+        message = e.what();
+      }
+    catch (const NumericalError &e)
+      {
+        failure = RankFailure::numerical;
+        message = e.what();
+      }
+    throw_if_any_rank_failed(comm, failure, message);
+  }
 } // namespace greentread
