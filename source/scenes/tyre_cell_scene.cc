@@ -1,21 +1,16 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
-#include <greentread/base/plot.h>
+#include <greentread/analysis/tyre_cell_output.h>
 #include <greentread/fe/abaqus_export.h>
-#include <greentread/fe/cylindrical.h>
 #include <greentread/fe/elastic_model.h>
 #include <greentread/fe/inflation.h>
 #include <greentread/scenes/tyre_cell_scene.h>
-
-#include <deal.II/base/data_out_base.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 namespace greentread
 {
@@ -83,112 +78,23 @@ namespace greentread
       const auto [growth, crown] = fe::tread_growth(model, u, geometry.outer_radius());
 
       // Outputs.
-      {
-        dealii::DataOut<2>    out;
-        dealii::Vector<float> material(cell->section().n_active_cells());
-        for (const auto &c : cell->section().active_cell_iterators())
-          material[c->active_cell_index()] = c->material_id();
-        out.attach_triangulation(cell->section());
-        out.add_data_vector(material, "material_id");
-        out.build_patches();
-        base::AtomicFile vtu(directory / "section.vtu");
-        out.write_vtu(vtu.stream());
-        vtu.commit();
-      }
-      model.write_vtu(u, directory / "inflated_cell.vtu");
-      {
-        base::AtomicFile pvd(directory / "inflated_cell.pvd");
-        dealii::DataOutBase::write_pvd_record(pvd.stream(), {{0., "inflated_cell.vtu"}});
-        pvd.commit();
-      }
-      const auto             all         = materials.materials();
-      const auto             fe_masses   = model.masses();
-      double                 total       = 0., total_exact = 0.;
-      std::ostringstream     mass_lines;
-      {
-        base::AtomicFile file(directory / "mass_report.csv");
-        auto            &out = file.stream();
-        out.precision(10);
-        // A layer with curved edges has no closed-form volume: its columns
-        // say "n/a" (so do the totals), never a NaN.
-        out << "layer,fe_mass,analytic_mass,relative_difference\n";
-        bool all_exact = true;
-        for (const auto &[id, mass] : fe_masses)
-          {
-            const auto   volume = cell->analytic_volume(id);
-            const double exact  = volume ? all.at(id).density * *volume : 0.;
-            const std::string &name = all.at(id).name;
-            out << name << ',' << mass << ',';
-            mass_lines << "  " << name << std::string(10 - name.size(), ' ') << format_printf("%.6e", mass)
-                       << " kg  ";
-            if (volume)
-              {
-                out << exact << ',' << mass / exact - 1. << '\n';
-                mass_lines << "Pappus " << format_printf("%.6e", exact) << " kg  relative difference "
-                           << format_printf("%.1e", 100. * (mass / exact - 1.)) << " %\n";
-              }
-            else
-              {
-                out << "n/a,n/a\n";
-                mass_lines << "Pappus n/a (the layer has curved edges)\n";
-              }
-            all_exact = all_exact && volume.has_value();
-            total += mass;
-            total_exact += exact;
-          }
-        out << "cell," << total << ',';
-        if (all_exact)
-          out << total_exact << ',' << total / total_exact - 1. << '\n';
-        else
-          out << "n/a,n/a\n";
-        out << "tyre," << total * cell->n_cells() << ',';
-        if (all_exact)
-          out << total_exact * cell->n_cells() << ',' << total / total_exact - 1. << '\n';
-        else
-          out << "n/a,n/a\n";
-        record.write_comments(out);
-        file.commit();
-      }
+      const std::string geo_name = fs::path(geometry.geo_file).filename().string();
+      const bool plotted = analysis::write_section(directory, *cell, geo_name, record);
+      analysis::write_inflated_cell(directory, model, u);
+      const auto masses =
+        analysis::write_mass_report(directory / "mass_report.csv", *cell, model, materials, record);
       if (full)
         fe::write_abaqus(directory / "tire_cell.inp", cell->cell(), model.mapping(), materials, record);
 
-      // The section, coloured by material.
-      std::ostringstream polygons;
-      const char        *colour[5] = {"", "#303030", "#1f77b4", "#ff7f0e", "#b0b0b0"};
-      const char        *name[5]   = {"", "tread", "belt", "sidewall", "bead"};
-      std::string        plot;
-      for (unsigned int id = 1; id <= 4; ++id)
-        {
-          polygons << "$M" << id << " << EOD\n";
-          for (const auto &c : cell->section().active_cell_iterators())
-            if (c->material_id() == id)
-              {
-                for (const unsigned int v : {0u, 1u, 3u, 2u, 0u})
-                  polygons << 1e3 * c->vertex(v)[1] << ' ' << 1e3 * c->vertex(v)[0] << '\n';
-                polygons << '\n';
-              }
-          polygons << "EOD\n";
-          plot += std::string(plot.empty() ? "plot " : ", ") + "$M" + std::to_string(id) +
-                  " with filledcurves closed fc rgb '" + colour[id] + "' fs solid 0.7 border "
-                  "lc rgb 'white' title '" + name[id] + "'";
-        }
-      const bool plotted = base::plot_png(
-        directory / "section.png",
-        polygons.str() + "set size ratio -1\nset xlabel 'axial z [mm]'\nset ylabel 'radius [mm]'\n"
-          "set key outside right\nset title noenhanced 'GreenTread tyre section: " +
-          fs::path(geometry.geo_file).filename().string() + ", " +
-          std::to_string(cell->section().n_active_cells()) + " quadrilaterals'\n" + plot + "\n",
-        record, 1000, 800);
-
       std::cout << "GreenTread: scene '" << global.scene << "', the tyre's periodic cell "
                 << "(Meftah et al. 2013, Section 4)\n"
-                << "  section: " << fs::path(geometry.geo_file).filename().string() << ", "
+                << "  section: " << geo_name << ", "
                 << cell->section().n_active_cells() << " quadrilaterals; cell: 2 pi / "
                 << cell->n_cells() << " = " << format_printf("%.4g", cell->angle() * 180. / M_PI)
                 << " degrees, " << cell->cell().n_active_cells() << " hexahedra, "
                 << model.dof_handler().n_dofs() << " DoFs (quadratic elements)\n"
                 << "Masses of the layers in the cell (quadrature against Pappus):\n"
-                << mass_lines.str() << "  whole tyre " << format_printf("%.4f", total * cell->n_cells())
+                << masses.lines << "  whole tyre " << format_printf("%.4f", masses.total * cell->n_cells())
                 << " kg\n"
                 << "Inflation at " << format_number(inflation.pressure)
                 << " Pa: radial growth of the tread " << format_printf("%.4g", 1e3 * growth) << " mm (crown "
