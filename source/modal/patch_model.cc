@@ -2,8 +2,6 @@
 #include <greentread/base/parameters.h>
 #include <greentread/modal/patch_model.h>
 
-#include <deal.II/base/hdf5.h>
-
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
@@ -121,43 +119,37 @@ namespace greentread
 
 
 
-    PatchModel
-    fit_patch_model(const FrequencyResponseMatrix  &green,
-                    const IdentificationParameters &identification,
-                    const PatchModelParameters     &parameters,
-                    const bool                      show_progress)
+    namespace
     {
-      const unsigned int n       = green.n_points();
-      const unsigned int n_lines = green.n_lines;
-      if (n == 0 || n_lines < 4)
-        throw InputError("patch model: the Green's functions have " + std::to_string(n) +
-                         " points and " + std::to_string(n_lines) +
-                         " lines; at least 1 point and 4 lines are needed");
-
-      // 1. The poles: LSCE on a few functions that see the modes from
-      // different places (the summed driving points, the total response to a
-      // uniform pressure, transfers from the centre point), merged.
-      const auto summed = [&](const auto &take) {
-        FrequencyResponse frf;
-        frf.df = green.df;
-        frf.values.assign(n_lines, 0.);
-        for (unsigned int k = 0; k < n_lines; ++k)
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              if (take(i, j))
-                frf.values[k] += green.values[(std::size_t(k) * n + i) * n + j];
-        return frf;
-      };
-      std::vector<FrequencyResponse> sources;
-      sources.push_back(summed([](unsigned int i, unsigned int j) {
-        return i == j;
-      }));
-      sources.push_back(summed([](unsigned int, unsigned int) {
-        return true;
-      }));
+      /**
+       * The functions LSCE finds the poles on, which see the modes from
+       * different places: the summed driving points, the total response to
+       * a uniform pressure, and @p n_references transfers from the point
+       * nearest the centre to points spread over the patch.
+       */
+      std::vector<FrequencyResponse>
+      reference_functions(const FrequencyResponseMatrix &green, const unsigned int n_references)
       {
-        // The point nearest the centre, and its transfers to points spread
-        // over the patch.
+        const unsigned int n       = green.n_points();
+        const unsigned int n_lines = green.n_lines;
+        const auto         summed  = [&](const auto &take) {
+          FrequencyResponse frf;
+          frf.df = green.df;
+          frf.values.assign(n_lines, 0.);
+          for (unsigned int k = 0; k < n_lines; ++k)
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                if (take(i, j))
+                  frf.values[k] += green.values[(std::size_t(k) * n + i) * n + j];
+          return frf;
+        };
+        std::vector<FrequencyResponse> sources;
+        sources.push_back(summed([](unsigned int i, unsigned int j) {
+          return i == j;
+        }));
+        sources.push_back(summed([](unsigned int, unsigned int) {
+          return true;
+        }));
         std::array<double, 3> centre{{0., 0., 0.}};
         for (const auto &p : green.points)
           for (unsigned int d = 0; d < 3; ++d)
@@ -171,369 +163,339 @@ namespace greentread
             if (d < best)
               best = d, c = i;
           }
-        const unsigned int n_transfers = std::min(parameters.reference_transfers, n - 1);
+        const unsigned int n_transfers = std::min(n_references, n - 1);
         for (unsigned int s = 1; s <= n_transfers; ++s)
           sources.push_back(green.get(c, (c + s * n / (n_transfers + 1)) % n));
+        return sources;
       }
 
-      PatchModel model;
-      model.points                        = green.points;
-      model.f_max                         = green.df * (n_lines - 1);
-      IdentificationParameters poles_only = identification;
-      poles_only.upper_residual           = true;
-      poles_only.compare_models           = false;
-      double worst_error                  = 0.;
-      for (const auto &frf : sources)
-        {
-          const Identification found = identify(frf, poles_only);
-          worst_error                = std::max(worst_error, found.error);
-          for (const auto &term : found.model.terms())
-            {
-              // A double pole (critical damping) is carried by one real pole.
-              const bool real = term.kind != convolution::ModalTerm::Kind::complex_pair;
-              const std::complex<double> l =
-                real ? std::complex<double>(term.lambda.real(), 0.) : term.lambda;
-              bool known = false;
-              for (unsigned int t = 0; t < model.lambda.size(); ++t)
-                if (model.real[t] == real &&
-                    std::abs(model.lambda[t] - l) < parameters.pole_merge_tolerance * std::abs(l))
-                  known = true;
-              if (!known)
-                {
-                  model.lambda.push_back(l);
-                  model.real.push_back(real);
-                }
-            }
-        }
-      model.identified_modes = model.lambda.size();
-      model.sum_error        = worst_error;
-      const bool instantaneous = parameters.instantaneous_residual;
-      if (instantaneous)
-        {
-          // Poles above the band imitate a constant below it: G_r carries
-          // what they would, so they are dropped.
-          for (unsigned int t = model.lambda.size(); t-- > 0;)
-            if (model.real[t] || std::abs(model.lambda[t].imag()) > 2. * M_PI * model.f_max)
-              {
-                model.lambda.erase(model.lambda.begin() + t);
-                model.real.erase(model.real.begin() + t);
-              }
-          model.identified_modes = model.lambda.size();
-        }
-      else if (parameters.residual_pole_factor > 0.)
-        {
-          model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max, 0.);
-          model.real.push_back(true);
-        }
-      if (model.lambda.empty())
-        throw NumericalError("patch model: the identification of the summed driving points "
-                             "found no stable pole; raise 'Identification/Maximum number of "
-                             "modes' or set 'Patch model/Residual pole factor' > 0");
 
-      // 2. Linear least squares, all pairs as right-hand sides. Rows: Re and
-      // Im of every line (the 0 Hz line weighted), and with an instantaneous
-      // residual one more, heavily weighted, for g_modal(0+) = sum of the
-      // real parts of the residues = 0. Columns: one per real pole, two per
-      // pair (Re and Im of R), and optionally one for the constant G_r.
-      const std::size_t n_pairs = std::size_t(n) * n;
-      Eigen::VectorXd   row_weight(n_lines);
-      for (unsigned int k = 0; k < n_lines; ++k)
-        row_weight[k] = (k == 0) ? parameters.static_weight : 1.;
-      Eigen::MatrixXd data(2 * n_lines, n_pairs);
-      for (unsigned int k = 0; k < n_lines; ++k)
-        for (std::size_t p = 0; p < n_pairs; ++p)
+
+      /**
+       * The poles of @p model: those LSCE finds on @p sources, merged when
+       * closer than the tolerance, then the residual term's choice: with an
+       * instantaneous residual, the poles above the band are dropped (G_r
+       * carries what they would imitate); otherwise a real residual pole is
+       * added. @return The worst E of the identifications.
+       */
+      double
+      find_poles(PatchModel                           &model,
+                 const std::vector<FrequencyResponse> &sources,
+                 const IdentificationParameters       &identification,
+                 const PatchModelParameters           &parameters)
+      {
+        IdentificationParameters poles_only = identification;
+        poles_only.upper_residual           = true;
+        poles_only.compare_models           = false;
+        double worst_error                  = 0.;
+        for (const auto &frf : sources)
           {
-            const std::complex<double> g = green.values[std::size_t(k) * n_pairs + p];
-            data(k, p)                   = g.real();
-            data(k + n_lines, p)         = g.imag();
+            const Identification found = identify(frf, poles_only);
+            worst_error                = std::max(worst_error, found.error);
+            for (const auto &term : found.model.terms())
+              {
+                // A double pole (critical damping) is carried by one real pole.
+                const bool real = term.kind != convolution::ModalTerm::Kind::complex_pair;
+                const std::complex<double> l =
+                  real ? std::complex<double>(term.lambda.real(), 0.) : term.lambda;
+                bool known = false;
+                for (unsigned int t = 0; t < model.lambda.size(); ++t)
+                  if (model.real[t] == real &&
+                      std::abs(model.lambda[t] - l) < parameters.pole_merge_tolerance * std::abs(l))
+                    known = true;
+                if (!known)
+                  {
+                    model.lambda.push_back(l);
+                    model.real.push_back(real);
+                  }
+              }
           }
+        model.identified_modes = model.lambda.size();
+        if (parameters.instantaneous_residual)
+          {
+            for (unsigned int t = model.lambda.size(); t-- > 0;)
+              if (model.real[t] || std::abs(model.lambda[t].imag()) > 2. * M_PI * model.f_max)
+                {
+                  model.lambda.erase(model.lambda.begin() + t);
+                  model.real.erase(model.real.begin() + t);
+                }
+            model.identified_modes = model.lambda.size();
+          }
+        else if (parameters.residual_pole_factor > 0.)
+          {
+            model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max, 0.);
+            model.real.push_back(true);
+          }
+        if (model.lambda.empty())
+          throw NumericalError("patch model: the identification of the summed driving points "
+                               "found no stable pole; raise 'Identification/Maximum number of "
+                               "modes' or set 'Patch model/Residual pole factor' > 0");
+        return worst_error;
+      }
 
-      std::vector<unsigned int> first_column;
-      unsigned int              n_modal_columns = 0;
-      for (unsigned int t = 0; t < model.n_terms(); ++t)
+
+
+      /**
+       * The linear least squares of the residues, all pairs as right-hand
+       * sides. Rows: Re and Im of every line (the 0 Hz line weighted).
+       * Columns: one per real pole, two per pair (Re and Im of R), and one
+       * for the constant G_r.
+       */
+      struct ResidueSystem
+      {
+        unsigned int              n, n_lines;
+        std::size_t               n_pairs;
+        Eigen::VectorXd           row_weight;
+        Eigen::MatrixXd           data, A;
+        std::vector<unsigned int> first_column;
+        unsigned int              n_modal_columns = 0;
+        /// The columns used: all with a real residual pole; with an
+        /// instantaneous one, only Im R of each pair (R = j b: a mode
+        /// 2 Re(j b e^{lambda t}) = -2 b e^{sigma t} sin(omega_d t), which
+        /// starts from rest) and the constant.
+        std::vector<Eigen::Index> used;
+
+        ResidueSystem(const FrequencyResponseMatrix &green,
+                      const PatchModel              &model,
+                      const PatchModelParameters    &parameters)
+          : n(green.n_points())
+          , n_lines(green.n_lines)
+          , n_pairs(std::size_t(n) * n)
+          , row_weight(n_lines)
+          , data(2 * n_lines, n_pairs)
         {
-          first_column.push_back(n_modal_columns);
-          n_modal_columns += model.real[t] ? 1 : 2;
-        }
-      Eigen::MatrixXd A(2 * n_lines, n_modal_columns + 1);
-      for (unsigned int k = 0; k < n_lines; ++k)
-        {
-          const std::complex<double> jw(0., 2. * M_PI * k * green.df);
+          for (unsigned int k = 0; k < n_lines; ++k)
+            row_weight[k] = (k == 0) ? parameters.static_weight : 1.;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            for (std::size_t p = 0; p < n_pairs; ++p)
+              {
+                const std::complex<double> g = green.values[std::size_t(k) * n_pairs + p];
+                data(k, p)                   = g.real();
+                data(k + n_lines, p)         = g.imag();
+              }
           for (unsigned int t = 0; t < model.n_terms(); ++t)
             {
-              const std::complex<double> l = model.lambda[t];
-              const unsigned int         c = first_column[t];
-              if (model.real[t])
-                {
-                  const std::complex<double> a = 1. / (jw - l.real());
-                  A(k, c)                      = a.real();
-                  A(k + n_lines, c)            = a.imag();
-                }
-              else
-                {
-                  const std::complex<double> I(0., 1.);
-                  const std::complex<double> a = 1. / (jw - l) + 1. / (jw - std::conj(l));
-                  const std::complex<double> b = I / (jw - l) - I / (jw - std::conj(l));
-                  A(k, c)                      = a.real();
-                  A(k + n_lines, c)            = a.imag();
-                  A(k, c + 1)                  = b.real();
-                  A(k + n_lines, c + 1)        = b.imag();
-                }
+              first_column.push_back(n_modal_columns);
+              n_modal_columns += model.real[t] ? 1 : 2;
             }
-          A(k, n_modal_columns)           = 1.;
-          A(k + n_lines, n_modal_columns) = 0.;
+          A.resize(2 * n_lines, n_modal_columns + 1);
+          for (unsigned int k = 0; k < n_lines; ++k)
+            {
+              const std::complex<double> jw(0., 2. * M_PI * k * green.df);
+              for (unsigned int t = 0; t < model.n_terms(); ++t)
+                {
+                  const std::complex<double> l = model.lambda[t];
+                  const unsigned int         c = first_column[t];
+                  if (model.real[t])
+                    {
+                      const std::complex<double> a = 1. / (jw - l.real());
+                      A(k, c)                      = a.real();
+                      A(k + n_lines, c)            = a.imag();
+                    }
+                  else
+                    {
+                      const std::complex<double> I(0., 1.);
+                      const std::complex<double> a = 1. / (jw - l) + 1. / (jw - std::conj(l));
+                      const std::complex<double> b = I / (jw - l) - I / (jw - std::conj(l));
+                      A(k, c)                      = a.real();
+                      A(k + n_lines, c)            = a.imag();
+                      A(k, c + 1)                  = b.real();
+                      A(k + n_lines, c + 1)        = b.imag();
+                    }
+                }
+              A(k, n_modal_columns)           = 1.;
+              A(k + n_lines, n_modal_columns) = 0.;
+            }
+          for (unsigned int t = 0; t < model.n_terms(); ++t)
+            {
+              if (!parameters.instantaneous_residual)
+                used.push_back(first_column[t]);
+              if (!model.real[t])
+                used.push_back(first_column[t] + 1);
+            }
         }
 
-      // The columns used: all with a real residual pole; with an
-      // instantaneous one, only Im R of each pair (R = j b: a mode
-      // 2 Re(j b e^{lambda t}) = -2 b e^{sigma t} sin(omega_d t), which starts
-      // from rest) and the constant.
-      std::vector<Eigen::Index> used;
-      for (unsigned int t = 0; t < model.n_terms(); ++t)
+        /// The used coefficients (and G_r if @p with_constant) fitting
+        /// @p rhs, in physical units, zero where unused.
+        Eigen::MatrixXd
+        solve(const bool with_constant, const Eigen::MatrixXd &rhs) const
         {
-          if (!instantaneous)
-            used.push_back(first_column[t]);
-          if (!model.real[t])
-            used.push_back(first_column[t] + 1);
+          std::vector<Eigen::Index> columns = used;
+          if (with_constant)
+            columns.push_back(n_modal_columns);
+          const Eigen::Index n_used = columns.size();
+          Eigen::MatrixXd    WA(A.rows(), n_used);
+          for (Eigen::Index c = 0; c < n_used; ++c)
+            WA.col(c) = A.col(columns[c]);
+          Eigen::MatrixXd WB = rhs;
+          for (unsigned int k = 0; k < n_lines; ++k)
+            {
+              WA.row(k) *= row_weight[k];
+              WA.row(k + n_lines) *= row_weight[k];
+              WB.row(k) *= row_weight[k];
+              WB.row(k + n_lines) *= row_weight[k];
+            }
+          Eigen::VectorXd scale(n_used);
+          for (Eigen::Index c = 0; c < n_used; ++c)
+            {
+              scale[c] = WA.col(c).norm();
+              WA.col(c) /= scale[c];
+            }
+          Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(WA);
+          qr.setThreshold(1e-12);
+          if (qr.rank() < n_used)
+            throw NumericalError(
+              "patch model: the residue least-squares problem is rank deficient (rank " +
+              std::to_string(qr.rank()) + " of " + std::to_string(n_used) +
+              " columns): two poles nearly coincide; lower 'Identification/Maximum number of "
+              "modes'");
+          const Eigen::MatrixXd Y = qr.solve(WB);
+          Eigen::MatrixXd       X = Eigen::MatrixXd::Zero(n_modal_columns + 1, rhs.cols());
+          for (Eigen::Index c = 0; c < n_used; ++c)
+            X.row(columns[c]) = Y.row(c) / scale[c];
+          return X;
         }
-
-      // Solve for the used coefficients (and G_r if @p with_constant)
-      // fitting @p rhs; returns all coefficients in physical units, zero
-      // where unused.
-      const auto solve = [&](const bool with_constant, const Eigen::MatrixXd &rhs) {
-        std::vector<Eigen::Index> columns = used;
-        if (with_constant)
-          columns.push_back(n_modal_columns);
-        const Eigen::Index n_used = columns.size();
-        Eigen::MatrixXd    WA(A.rows(), n_used);
-        for (Eigen::Index c = 0; c < n_used; ++c)
-          WA.col(c) = A.col(columns[c]);
-        Eigen::MatrixXd WB = rhs;
-        for (unsigned int k = 0; k < n_lines; ++k)
-          {
-            WA.row(k) *= row_weight[k];
-            WA.row(k + n_lines) *= row_weight[k];
-            WB.row(k) *= row_weight[k];
-            WB.row(k + n_lines) *= row_weight[k];
-          }
-        Eigen::VectorXd scale(n_used);
-        for (Eigen::Index c = 0; c < n_used; ++c)
-          {
-            scale[c] = WA.col(c).norm();
-            WA.col(c) /= scale[c];
-          }
-        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(WA);
-        qr.setThreshold(1e-12);
-        if (qr.rank() < n_used)
-          throw NumericalError(
-            "patch model: the residue least-squares problem is rank deficient (rank " +
-            std::to_string(qr.rank()) + " of " + std::to_string(n_used) +
-            " columns): two poles nearly coincide; lower 'Identification/Maximum number of "
-            "modes'");
-        const Eigen::MatrixXd Y = qr.solve(WB);
-        Eigen::MatrixXd       X = Eigen::MatrixXd::Zero(n_modal_columns + 1, rhs.cols());
-        for (Eigen::Index c = 0; c < n_used; ++c)
-          X.row(columns[c]) = Y.row(c) / scale[c];
-        return X;
       };
 
-      // The nearest positive semi-definite matrix to the symmetric part of
-      // @p a, with eigenvalues at least @p floor times the largest.
-      const auto positive_part = [](const Eigen::MatrixXd &a, const double floor) {
+
+
+      /// The nearest positive semi-definite matrix to the symmetric part of
+      /// @p a, with eigenvalues at least @p floor times the largest.
+      Eigen::MatrixXd
+      positive_part(const Eigen::MatrixXd &a, const double floor)
+      {
         const Eigen::MatrixXd                          sym = 0.5 * (a + a.transpose());
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sym);
         const double top = std::max(eig.eigenvalues().maxCoeff(), 0.);
         return Eigen::MatrixXd(eig.eigenvectors() *
                                eig.eigenvalues().cwiseMax(floor * top).asDiagonal() *
                                eig.eigenvectors().transpose());
-      };
+      }
 
-      Eigen::MatrixXd X;
-      if (instantaneous)
-        {
-          // Residues purely imaginary (R_k = j b_k, the phi phi^T /
-          // (2 j m omega_d) of a mode with proportional damping) and G_r
-          // symmetric positive definite. Measured on the default tyre, all
-          // at 600 N on a flat road from the static equilibrium:
-          // - complex residues fitted freely (E 1.5% median): the contact
-          //   of the patch, force = G^{-1} u, grows by 1.4 per step at
-          //   dt = 27.65 us, and at every dt from 10 us to 1 ms;
-          // - each b_k also projected onto the semi-definite cone: E above
-          //   100% (the free b_k are far from definite);
-          // - imaginary residues: E 6% median, 0.8% at worst on the driving
-          //   points, and the contact stays at equilibrium, and bounded
-          //   under a 2 kHz excitation, for dt from 10 us to 1 ms.
-          X = solve(true, data);
-          const auto to_matrix = [&](const Eigen::Index row) {
-            Eigen::MatrixXd m(n, n);
+
+
+      /**
+       * The coefficients with an instantaneous residual: residues purely
+       * imaginary (R_k = j b_k, the phi phi^T / (2 j m omega_d) of a mode
+       * with proportional damping) and G_r symmetric positive definite,
+       * stored in @p model.instantaneous and in the returned coefficients.
+       * Measured on the default tyre, all at 600 N on a flat road from the
+       * static equilibrium:
+       * - complex residues fitted freely (E 1.5% median): the contact of the
+       *   patch, force = G^{-1} u, grows by 1.4 per step at dt = 27.65 us,
+       *   and at every dt from 10 us to 1 ms;
+       * - each b_k also projected onto the semi-definite cone: E above 100%
+       *   (the free b_k are far from definite);
+       * - imaginary residues: E 6% median, 0.8% at worst on the driving
+       *   points, and the contact stays at equilibrium, and bounded under a
+       *   2 kHz excitation, for dt from 10 us to 1 ms.
+       */
+      Eigen::MatrixXd
+      fit_with_instantaneous(PatchModel &model, const ResidueSystem &system)
+      {
+        const unsigned int n   = system.n;
+        Eigen::MatrixXd    X   = system.solve(true, system.data);
+        const Eigen::Index row = system.n_modal_columns;
+        Eigen::MatrixXd    m(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            m(i, j) = X(row, std::size_t(i) * n + j);
+        model.instantaneous = positive_part(m, 1e-3);
+        if (!(model.instantaneous.trace() > 0.))
+          throw NumericalError("patch model: the fitted instantaneous compliance G_r has no "
+                               "positive eigenvalue: the Green's functions show no local "
+                               "compliance; use 'Patch model/Residual flexibility = real "
+                               "pole'");
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            X(row, std::size_t(i) * n + j) = model.instantaneous(i, j);
+        return X;
+      }
+
+
+
+      /// The residues of @p model from the coefficients @p X.
+      void
+      set_residues(PatchModel &model, const ResidueSystem &system, const Eigen::MatrixXd &X)
+      {
+        const unsigned int n = system.n;
+        model.residues.assign(model.n_terms(), Eigen::MatrixXcd::Zero(n, n));
+        for (unsigned int t = 0; t < model.n_terms(); ++t)
+          {
+            const unsigned int c = system.first_column[t];
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
-                m(i, j) = X(row, std::size_t(i) * n + j);
-            return m;
-          };
-          const auto from_matrix = [&](const Eigen::Index row, const Eigen::MatrixXd &m) {
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                X(row, std::size_t(i) * n + j) = m(i, j);
-          };
-          model.instantaneous = positive_part(to_matrix(n_modal_columns), 1e-3);
-          if (!(model.instantaneous.trace() > 0.))
-            throw NumericalError("patch model: the fitted instantaneous compliance G_r has no "
-                                 "positive eigenvalue: the Green's functions show no local "
-                                 "compliance; use 'Patch model/Residual flexibility = real "
-                                 "pole'");
-          from_matrix(n_modal_columns, model.instantaneous);
-        }
-      else
-        X = solve(false, data);
+                {
+                  const std::size_t p = std::size_t(i) * n + j;
+                  if (model.real[t])
+                    model.residues[t](i, j) = X(c, p);
+                  else
+                    model.residues[t](i, j) = {X(c, p), X(c + 1, p)};
+                }
+          }
+      }
 
-      model.residues.assign(model.n_terms(), Eigen::MatrixXcd::Zero(n, n));
-      for (unsigned int t = 0; t < model.n_terms(); ++t)
-        {
-          const unsigned int c = first_column[t];
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
+
+
+      /// E of Eq. (50) for every pair, with the trapezoidal weights of the
+      /// identification (half weight on the first and last line).
+      void
+      set_errors(PatchModel &model, const ResidueSystem &system, const Eigen::MatrixXd &X)
+      {
+        const unsigned int    n = system.n, n_lines = system.n_lines;
+        const Eigen::MatrixXd fitted = system.A * X;
+        model.errors.resize(n, n);
+        for (std::size_t p = 0; p < system.n_pairs; ++p)
+          {
+            double e = 0., norm = 0.;
+            for (unsigned int k = 0; k < n_lines; ++k)
               {
-                const std::size_t p = std::size_t(i) * n + j;
-                if (model.real[t])
-                  model.residues[t](i, j) = X(c, p);
-                else
-                  model.residues[t](i, j) = {X(c, p), X(c + 1, p)};
+                const double w  = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
+                const double gr = system.data(k, p), gi = system.data(k + n_lines, p);
+                e += w * std::hypot(gr - fitted(k, p), gi - fitted(k + n_lines, p));
+                norm += w * std::hypot(gr, gi);
               }
-        }
-
-      // 3. E of Eq. (50) for every pair, with the trapezoidal weights of the
-      // identification (half weight on the first and last line).
-      const Eigen::MatrixXd fitted = A * X;
-      model.errors.resize(n, n);
-      for (std::size_t p = 0; p < n_pairs; ++p)
-        {
-          double e = 0., norm = 0.;
-          for (unsigned int k = 0; k < n_lines; ++k)
-            {
-              const double w  = (k == 0 || k + 1 == n_lines) ? 0.5 : 1.;
-              const double gr = data(k, p), gi = data(k + n_lines, p);
-              e += w * std::hypot(gr - fitted(k, p), gi - fitted(k + n_lines, p));
-              norm += w * std::hypot(gr, gi);
-            }
-          model.errors(p / n, p % n) = norm > 0. ? e / norm : 0.;
-          if (!std::isfinite(model.errors(p / n, p % n)))
-            throw NumericalError("patch model: the fit of pair " + std::to_string(p / n) + ":" +
-                                 std::to_string(p % n) + " is not finite");
-        }
-      if (show_progress)
-        std::cout << "  patch model: " << model.n_terms() << " poles (" << model.identified_modes
-                  << " identified by LSCE on " << sources.size()
-                  << " reference functions, worst E there " << format_short(100. * worst_error)
-                  << "%), residues of " << n_pairs << " pairs" << std::endl;
-      return model;
-    }
-
-
-
-    namespace
-    {
-      const std::vector<std::string> patch_datasets = {"lambda", "real",   "residues",
-                                                       "errors", "points", "info",
-                                                       "instantaneous"};
+            model.errors(p / n, p % n) = norm > 0. ? e / norm : 0.;
+            if (!std::isfinite(model.errors(p / n, p % n)))
+              throw NumericalError("patch model: the fit of pair " + std::to_string(p / n) + ":" +
+                                   std::to_string(p % n) + " is not finite");
+          }
+      }
     } // namespace
 
 
 
-    void
-    write_patch_model(const std::filesystem::path &file,
-                      const PatchModel            &model,
-                      const base::ParameterRecord &record,
-                      const std::string           &stage_key)
-    {
-      write_hdf5_stage(file, model.points, record, stage_key, [&](dealii::HDF5::File &h5) {
-        const std::size_t  n = model.n_points(), m = model.n_terms();
-        h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
-        std::vector<int> real(model.real.begin(), model.real.end());
-        h5.create_dataset<int>("real", {m}).write(real);
-        std::vector<std::complex<double>> r(m * n * n);
-        for (std::size_t t = 0; t < m; ++t)
-          for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j)
-              r[(t * n + i) * n + j] = model.residues[t](i, j);
-        h5.create_dataset<std::complex<double>>("residues", {m, n, n}).write(r);
-        std::vector<double> e(n * n);
-        for (std::size_t i = 0; i < n; ++i)
-          for (std::size_t j = 0; j < n; ++j)
-            e[i * n + j] = model.errors(i, j);
-        h5.create_dataset<double>("errors", {n, n}).write(e);
-        // G_r, all zero for a model with a real residual pole.
-        for (std::size_t i = 0; i < n; ++i)
-          for (std::size_t j = 0; j < n; ++j)
-            e[i * n + j] = model.instantaneous.size() ? model.instantaneous(i, j) : 0.;
-        h5.create_dataset<double>("instantaneous", {n, n}).write(e);
-        h5.create_dataset<double>("info", {3})
-          .write(std::vector<double>{model.f_max, double(model.identified_modes), model.sum_error});
-      });
-    }
-
-
-
-    std::string
-    read_patch_model_key(const std::string &file)
-    {
-      return read_hdf5_stage_key(file, patch_datasets);
-    }
-
-
-
     PatchModel
-    read_patch_model(const std::string &file)
+    fit_patch_model(const FrequencyResponseMatrix  &green,
+                    const IdentificationParameters &identification,
+                    const PatchModelParameters     &parameters,
+                    const bool                      show_progress)
     {
-      if (read_patch_model_key(file).empty())
-        throw InputError("patch model file '" + file +
-                         "' is missing or incomplete; delete it to recompute it");
-      // Read everything, and close the file, before any check can throw:
-      // deal.II's HDF5 objects abort when destroyed during an exception.
-      PatchModel                        model;
-      std::vector<int>                  real;
-      std::vector<double>               p, e, info, gr;
-      std::vector<std::complex<double>> r;
-      {
-        dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
-        model.lambda = h5.open_dataset("lambda").read<std::vector<std::complex<double>>>();
-        real         = h5.open_dataset("real").read<std::vector<int>>();
-        p            = h5.open_dataset("points").read<std::vector<double>>();
-        e            = h5.open_dataset("errors").read<std::vector<double>>();
-        r            = h5.open_dataset("residues").read<std::vector<std::complex<double>>>();
-        info         = h5.open_dataset("info").read<std::vector<double>>();
-        gr           = h5.open_dataset("instantaneous").read<std::vector<double>>();
-      }
-      const std::size_t m = model.lambda.size(), n = p.size() / 3;
-      if (real.size() != m || e.size() != n * n || r.size() != m * n * n || info.size() != 3 ||
-          gr.size() != n * n)
-        throw InputError("patch model file '" + file +
-                         "' has inconsistent dataset sizes; delete it to recompute it");
-      const auto finite = [](const auto &values) {
-        return std::all_of(values.begin(), values.end(),
-                           [](const auto &x) { return std::isfinite(std::abs(x)); });
-      };
-      if (!finite(model.lambda) || !finite(r) || !finite(gr) || !finite(p) || !finite(info))
-        throw InputError("patch model file '" + file +
-                         "' holds a value that is not a finite number; delete it to recompute it");
-      model.real.assign(real.begin(), real.end());
-      for (std::size_t i = 0; i < n; ++i)
-        model.points.push_back({{p[3 * i], p[3 * i + 1], p[3 * i + 2]}});
-      model.errors.resize(n, n);
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-          model.errors(i, j) = e[i * n + j];
-      model.residues.assign(m, Eigen::MatrixXcd(n, n));
-      for (std::size_t t = 0; t < m; ++t)
-        for (std::size_t i = 0; i < n; ++i)
-          for (std::size_t j = 0; j < n; ++j)
-            model.residues[t](i, j) = r[(t * n + i) * n + j];
-      if (std::any_of(gr.begin(), gr.end(), [](const double x) { return x != 0.; }))
-        model.instantaneous = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
-                                                             Eigen::RowMajor>>(gr.data(), n, n);
-      model.f_max            = info[0];
-      model.identified_modes = static_cast<unsigned int>(info[1]);
-      model.sum_error        = info[2];
+      const unsigned int n       = green.n_points();
+      const unsigned int n_lines = green.n_lines;
+      if (n == 0 || n_lines < 4)
+        throw InputError("patch model: the Green's functions have " + std::to_string(n) +
+                         " points and " + std::to_string(n_lines) +
+                         " lines; at least 1 point and 4 lines are needed");
+      // 1. The poles.
+      const auto sources = reference_functions(green, parameters.reference_transfers);
+      PatchModel model;
+      model.points    = green.points;
+      model.f_max     = green.df * (n_lines - 1);
+      model.sum_error = find_poles(model, sources, identification, parameters);
+      // 2. The residues (and G_r) by linear least squares.
+      const ResidueSystem   system(green, model, parameters);
+      const Eigen::MatrixXd X = parameters.instantaneous_residual ?
+                                  fit_with_instantaneous(model, system) :
+                                  system.solve(false, system.data);
+      set_residues(model, system, X);
+      // 3. The error of every pair.
+      set_errors(model, system, X);
+      if (show_progress)
+        std::cout << "  patch model: " << model.n_terms() << " poles (" << model.identified_modes
+                  << " identified by LSCE on " << sources.size()
+                  << " reference functions, worst E there " << format_short(100. * model.sum_error)
+                  << "%), residues of " << system.n_pairs << " pairs" << std::endl;
       return model;
     }
   } // namespace modal
