@@ -18,156 +18,6 @@ namespace greentread
 {
   namespace geometry
   {
-    void
-    GeometryParameters::declare_parameters(dealii::ParameterHandler &prm)
-    {
-      using base::RangePattern;
-      prm.enter_subsection("Geometry");
-      {
-        prm.declare_entry("Geometry file", "geometry/tyre_165_65_r13.geo",
-                          dealii::Patterns::Anything(),
-                          "The gmsh .geo description of the section (relative to the working "
-                          "directory). Its DefineConstant parameters 'Parameters/<name>' are "
-                          "set from this subsection; a new design is a new file.");
-        const auto length = [&](const char *name, const char *value, const char *doc) {
-          prm.declare_entry(name, value, RangePattern::positive("m"), std::string(doc) +
-                                                                         " Unit: m.");
-        };
-        length("Rim diameter", "0.3302", "Diameter of the rim seat. Table A.3: 13 in = 330.2 mm.");
-        length("Section height", "0.10725",
-               "From the rim seat to the tread surface. The default is the size code's "
-               "0.65 x 165 mm = 107.25 mm (outer diameter 545 mm, a real 165/65 R13); "
-               "Table A.3's 65 mm 'height of the sidewall' gives a 460 mm tyre.");
-        length("Tread width", "0.165", "Width of the tread pattern and belt. Table A.3: 165 mm.");
-        length("Section width", "0.175",
-               "Width of the section at the bulge of the sidewalls (outer faces).");
-        length("Rim width", "0.1143", "Distance between the outer faces of the beads (4.5 in).");
-        length("Tread thickness", "0.008", "Thickness of the tread pattern (rubber).");
-        length("Belt thickness", "0.006", "Thickness of the belt (rubber and steel cords).");
-        length("Sidewall thickness", "0.006", "Thickness of the sidewalls (rubber and nylon).");
-        length("Bead width", "0.008", "Axial width of each bead (steel).");
-        length("Bead height", "0.008", "Radial height of each bead.");
-        prm.declare_entry("Bulge height", "0.5", RangePattern::closed(0.05, 0.95, ""),
-                          "Where the sidewall is widest, as a fraction of the way from the "
-                          "bead up to the belt. Unit: 1.");
-        length("Mesh size", "0.008",
-               "Target element size in the section (transfinite: every block gets "
-               "ceil(length / size) elements per side).");
-        prm.declare_entry("Number of cells", "256", dealii::Patterns::Integer(3, 100000),
-                          "N, cells in the ring: the cell is the section revolved by 2 pi / N. "
-                          "Powers of two suit the recursive doubling of the periodic stage.");
-        prm.declare_entry("Other constants", "", dealii::Patterns::Anything(),
-                          "More ONELAB numbers for a .geo of your own, 'Name=value, "
-                          "Name=value' (SI units); each becomes 'Parameters/Name'.");
-      }
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    GeometryParameters::parse_parameters(dealii::ParameterHandler &prm)
-    {
-      prm.enter_subsection("Geometry");
-      {
-        geo_file           = prm.get("Geometry file");
-        rim_diameter       = prm.get_double("Rim diameter");
-        section_height     = prm.get_double("Section height");
-        tread_width        = prm.get_double("Tread width");
-        section_width      = prm.get_double("Section width");
-        rim_width          = prm.get_double("Rim width");
-        tread_thickness    = prm.get_double("Tread thickness");
-        belt_thickness     = prm.get_double("Belt thickness");
-        sidewall_thickness = prm.get_double("Sidewall thickness");
-        bead_width         = prm.get_double("Bead width");
-        bead_height        = prm.get_double("Bead height");
-        bulge_height       = prm.get_double("Bulge height");
-        mesh_size          = prm.get_double("Mesh size");
-        n_cells            = prm.get_integer("Number of cells");
-        other_constants    = prm.get("Other constants");
-      }
-      prm.leave_subsection();
-
-      // The layers must fit: an impossible geometry is named here, before
-      // gmsh sees it.
-      const auto fail = [](const std::string &what) {
-        throw InputError("impossible geometry (subsection Geometry): " + what);
-      };
-      const double stack = tread_thickness + belt_thickness + bead_height;
-      if (!(stack < section_height))
-        fail("'Tread thickness' + 'Belt thickness' + 'Bead height' = " + format_short(stack) +
-             " m does not fit under 'Section height' = " + format_short(section_height) +
-             " m: the layers overlap");
-      if (!(sidewall_thickness < 0.5 * tread_width))
-        fail("'Sidewall thickness' = " + format_short(sidewall_thickness) +
-             " m must be less than half the 'Tread width' = " + format_short(tread_width) +
-             " m: the shoulders under the belt would overlap");
-      if (!(bead_width < 0.5 * rim_width))
-        fail("'Bead width' = " + format_short(bead_width) + " m must be less than half the "
-             "'Rim width' = " + format_short(rim_width) + " m: the beads would overlap");
-      if (!(sidewall_thickness < 0.5 * section_width))
-        fail("'Sidewall thickness' = " + format_short(sidewall_thickness) +
-             " m must be less than half the 'Section width' = " + format_short(section_width) +
-             " m");
-      // A mesh that would not fit in memory.
-      const double area = section_height * section_width;
-      if (area / (mesh_size * mesh_size) > 2e5)
-        throw InputError("parameter 'Geometry/Mesh size' = " + format_number(mesh_size) +
-                         " is not allowed; allowed: at least " +
-                         format_short(std::sqrt(area / 2e5)) +
-                         " m for this section (more than 2e5 elements otherwise)");
-      // Elements too flat to solve: the cell's thickness at the rim, R 2 pi / N,
-      // against the element size in the section. The static solve of the
-      // default section fails near an aspect ratio of 500; 200 is allowed.
-      const double max_cells = std::floor(200. * M_PI * rim_diameter / mesh_size);
-      if (n_cells > max_cells)
-        throw InputError("parameter 'Geometry/Number of cells' = " + std::to_string(n_cells) +
-                         " is not allowed with 'Mesh size' = " + format_short(mesh_size) +
-                         " m; allowed: at most " + std::to_string(static_cast<unsigned long>(max_cells)) +
-                         " (the cell would be " +
-                         format_short(M_PI * rim_diameter / n_cells * 1e3) +
-                         " mm thick at the rim, more than 200 times thinner than its elements)");
-      onelab_numbers(); // checks 'Other constants'
-    }
-
-
-
-    double
-    GeometryParameters::angle() const
-    {
-      return 2. * M_PI / n_cells;
-    }
-
-
-
-    std::map<std::string, double>
-    GeometryParameters::onelab_numbers() const
-    {
-      std::map<std::string, double> numbers = {
-        {"Rim diameter", rim_diameter},       {"Section height", section_height},
-        {"Tread width", tread_width},         {"Section width", section_width},
-        {"Rim width", rim_width},             {"Tread thickness", tread_thickness},
-        {"Belt thickness", belt_thickness},   {"Sidewall thickness", sidewall_thickness},
-        {"Bead width", bead_width},           {"Bead height", bead_height},
-        {"Bulge height", bulge_height},       {"Mesh size", mesh_size}};
-      const std::regex item("^\\s*([^=,]+?)\\s*=\\s*([-+0-9.eE]+)\\s*$");
-      std::size_t      begin = 0;
-      while (!other_constants.empty() && begin <= other_constants.size())
-        {
-          const std::size_t comma = std::min(other_constants.find(',', begin), other_constants.size());
-          const std::string part  = other_constants.substr(begin, comma - begin);
-          std::smatch       m;
-          if (!std::regex_match(part, m, item))
-            throw InputError("parameter 'Geometry/Other constants' = " + other_constants +
-                             " is not allowed; allowed: 'Name=value, Name=value' ('" + part + "')");
-          numbers[m[1]] = std::stod(m[2]);
-          begin         = comma + 1;
-        }
-      return numbers;
-    }
-
-
-
     namespace
     {
       /// gmsh's session for the lifetime of one build, finalized however it ends.
@@ -277,6 +127,294 @@ namespace greentread
 
 
 
+    namespace
+    {
+      /// The materials (2D) and boundaries (1D) of a .geo file, by the ids
+      /// GreenTread uses.
+      struct PhysicalGroups
+      {
+        std::map<unsigned int, std::vector<int>> surfaces_of_material;
+        std::map<unsigned int, std::vector<int>> curves_of_boundary;
+      };
+
+      /// The physical groups of the open gmsh model, checked: every surface
+      /// in exactly one known material, every boundary present.
+      PhysicalGroups
+      read_physical_groups(const std::string &file)
+      {
+        PhysicalGroups                            result;
+        auto                                     &surfaces_of_material = result.surfaces_of_material;
+        auto                                     &curves_of_boundary   = result.curves_of_boundary;
+        gmsh::vectorpair                         groups;
+        gmsh::model::getPhysicalGroups(groups);
+        for (const auto &[dim, tag] : groups)
+          {
+            std::string name;
+            gmsh::model::getPhysicalName(dim, tag, name);
+            std::vector<int> entities;
+            gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+            if (dim == 2)
+              {
+                const auto m = material_names.find(name);
+                if (m == material_names.end())
+                  throw InputError("geometry file '" + file + "': physical surface '" + name +
+                                   "' is not a material GreenTread knows; allowed: tread, belt, "
+                                   "sidewall, bead");
+                auto &surfaces = surfaces_of_material[m->second];
+                surfaces.insert(surfaces.end(), entities.begin(), entities.end());
+              }
+            else if (dim == 1)
+              {
+                const auto b = boundary_names.find(name);
+                if (b == boundary_names.end())
+                  throw InputError("geometry file '" + file + "': physical curve '" + name +
+                                   "' is not a boundary GreenTread knows; allowed: rim seat, inner "
+                                   "surface, tread surface (leave interfaces untagged)");
+                auto &curves = curves_of_boundary[b->second];
+                curves.insert(curves.end(), entities.begin(), entities.end());
+              }
+          }
+        if (surfaces_of_material.empty())
+          throw InputError("geometry file '" + file + "' defines no physical surface (material)");
+        // Every surface in exactly one material: a surface left out would
+        // silently cut a hole in the section.
+        {
+          std::map<int, unsigned int> groups_of_surface;
+          for (const auto &[material, surfaces] : surfaces_of_material)
+            for (const int s : surfaces)
+              ++groups_of_surface[s];
+          gmsh::vectorpair entities;
+          gmsh::model::getEntities(entities, 2);
+          for (const auto &[dim, s] : entities)
+            if (groups_of_surface[s] != 1)
+              throw InputError("geometry file '" + file + "': surface " + std::to_string(s) +
+                               (groups_of_surface[s] == 0 ? " is in no physical surface" :
+                                                            " is in more than one physical surface") +
+                               "; each surface must be in exactly one of tread, belt, sidewall, "
+                               "bead");
+        }
+        for (const auto &[name, id] : boundary_names)
+          if (curves_of_boundary.count(id) == 0)
+            throw InputError("geometry file '" + file + "' has no physical curve '" + name + "'");
+        return result;
+      }
+
+
+
+      /// The quadrilateral blocks of the section (for Pappus), and each
+      /// surface's material.
+      std::vector<SectionBlock>
+      read_section_blocks(const std::string &file, const PhysicalGroups &groups,
+                          gmsh::vectorpair &all_surfaces,
+                          std::map<int, unsigned int> &material_of_surface)
+      {
+        std::vector<SectionBlock> section_blocks;
+        for (const auto &[material, surfaces] : groups.surfaces_of_material)
+          for (const int s : surfaces)
+            {
+              all_surfaces.emplace_back(2, s);
+              material_of_surface[s] = material;
+              gmsh::vectorpair curves;
+              gmsh::model::getBoundary({{2, s}}, curves, false, true, false);
+              SectionBlock block{material, {}, true};
+              for (const auto &[dim, signed_curve] : curves)
+                {
+                  std::string type;
+                  gmsh::model::getType(1, std::abs(signed_curve), type);
+                  block.straight = block.straight && type == "Line";
+                  gmsh::vectorpair ends;
+                  gmsh::model::getBoundary({{1, signed_curve}}, ends, false, true, false);
+                  std::vector<double> xyz;
+                  if (!ends.empty())
+                    gmsh::model::getValue(0, ends.front().second, {}, xyz);
+                  if (xyz.size() != 3)
+                    throw InputError("geometry file '" + file + "': curve " +
+                                     std::to_string(std::abs(signed_curve)) + " of surface " +
+                                     std::to_string(s) + " has no end points; the section must be "
+                                     "made of quadrilateral blocks bounded by open curves");
+                  block.corners.push_back({{xyz[0], xyz[2]}});
+                }
+              section_blocks.push_back(block);
+            }
+        return section_blocks;
+      }
+
+
+
+      /// The section's quadrilaterals from the 2D mesh, (x, z) -> (radius,
+      /// axial), into @p section_triangulation.
+      void
+      make_section(const std::string &file, const PhysicalGroups &groups,
+                   dealii::Triangulation<2> &section_triangulation)
+      {
+        {
+          const MeshNodes               mesh = mesh_nodes();
+          std::vector<dealii::Point<2>> vertices;
+          for (const auto &xyz : mesh.xyz)
+            vertices.emplace_back(xyz[0], xyz[2]);
+          std::vector<dealii::CellData<2>> cells;
+          for (const auto &[material, surfaces] : groups.surfaces_of_material)
+            for (const int s : surfaces)
+              for (auto q : mesh_elements(2, s, 3, 4, mesh,
+                                          "geometry file '" + file + "': the section mesh has "
+                                          "elements that are not quadrilaterals; make every "
+                                          "surface transfinite and recombined"))
+                {
+                  // gmsh goes around the quadrilateral, in either sense
+                  // (surfaces differ); make it counterclockwise, then deal.II's
+                  // lexicographic order.
+                  double area = 0.;
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      const auto &a = vertices[q[v]], &b = vertices[q[(v + 1) % 4]];
+                      area += a[0] * b[1] - b[0] * a[1];
+                    }
+                  if (area < 0.)
+                    std::swap(q[1], q[3]);
+                  dealii::CellData<2> c;
+                  c.vertices    = {q[0], q[1], q[3], q[2]};
+                  c.material_id = material;
+                  cells.push_back(c);
+                }
+          dealii::GridTools::consistently_order_cells(cells);
+          section_triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
+        }
+        gmsh::model::mesh::clear();
+      }
+
+
+
+      /// The cell's volumes and boundary surfaces after the revolution.
+      struct RevolvedCell
+      {
+        std::map<unsigned int, std::vector<int>> volumes_of_material;
+        std::map<unsigned int, std::set<int>>    surfaces_of_boundary;
+        std::vector<int>                         bottom, top_surfaces;
+      };
+
+      /// Sort what gmsh's revolve() returned (@p out) into volumes by
+      /// material and surfaces by boundary, and tag them as physical groups.
+      RevolvedCell
+      sort_revolved(const gmsh::vectorpair &out, const gmsh::vectorpair &all_surfaces,
+                    const std::map<int, unsigned int> &material_of_surface,
+                    const PhysicalGroups &groups)
+      {
+        RevolvedCell cell;
+        auto        &volumes_of_material  = cell.volumes_of_material;
+        auto        &surfaces_of_boundary = cell.surfaces_of_boundary;
+        auto        &top_surfaces         = cell.top_surfaces;
+        auto        &bottom               = cell.bottom;
+        std::vector<int> lateral_surfaces;
+        for (std::size_t i = 0, k = 0; i < out.size(); ++i)
+          if (out[i].first == 3)
+            {
+              volumes_of_material[material_of_surface.at(all_surfaces[k].second)].push_back(
+                out[i].second);
+              top_surfaces.push_back(out[i - 1].second);
+              ++k;
+            }
+          else if (out[i].first == 2 && (i + 1 == out.size() || out[i + 1].first != 3))
+            lateral_surfaces.push_back(out[i].second);
+        // A lateral surface belongs to the boundary whose curve it was swept from.
+        for (const int lateral : lateral_surfaces)
+          {
+            gmsh::vectorpair curves;
+            gmsh::model::getBoundary({{2, lateral}}, curves, false, false, false);
+            for (const auto &[id, boundary_curves] : groups.curves_of_boundary)
+              for (const auto &[dim, c] : curves)
+                if (std::find(boundary_curves.begin(), boundary_curves.end(), std::abs(c)) !=
+                    boundary_curves.end())
+                  surfaces_of_boundary[id].insert(lateral);
+          }
+        gmsh::model::removePhysicalGroups();
+        for (const auto &[material, volumes] : volumes_of_material)
+          gmsh::model::addPhysicalGroup(3, volumes, material);
+        for (const auto &[id, surfaces] : surfaces_of_boundary)
+          gmsh::model::addPhysicalGroup(2, std::vector<int>(surfaces.begin(), surfaces.end()), id);
+        for (const auto &[dim, s] : all_surfaces)
+          bottom.push_back(s);
+        gmsh::model::addPhysicalGroup(2, bottom, periodic_first);
+        gmsh::model::addPhysicalGroup(2, top_surfaces, periodic_second);
+        return cell;
+      }
+
+
+
+      /// The cell's hexahedra and boundary faces, straight from gmsh's
+      /// arrays, into @p cell_triangulation.
+      void
+      make_cell(const std::string &file, const RevolvedCell &revolved,
+                dealii::Triangulation<3> &cell_triangulation)
+      {
+        const auto &volumes_of_material  = revolved.volumes_of_material;
+        const auto &surfaces_of_boundary = revolved.surfaces_of_boundary;
+        const auto &bottom               = revolved.bottom;
+        const auto &top_surfaces         = revolved.top_surfaces;
+        const MeshNodes               mesh = mesh_nodes();
+        std::vector<dealii::Point<3>> vertices;
+        for (const auto &xyz : mesh.xyz)
+          vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+        std::vector<dealii::CellData<3>> cells;
+        for (const auto &[material, volumes] : volumes_of_material)
+          for (const int v : volumes)
+            for (auto h : mesh_elements(3, v, 5, 8, mesh,
+                                        "geometry file '" + file + "': the cell mesh has elements "
+                                        "that are not hexahedra; make every surface transfinite "
+                                        "and recombined"))
+              {
+                // gmsh: bottom face 0-1-2-3 around, top 4-5-6-7 above it;
+                // mirror the bottom order if that is left-handed.
+                const auto a = vertices[h[1]] - vertices[h[0]];
+                const auto b = vertices[h[3]] - vertices[h[0]];
+                const auto n = vertices[h[4]] - vertices[h[0]];
+                if (dealii::cross_product_3d(a, b) * n < 0.)
+                  {
+                    std::swap(h[1], h[3]);
+                    std::swap(h[5], h[7]);
+                  }
+                dealii::CellData<3> c;
+                c.vertices    = {h[0], h[1], h[3], h[2], h[4], h[5], h[7], h[6]};
+                c.material_id = material;
+                cells.push_back(c);
+              }
+        dealii::SubCellData                        boundary;
+        std::vector<std::pair<int, unsigned int>> surface_ids;
+        for (const auto &[id, surfaces] : surfaces_of_boundary)
+          for (const int s : surfaces)
+            surface_ids.emplace_back(s, id);
+        for (const int s : bottom)
+          surface_ids.emplace_back(s, periodic_first);
+        for (const int s : top_surfaces)
+          surface_ids.emplace_back(s, periodic_second);
+        for (const auto &[s, id] : surface_ids)
+          for (const auto &f : mesh_elements(2, s, 3, 4, mesh,
+                                             "geometry file '" + file + "': the cell's boundary "
+                                             "has faces that are not quadrilaterals"))
+            {
+              dealii::CellData<2> q;
+              q.vertices    = {f[0], f[1], f[3], f[2]};
+              q.boundary_id = id;
+              boundary.boundary_quads.push_back(q);
+            }
+        if (cells.empty())
+          throw InputError("geometry file '" + file + "': gmsh made no cells");
+        try
+          {
+            dealii::GridTools::consistently_order_cells(cells);
+            cell_triangulation.create_triangulation(vertices, cells, boundary);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            throw InputError("geometry file '" + file + "': the mesh gmsh made is not a valid "
+                             "deal.II mesh (distorted cells?): " + info.str());
+          }
+      }
+    } // namespace
+
+
+
     TyreCell::TyreCell(const GeometryParameters &parameters)
       : cell_angle(parameters.angle())
       , ring_cells(parameters.n_cells)
@@ -290,126 +428,13 @@ namespace greentread
         gmsh::onelab::setNumber("Parameters/" + name, {value});
       gmsh_session.run(file, "reading it", [&] { gmsh::open(file); });
 
-      // Materials (2D) and boundaries (1D) as the .geo names them.
-      std::map<unsigned int, std::vector<int>> surfaces_of_material;
-      std::map<unsigned int, std::vector<int>> curves_of_boundary;
-      gmsh::vectorpair                         groups;
-      gmsh::model::getPhysicalGroups(groups);
-      for (const auto &[dim, tag] : groups)
-        {
-          std::string name;
-          gmsh::model::getPhysicalName(dim, tag, name);
-          std::vector<int> entities;
-          gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-          if (dim == 2)
-            {
-              const auto m = material_names.find(name);
-              if (m == material_names.end())
-                throw InputError("geometry file '" + file + "': physical surface '" + name +
-                                 "' is not a material GreenTread knows; allowed: tread, belt, "
-                                 "sidewall, bead");
-              auto &surfaces = surfaces_of_material[m->second];
-              surfaces.insert(surfaces.end(), entities.begin(), entities.end());
-            }
-          else if (dim == 1)
-            {
-              const auto b = boundary_names.find(name);
-              if (b == boundary_names.end())
-                throw InputError("geometry file '" + file + "': physical curve '" + name +
-                                 "' is not a boundary GreenTread knows; allowed: rim seat, inner "
-                                 "surface, tread surface (leave interfaces untagged)");
-              auto &curves = curves_of_boundary[b->second];
-              curves.insert(curves.end(), entities.begin(), entities.end());
-            }
-        }
-      if (surfaces_of_material.empty())
-        throw InputError("geometry file '" + file + "' defines no physical surface (material)");
-      // Every surface in exactly one material: a surface left out would
-      // silently cut a hole in the section.
-      {
-        std::map<int, unsigned int> groups_of_surface;
-        for (const auto &[material, surfaces] : surfaces_of_material)
-          for (const int s : surfaces)
-            ++groups_of_surface[s];
-        gmsh::vectorpair entities;
-        gmsh::model::getEntities(entities, 2);
-        for (const auto &[dim, s] : entities)
-          if (groups_of_surface[s] != 1)
-            throw InputError("geometry file '" + file + "': surface " + std::to_string(s) +
-                             (groups_of_surface[s] == 0 ? " is in no physical surface" :
-                                                          " is in more than one physical surface") +
-                             "; each surface must be in exactly one of tread, belt, sidewall, "
-                             "bead");
-      }
-      for (const auto &[name, id] : boundary_names)
-        if (curves_of_boundary.count(id) == 0)
-          throw InputError("geometry file '" + file + "' has no physical curve '" + name + "'");
-
-      // The blocks of the section, for Pappus.
-      gmsh::vectorpair all_surfaces;
+      const PhysicalGroups        groups = read_physical_groups(file);
+      gmsh::vectorpair            all_surfaces;
       std::map<int, unsigned int> material_of_surface;
-      for (const auto &[material, surfaces] : surfaces_of_material)
-        for (const int s : surfaces)
-          {
-            all_surfaces.emplace_back(2, s);
-            material_of_surface[s] = material;
-            gmsh::vectorpair curves;
-            gmsh::model::getBoundary({{2, s}}, curves, false, true, false);
-            SectionBlock block{material, {}, true};
-            for (const auto &[dim, signed_curve] : curves)
-              {
-                std::string type;
-                gmsh::model::getType(1, std::abs(signed_curve), type);
-                block.straight = block.straight && type == "Line";
-                gmsh::vectorpair ends;
-                gmsh::model::getBoundary({{1, signed_curve}}, ends, false, true, false);
-                std::vector<double> xyz;
-                if (!ends.empty())
-                  gmsh::model::getValue(0, ends.front().second, {}, xyz);
-                if (xyz.size() != 3)
-                  throw InputError("geometry file '" + file + "': curve " +
-                                   std::to_string(std::abs(signed_curve)) + " of surface " +
-                                   std::to_string(s) + " has no end points; the section must be "
-                                   "made of quadrilateral blocks bounded by open curves");
-                block.corners.push_back({{xyz[0], xyz[2]}});
-              }
-            section_blocks.push_back(block);
-          }
+      section_blocks = read_section_blocks(file, groups, all_surfaces, material_of_surface);
 
-      // The section mesh, (x, z) -> (radius, axial).
       gmsh_session.run(file, "meshing the section", [] { gmsh::model::mesh::generate(2); });
-      {
-        const MeshNodes               mesh = mesh_nodes();
-        std::vector<dealii::Point<2>> vertices;
-        for (const auto &xyz : mesh.xyz)
-          vertices.emplace_back(xyz[0], xyz[2]);
-        std::vector<dealii::CellData<2>> cells;
-        for (const auto &[material, surfaces] : surfaces_of_material)
-          for (const int s : surfaces)
-            for (auto q : mesh_elements(2, s, 3, 4, mesh,
-                                        "geometry file '" + file + "': the section mesh has "
-                                        "elements that are not quadrilaterals; make every "
-                                        "surface transfinite and recombined"))
-              {
-                // gmsh goes around the quadrilateral, in either sense
-                // (surfaces differ); make it counterclockwise, then deal.II's
-                // lexicographic order.
-                double area = 0.;
-                for (unsigned int v = 0; v < 4; ++v)
-                  {
-                    const auto &a = vertices[q[v]], &b = vertices[q[(v + 1) % 4]];
-                    area += a[0] * b[1] - b[0] * a[1];
-                  }
-                if (area < 0.)
-                  std::swap(q[1], q[3]);
-                dealii::CellData<2> c;
-                c.vertices    = {q[0], q[1], q[3], q[2]};
-                c.material_id = material;
-                cells.push_back(c);
-              }
-        dealii::GridTools::consistently_order_cells(cells);
-        section_triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
-      }
+      make_section(file, groups, section_triangulation);
       gmsh::model::mesh::clear();
 
       // Revolve into the cell.
@@ -419,105 +444,10 @@ namespace greentread
                                   true);
         gmsh::model::geo::synchronize();
       });
-
-      std::map<unsigned int, std::vector<int>> volumes_of_material;
-      std::vector<int>                         top_surfaces, lateral_surfaces;
-      for (std::size_t i = 0, k = 0; i < out.size(); ++i)
-        if (out[i].first == 3)
-          {
-            volumes_of_material[material_of_surface.at(all_surfaces[k].second)].push_back(
-              out[i].second);
-            top_surfaces.push_back(out[i - 1].second);
-            ++k;
-          }
-        else if (out[i].first == 2 && (i + 1 == out.size() || out[i + 1].first != 3))
-          lateral_surfaces.push_back(out[i].second);
-      // A lateral surface belongs to the boundary whose curve it was swept from.
-      std::map<unsigned int, std::set<int>> surfaces_of_boundary;
-      for (const int lateral : lateral_surfaces)
-        {
-          gmsh::vectorpair curves;
-          gmsh::model::getBoundary({{2, lateral}}, curves, false, false, false);
-          for (const auto &[id, boundary_curves] : curves_of_boundary)
-            for (const auto &[dim, c] : curves)
-              if (std::find(boundary_curves.begin(), boundary_curves.end(), std::abs(c)) !=
-                  boundary_curves.end())
-                surfaces_of_boundary[id].insert(lateral);
-        }
-      gmsh::model::removePhysicalGroups();
-      for (const auto &[material, volumes] : volumes_of_material)
-        gmsh::model::addPhysicalGroup(3, volumes, material);
-      for (const auto &[id, surfaces] : surfaces_of_boundary)
-        gmsh::model::addPhysicalGroup(2, std::vector<int>(surfaces.begin(), surfaces.end()), id);
-      std::vector<int> bottom;
-      for (const auto &[dim, s] : all_surfaces)
-        bottom.push_back(s);
-      gmsh::model::addPhysicalGroup(2, bottom, periodic_first);
-      gmsh::model::addPhysicalGroup(2, top_surfaces, periodic_second);
+      const RevolvedCell revolved = sort_revolved(out, all_surfaces, material_of_surface, groups);
 
       gmsh_session.run(file, "meshing the cell", [] { gmsh::model::mesh::generate(3); });
-
-      // The cell, straight from gmsh's arrays.
-      const MeshNodes               mesh = mesh_nodes();
-      std::vector<dealii::Point<3>> vertices;
-      for (const auto &xyz : mesh.xyz)
-        vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
-      std::vector<dealii::CellData<3>> cells;
-      for (const auto &[material, volumes] : volumes_of_material)
-        for (const int v : volumes)
-          for (auto h : mesh_elements(3, v, 5, 8, mesh,
-                                      "geometry file '" + file + "': the cell mesh has elements "
-                                      "that are not hexahedra; make every surface transfinite "
-                                      "and recombined"))
-            {
-              // gmsh: bottom face 0-1-2-3 around, top 4-5-6-7 above it;
-              // mirror the bottom order if that is left-handed.
-              const auto a = vertices[h[1]] - vertices[h[0]];
-              const auto b = vertices[h[3]] - vertices[h[0]];
-              const auto n = vertices[h[4]] - vertices[h[0]];
-              if (dealii::cross_product_3d(a, b) * n < 0.)
-                {
-                  std::swap(h[1], h[3]);
-                  std::swap(h[5], h[7]);
-                }
-              dealii::CellData<3> c;
-              c.vertices    = {h[0], h[1], h[3], h[2], h[4], h[5], h[7], h[6]};
-              c.material_id = material;
-              cells.push_back(c);
-            }
-      dealii::SubCellData                        boundary;
-      std::vector<std::pair<int, unsigned int>> surface_ids;
-      for (const auto &[id, surfaces] : surfaces_of_boundary)
-        for (const int s : surfaces)
-          surface_ids.emplace_back(s, id);
-      for (const int s : bottom)
-        surface_ids.emplace_back(s, periodic_first);
-      for (const int s : top_surfaces)
-        surface_ids.emplace_back(s, periodic_second);
-      for (const auto &[s, id] : surface_ids)
-        for (const auto &f : mesh_elements(2, s, 3, 4, mesh,
-                                           "geometry file '" + file + "': the cell's boundary "
-                                           "has faces that are not quadrilaterals"))
-          {
-            dealii::CellData<2> q;
-            q.vertices    = {f[0], f[1], f[3], f[2]};
-            q.boundary_id = id;
-            boundary.boundary_quads.push_back(q);
-          }
-      if (cells.empty())
-        throw InputError("geometry file '" + file + "': gmsh made no cells");
-      try
-        {
-          dealii::GridTools::consistently_order_cells(cells);
-          cell_triangulation.create_triangulation(vertices, cells, boundary);
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          throw InputError("geometry file '" + file + "': the mesh gmsh made is not a valid "
-                           "deal.II mesh (distorted cells?): " + info.str());
-        }
+      make_cell(file, revolved, cell_triangulation);
       attach_cylindrical_manifold(cell_triangulation);
     }
 
