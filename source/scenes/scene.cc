@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/contact/contact_parameters.h>
+#include <greentread/contact/rolling_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
@@ -77,7 +78,7 @@ namespace greentread
       periodic::GreenParameters::declare_parameters(prm);
       modal::PatchModelParameters::declare_parameters(prm);
       road::RoadTextureParameters::declare_parameters(prm);
-      RollingParameters::declare_parameters(prm);
+      contact::RollingParameters::declare_parameters(prm);
     }
 
 

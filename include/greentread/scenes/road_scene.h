@@ -3,6 +3,7 @@
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/rolling.h>
+#include <greentread/contact/rolling_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
@@ -26,26 +27,6 @@ namespace greentread
 {
   namespace scenes
   {
-    /// Subsection "Rolling", with 'Time stepping/Time step' and 'Convolution/Method'.
-    struct RollingParameters
-    {
-      std::vector<double> speeds = {50., 70., 90.}; // km/h
-      double              distance = 2.;
-      double              time_step = 0.; // Time stepping/Time step; 0: the road sampling interval / V
-      double              static_load = 600.;
-      double              indentation = 0.;
-      bool                static_start = true;
-      convolution::Method convolution = convolution::Method::modal_recursive;
-      unsigned int        direct_kernel = 0;
-      unsigned int        frames = 40;
-      double              stress_reference = 100.;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /**
      * @brief Scene 'tire-road-contact': geometry -> fe -> periodic -> modal ->
      * contact -> analysis, for each road and speed (Section 5).
@@ -82,7 +63,7 @@ namespace greentread
       modal::IdentificationParameters    identification;
       modal::PatchModelParameters        patch_model;
       road::RoadTextureParameters        roads;
-      RollingParameters                  rolling;
+      contact::RollingParameters         rolling;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the
       /// Green's functions.

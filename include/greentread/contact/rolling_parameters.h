@@ -1,0 +1,33 @@
+#pragma once
+
+#include <greentread/convolution/convolution_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <vector>
+
+namespace greentread
+{
+  namespace contact
+  {
+    /// Subsection "Rolling", with 'Time stepping/Time step' and 'Convolution/Method'.
+    struct RollingParameters
+    {
+      std::vector<double> speeds = {50., 70., 90.}; // km/h
+      double              distance = 2.;
+      double              time_step = 0.; // Time stepping/Time step; 0: the road sampling interval / V
+      double              static_load = 600.;
+      double              indentation = 0.;
+      bool                static_start = true;
+      convolution::Method convolution = convolution::Method::modal_recursive;
+      unsigned int        direct_kernel = 0;
+      unsigned int        frames = 40;
+      double              stress_reference = 100.;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace contact
+} // namespace greentread
