@@ -15,12 +15,12 @@ namespace greentread
       base::AtomicFile file(file_name);
       auto            &o = file.stream();
       o.precision(10);
-      o << "point,i_x,i_y,x,y,radius,cell\n";
+      o << "point,i_x,i_y,x,y,radius,load_dofs\n";
       for (unsigned int p = 0; p < patch.points.size(); ++p)
         {
           const auto &c = patch.points[p];
           o << p << ',' << p / patch.points_across << ',' << p % patch.points_across << ',' << c.x
-            << ',' << c.y << ',' << c.radius << ',' << c.cell << '\n';
+            << ',' << c.y << ',' << c.radius << ',' << c.load.size() << '\n';
         }
       record.write_comments(o);
       file.commit();

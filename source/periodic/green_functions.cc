@@ -48,6 +48,14 @@ namespace greentread
                           "N_x, contact points along x. Section 5.2: 10.");
         prm.declare_entry("Points across", "12", dealii::Patterns::Integer(1, 1000),
                           "N_y, contact points across y. Section 5.2: 12.");
+        prm.declare_entry(
+          "Point load", "node", dealii::Patterns::Selection("node|tributary area"),
+          "What a unit force at a contact point is. 'node': a radial force on one tread "
+          "node, the points on a whole stride of nodes nearest the spacing asked (the "
+          "paper's; singular in 3D elasticity, so the driving point grows as the mesh is "
+          "refined). 'tributary area': a uniform radial traction 1 / A over the point's "
+          "rectangle L_c / N_x x l_c / N_y, the response the mean radial displacement over "
+          "it; the points exactly on the grid asked, on any mesh.");
         prm.declare_entry("Pairs", "auto", dealii::Patterns::Anything(),
                           "The g_ij written as green_<i>_<j>.csv and plotted: 'auto' (the "
                           "driving point p = (N_x/2) N_y + N_y/2 nearest the patch centre, and "
@@ -76,6 +84,7 @@ namespace greentread
         patch.width          = prm.get_double("Patch width");
         patch.points_along   = prm.get_integer("Points along");
         patch.points_across  = prm.get_integer("Points across");
+        patch.load = prm.get("Point load") == "node" ? PointLoad::node : PointLoad::tributary_area;
         pairs                = prm.get("Pairs");
         deflection_frequency = prm.get_double("Deflection shape frequency");
       }

@@ -130,19 +130,17 @@ namespace greentread
         diagnostics.max_condition = std::max(diagnostics.max_condition, condition);
       }
 
-      /// The distinct reference DoFs of the contact points, and each point's slot.
-      void
-      contact_slots(const ContactPatch         &patch,
-                    std::vector<unsigned int>  &dofs,
-                    std::vector<unsigned int>  &slot)
+      /// The distinct reference DoFs of the contact points' loads.
+      std::vector<unsigned int>
+      contact_dofs(const ContactPatch &patch)
       {
+        std::vector<unsigned int> dofs;
         for (const auto &p : patch.points)
-          dofs.push_back(p.dof);
+          for (const auto &e : p.load)
+            dofs.push_back(e.dof);
         std::sort(dofs.begin(), dofs.end());
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-        for (const auto &p : patch.points)
-          slot.push_back(static_cast<unsigned int>(
-            std::lower_bound(dofs.begin(), dofs.end(), p.dof) - dofs.begin()));
+        return dofs;
       }
 
 
@@ -150,6 +148,10 @@ namespace greentread
       /**
        * Bloch: the ring's response to a unit force at cell n is
        * (1/N) sum_k e^{i phi_k (m - n)} D_k^{-1} e_b, phi_k = 2 pi k / N.
+       * With S_k = D_k^{-1} restricted to the loads' distinct DoFs, and
+       * W_k(s, q) = sum of w e^{-i phi_k n} over the entries (n, s, w) of
+       * point q, wavenumber k adds W_k^H S_k W_k (and its transpose for
+       * N - k, since D_{N-k} = D_k^T).
        */
       class BlochSolver : public GreenSolver
       {
@@ -158,21 +160,28 @@ namespace greentread
           : cell(cell_)
           , patch(patch_)
           , bloch(cell_)
+          , dofs(contact_dofs(patch_))
         {
-          contact_slots(patch, contact_dofs, slot);
+          for (const auto &p : patch.points)
+            {
+              std::vector<unsigned int> slots;
+              for (const auto &e : p.load)
+                slots.push_back(static_cast<unsigned int>(
+                  std::lower_bound(dofs.begin(), dofs.end(), e.dof) - dofs.begin()));
+              slot.push_back(slots);
+            }
         }
 
         Dense
         solve(const double omega, SolveDiagnostics &diagnostics) override
         {
           bloch.set_frequency(omega);
-          const unsigned int N = cell.n_cells, n_slots = contact_dofs.size();
+          const unsigned int N = cell.n_cells, n_slots = dofs.size();
           Dense              B = Dense::Zero(bloch.size(), n_slots);
           for (unsigned int s = 0; s < n_slots; ++s)
-            B(contact_dofs[s], s) = 1.;
+            B(dofs[s], s) = 1.;
           const unsigned int P = patch.points.size();
           Dense              g = Dense::Zero(P, P);
-          // k and N - k: D_{N-k} = D_k^T, so H_{N-k} = H_k^T.
           for (unsigned int k = 0; 2 * k <= N; ++k)
             {
               const double         phi = 2. * M_PI * k / N;
@@ -187,33 +196,32 @@ namespace greentread
               const Dense X = lu.solve(B);
               check_solution(D_k, X, B, omega, "of Bloch wavenumber " + std::to_string(k),
                              diagnostics);
-              const bool paired = k != 0 && 2 * k != N;
-              // e^{i phi d} for the cell distances d = c_p - c_q.
-              const int            n_c = static_cast<int>(patch.n_contact_cells);
-              std::vector<Complex> phase(2 * n_c + 1);
-              for (int d = -n_c; d <= n_c; ++d)
-                phase[d + n_c] = std::polar(1., phi * d);
-              for (unsigned int p = 0; p < P; ++p)
-                for (unsigned int q = 0; q < P; ++q)
+              Dense S(n_slots, n_slots);
+              for (unsigned int s = 0; s < n_slots; ++s)
+                S.row(s) = X.row(dofs[s]);
+              Dense W = Dense::Zero(n_slots, P);
+              for (unsigned int q = 0; q < P; ++q)
+                for (std::size_t e = 0; e < patch.points[q].load.size(); ++e)
                   {
-                    const int     d = static_cast<int>(patch.points[p].cell) -
-                                  static_cast<int>(patch.points[q].cell);
-                    const Complex e = phase[d + n_c];
-                    g(p, q) += e * X(contact_dofs[slot[p]], slot[q]);
-                    if (paired)
-                      g(p, q) += std::conj(e) * X(contact_dofs[slot[q]], slot[p]);
+                    const auto &entry = patch.points[q].load[e];
+                    W(slot[q][e], q) += entry.weight * std::polar(1., -phi * entry.cell);
                   }
+              const Dense C = W.adjoint() * S * W;
+              g += C;
+              if (k != 0 && 2 * k != N)
+                g += C.transpose();
             }
           return g / static_cast<double>(N);
         }
 
       private:
-        const PeriodicCell       &cell;
-        const ContactPatch       &patch;
-        BlochCell                 bloch;
-        std::vector<unsigned int> contact_dofs, slot;
-        SparseLU                  lu;
-        bool                      analysed = false;
+        const PeriodicCell                    &cell;
+        const ContactPatch                    &patch;
+        BlochCell                              bloch;
+        const std::vector<unsigned int>        dofs;
+        std::vector<std::vector<unsigned int>> slot; ///< per point, per load entry
+        SparseLU                               lu;
+        bool                                   analysed = false;
       };
 
 
@@ -251,23 +259,25 @@ namespace greentread
               for (SparseComplex::InnerIterator it(D, c); it; ++it)
                 entries.emplace_back(index(m, it.row()), index(m, it.col()), it.value());
         }
-        /// Unit radial loads at the contact points' DoFs.
+        /// The contact points' unit loads, one column each.
         Dense
         loads(const ContactPatch &patch) const
         {
           Dense B = Dense::Zero(size(), patch.points.size());
           for (unsigned int q = 0; q < patch.points.size(); ++q)
-            B(index(patch.points[q].cell, patch.points[q].dof), q) = 1.;
+            for (const auto &e : patch.points[q].load)
+              B(index(e.cell, e.dof), q) += e.weight;
           return B;
         }
-        /// g(p, q) from the solutions X of the loads.
+        /// g(p, q) from the solutions X of the loads: the same weights.
         Dense
         at_points(const ContactPatch &patch, const Dense &X) const
         {
           const unsigned int P = patch.points.size();
-          Dense              g(P, P);
+          Dense              g = Dense::Zero(P, P);
           for (unsigned int p = 0; p < P; ++p)
-            g.row(p) = X.row(index(patch.points[p].cell, patch.points[p].dof));
+            for (const auto &e : patch.points[p].load)
+              g.row(p) += e.weight * X.row(index(e.cell, e.dof));
           return g;
         }
       };
@@ -537,18 +547,15 @@ namespace greentread
 
 
     Eigen::MatrixXcd
-    ring_response(const PeriodicCell &cell,
-                  const double        omega,
-                  const unsigned int  force_cell,
-                  const unsigned int  dof,
-                  SolveDiagnostics   &diagnostics)
+    ring_response(const PeriodicCell           &cell,
+                  const double                  omega,
+                  const std::vector<LoadEntry> &load,
+                  SolveDiagnostics             &diagnostics)
     {
       BlochCell bloch(cell);
       bloch.set_frequency(omega);
       const unsigned int N = cell.n_cells, n = bloch.size();
-      Dense              b = Dense::Zero(n, 1);
-      b(dof, 0)            = 1.;
-      Dense    u           = Dense::Zero(n, N);
+      Dense    u = Dense::Zero(n, N);
       SparseLU lu;
       // All N wavenumbers, one factorisation each: this is one frequency,
       // and the transposed solves D_{N-k} = D_k^T would save only half.
@@ -560,11 +567,15 @@ namespace greentread
             lu.analyzePattern(D_k);
           lu.factorize(D_k);
           require_factorised(lu, omega, "of Bloch wavenumber " + std::to_string(k));
+          // A load at cell c carries e^{-i phi c}.
+          Dense b = Dense::Zero(n, 1);
+          for (const auto &e : load)
+            b(e.dof, 0) += e.weight * std::polar(1., -phi * e.cell);
           const Dense x = lu.solve(b);
           check_solution(D_k, x, b, omega, "of Bloch wavenumber " + std::to_string(k),
                          diagnostics);
           for (unsigned int m = 0; m < N; ++m)
-            u.col(m) += std::polar(1., phi * (static_cast<double>(m) - force_cell)) * x.col(0);
+            u.col(m) += std::polar(1., phi * static_cast<double>(m)) * x.col(0);
         }
       return u / static_cast<double>(N);
     }

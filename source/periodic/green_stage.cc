@@ -78,7 +78,7 @@ namespace greentread
 
 
     std::string
-    InflatedTyre::describe(const double pressure, const PatchRequest &request) const
+    InflatedTyre::describe(const double pressure) const
     {
       const auto &pc = periodic_cell;
       return "  ring: N = " + std::to_string(pc.n_cells) + " cells of " +
@@ -86,7 +86,7 @@ namespace greentread
              std::to_string(pc.size()) + " free DoFs (faces " + std::to_string(pc.n_face) +
              " each, interior " + std::to_string(pc.n_interior) + "), inflated at " +
              format_number(pressure) + " Pa (tread growth " +
-             format_printf("%.4g", 1e3 * tread_growth) + " mm)\n  " + patch.describe(request) +
+             format_printf("%.4g", 1e3 * tread_growth) + " mm)\n  " + patch.describe() +
              '\n';
     }
 

@@ -59,7 +59,7 @@ namespace greentread
       const auto &tyre = *built;
       out << "GreenTread: scene 'tire-green', Green's functions of the inflated ring at the "
              "contact points (Meftah et al. 2013, Section 4.2)\n"
-          << tyre.describe(inflation.pressure, green.patch) << "  frequencies 0 to "
+          << tyre.describe(inflation.pressure) << "  frequencies 0 to "
           << format_number(green.max_frequency) << " Hz every " << format_number(green.frequency_step)
           << " Hz (" << green.n_lines() << " lines), method '" << green.method << "'\n";
 
@@ -76,8 +76,8 @@ namespace greentread
         {
           const auto &q = tyre.patch.points[centre];
           const auto  u = periodic::ring_response(tyre.periodic_cell,
-                                                  2. * M_PI * green.deflection_frequency, q.cell,
-                                                  q.dof, deflection);
+                                                  2. * M_PI * green.deflection_frequency, q.load,
+                                                  deflection);
           periodic::write_ring_deflection(directory / "ring_deflection.vtu", tyre.cell->cell(),
                                           tyre.periodic_cell, u);
         }
@@ -93,7 +93,7 @@ namespace greentread
       out << analysis::summarise_pairs(result.green, pairs);
       if (with_deflection)
         out << "Deflection shape at " << format_number(green.deflection_frequency)
-            << " Hz under a unit radial force at point " << centre << ": largest backward error "
+            << " Hz under the unit load of point " << centre << ": largest backward error "
             << format_printf("%.2g", deflection.max_residual) << "\n";
       out << "Wrote green_functions.h5, contact_points.csv";
       for (const auto &n : files.csv)

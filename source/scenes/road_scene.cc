@@ -65,9 +65,8 @@ namespace greentread
 
       // A texture file is read now, not after the Green's functions (five
       // minutes): a malformed file, or one too narrow or too short for the
-      // patch and the distance, is refused at once. The patch is the one
-      // asked for; the points snap to tread nodes later, and PatchRoad
-      // checks their exact extent again.
+      // patch and the distance, is refused at once. PatchRoad checks the
+      // points' extent again.
       for (const auto &name : roads.roads)
         if (!road::RoadTextureParameters::is_built_in(name) && texture_files.count(name) == 0)
           {
@@ -215,7 +214,7 @@ namespace greentread
                     << format_number(green.max_frequency) << " Hz (" << green.n_lines()
                     << " lines)\n";
           const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch);
-          std::cout << "  " << tyre.patch.describe(green.patch) << '\n';
+          std::cout << "  " << tyre.patch.describe() << '\n';
           const auto result = periodic::run_green_stage(tyre, green, key, h5, record, false,
                                               global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;

@@ -61,11 +61,14 @@ namespace
     }
   };
 
-  /// Points on faces and mid-planes alike: 3 x 3 at half-cell spacing.
+  /// Points on faces and mid-planes alike: 3 x 3 at half-cell spacing (as
+  /// nodes, or as the centres of tributary areas).
   periodic::PatchRequest
-  small_patch(const unsigned int n_cells)
+  small_patch(const unsigned int n_cells,
+              const periodic::PointLoad load = periodic::PointLoad::node)
   {
     periodic::PatchRequest r;
+    r.load                           = load;
     const double           half_cell = M_PI * 0.2725 / n_cells;
     r.points_along                   = 3;
     r.points_across                  = 3;
@@ -114,38 +117,47 @@ namespace
     periodic::SparseComplex D(n_free, n_free);
     D.setFromTriplets(entries.begin(), entries.end());
 
-    // The contact points' nodes and radial directions.
+    // The contact points' loads: each entry's node and radial direction
+    // in the ring, from the reference DoF's position rotated to its cell.
     const auto         nodes = fe::nodes(model.dof_handler(), model.mapping());
     const unsigned int P     = tyre.patch.points.size();
-    std::vector<std::array<int, 2>>    dof(P);
-    std::vector<std::array<double, 2>> direction(P);
+    const double       alpha = tyre.cell->angle();
+    struct Entry
+    {
+      std::array<int, 2>    dof;
+      std::array<double, 2> direction;
+      double                weight;
+    };
+    std::vector<std::vector<Entry>> load(P);
     for (unsigned int p = 0; p < P; ++p)
-      {
-        const auto  &point = tyre.patch.points[p];
-        const double c = std::cos(point.angle), s = std::sin(point.angle);
-        bool         found = false;
-        for (const auto &node : nodes)
-          if (node.position.distance(Point<3>(point.radius * c, point.radius * s, point.y)) <
-              1e-9)
-            {
-              dof[p]       = {{free[node.dofs[0]], free[node.dofs[1]]}};
-              direction[p] = {{c, s}};
-              found        = true;
-            }
-        BOOST_REQUIRE(found);
-      }
+      for (const auto &e : tyre.patch.points[p].load)
+        {
+          const auto  &d     = tyre.periodic_cell.dofs[e.dof];
+          const double theta = d.angle + e.cell * alpha;
+          const double c = std::cos(theta), s = std::sin(theta);
+          bool         found = false;
+          for (const auto &node : nodes)
+            if (node.position.distance(Point<3>(d.radius * c, d.radius * s, d.axial)) < 1e-9)
+              {
+                load[p].push_back({{free[node.dofs[0]], free[node.dofs[1]]}, {{c, s}}, e.weight});
+                found = true;
+              }
+          BOOST_REQUIRE(found);
+        }
     Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(n_free, P);
     for (unsigned int q = 0; q < P; ++q)
-      {
-        B(dof[q][0], q) = direction[q][0];
-        B(dof[q][1], q) = direction[q][1];
-      }
+      for (const auto &e : load[q])
+        {
+          B(e.dof[0], q) += e.weight * e.direction[0];
+          B(e.dof[1], q) += e.weight * e.direction[1];
+        }
     Eigen::SparseLU<periodic::SparseComplex> lu(D);
     BOOST_REQUIRE(lu.info() == Eigen::Success);
     const Eigen::MatrixXcd X = lu.solve(B);
-    Eigen::MatrixXcd       g(P, P);
+    Eigen::MatrixXcd       g = Eigen::MatrixXcd::Zero(P, P);
     for (unsigned int p = 0; p < P; ++p)
-      g.row(p) = direction[p][0] * X.row(dof[p][0]) + direction[p][1] * X.row(dof[p][1]);
+      for (const auto &e : load[p])
+        g.row(p) += e.weight * (e.direction[0] * X.row(e.dof[0]) + e.direction[1] * X.row(e.dof[1]));
     return g;
   }
 } // namespace
@@ -155,10 +167,12 @@ BOOST_AUTO_TEST_SUITE(periodic_stage)
 BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
 {
   // N a power of two (N_l = 14: three pieces) and not (N_l = 10: two).
+  for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
   for (const unsigned int N : {16u, 12u})
     {
-      CoarseTyre tyre(N, small_patch(N));
-      BOOST_TEST_CONTEXT("N = " << N)
+      CoarseTyre tyre(N, small_patch(N, load));
+      BOOST_TEST_CONTEXT("N = " << N << (load == periodic::PointLoad::node ? ", node loads" :
+                                                                               ", tributary areas"))
       {
         BOOST_TEST(tyre.patch.points.size() == 9u);
         BOOST_TEST(tyre.patch.n_contact_cells == 2u); // faces and mid-planes both used
@@ -195,12 +209,65 @@ BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
     }
 }
 
+BOOST_AUTO_TEST_CASE(tributary_loads_have_the_moments_of_their_rectangles)
+{
+  // The consistent load of a uniform traction over a rectangle, read at the
+  // nodes' positions: the shape functions reproduce quadratics, so its
+  // weights have the rectangle's area (1), centroid and second moments
+  // (d^2 / 12) exactly; on the flat crown of the default section dS is
+  // uniform in (theta, z). Points on any grid: 7 x 5 points on a patch that
+  // neither starts nor ends on nodes.
+  periodic::PatchRequest request;
+  request.points_along  = 7;
+  request.points_across = 5;
+  request.length        = 0.0913;
+  request.width         = 0.0771;
+  request.load          = periodic::PointLoad::tributary_area;
+  CoarseTyre         tyre(64, request);
+  const auto        &patch = tyre.patch;
+  const double       alpha = tyre.cell->angle();
+  BOOST_TEST(patch.points.size() == 35u);
+  BOOST_TEST(patch.dx == request.length / 7, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(patch.dy == request.width / 5, boost::test_tools::tolerance(1e-14));
+  for (unsigned int p = 0; p < patch.points.size(); ++p)
+    {
+      const auto &point = patch.points[p];
+      // Symmetric about the patch centre.
+      BOOST_TEST(std::abs(point.x + patch.points[patch.points.size() - 1 - p].x) < 1e-15);
+      BOOST_TEST(std::abs(point.y + patch.points[patch.points.size() - 1 - p].y) < 1e-15);
+      double sum = 0., s1 = 0., z1 = 0., s2 = 0., z2 = 0.;
+      for (const auto &e : point.load)
+        {
+          const auto  &d = tyre.periodic_cell.dofs[e.dof];
+          BOOST_TEST(d.on_tread);
+          BOOST_TEST(d.component == 0u);
+          const double s = point.radius * (d.angle + e.cell * alpha - point.angle);
+          const double z = d.axial - point.y;
+          sum += e.weight;
+          s1 += e.weight * s;
+          z1 += e.weight * z;
+          s2 += e.weight * s * s;
+          z2 += e.weight * z * z;
+        }
+      BOOST_TEST_CONTEXT("point " << p << " at x = " << point.x << ", y = " << point.y)
+      {
+        BOOST_TEST(std::abs(sum - 1.) < 1e-13);
+        BOOST_TEST(std::abs(s1) < 1e-12 * patch.dx);
+        BOOST_TEST(std::abs(z1) < 1e-12 * patch.dy);
+        BOOST_TEST(s2 == patch.dx * patch.dx / 12., boost::test_tools::tolerance(1e-10));
+        BOOST_TEST(z2 == patch.dy * patch.dy / 12., boost::test_tools::tolerance(1e-10));
+      }
+    }
+}
+
 BOOST_AUTO_TEST_CASE(ring_response_equals_the_full_ring)
 {
   // The deflection shape's field, read at the contact points, is the
   // full ring's Green's function column of the loaded point.
   const unsigned int N = 12;
-  CoarseTyre         tyre(N, small_patch(N));
+  for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
+  {
+  CoarseTyre         tyre(N, small_patch(N, load));
   auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
                                           tyre.patch);
   periodic::SolveDiagnostics diagnostics;
@@ -209,15 +276,20 @@ BOOST_AUTO_TEST_CASE(ring_response_equals_the_full_ring)
       const double omega = 2. * M_PI * f;
       const auto   g     = full->solve(omega, diagnostics);
       const auto  &q     = tyre.patch.points[4];
-      const auto   u = periodic::ring_response(tyre.periodic_cell, omega, q.cell, q.dof, diagnostics);
+      const auto   u = periodic::ring_response(tyre.periodic_cell, omega, q.load, diagnostics);
       BOOST_TEST(u.cols() == static_cast<long>(N));
       double largest = 0.;
       for (unsigned int p = 0; p < tyre.patch.points.size(); ++p)
-        largest = std::max(largest, std::abs(u(tyre.patch.points[p].dof, tyre.patch.points[p].cell) -
-                                             g(p, 4)));
-      BOOST_TEST_CONTEXT("f = " << f << " Hz")
+        {
+          Complex mean = 0.;
+          for (const auto &e : tyre.patch.points[p].load)
+            mean += e.weight * u(e.dof, e.cell);
+          largest = std::max(largest, std::abs(mean - g(p, 4)));
+        }
+      BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[4].load.size() << " load DoFs")
       BOOST_TEST(largest < 1e-8 * g.col(4).cwiseAbs().maxCoeff());
     }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
@@ -225,16 +297,19 @@ BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
   // Independent of the cylindrical transform and of the cell's periodic
   // inflation: deal.II's ring mesh, its own inflation, Cartesian DoFs.
   const unsigned int N = 8;
-  CoarseTyre         tyre(N, small_patch(N));
+  for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
+  {
+  CoarseTyre         tyre(N, small_patch(N, load));
   auto bloch = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
   periodic::SolveDiagnostics diagnostics;
   for (const double f : {0., 90., 700.})
-    BOOST_TEST_CONTEXT("f = " << f << " Hz")
+    BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
     {
       const double omega = 2. * M_PI * f;
       BOOST_TEST(relative_difference(bloch->solve(omega, diagnostics),
                                      cartesian_ring_green(tyre, omega)) < 1e-8);
     }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
@@ -242,14 +317,16 @@ BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
   // On the full ring: the Bloch solver pairs g(p, q) and g(q, p) from the
   // same terms, so there reciprocity would hold by construction.
   const unsigned int N = 16;
-  CoarseTyre         tyre(N, small_patch(N));
+  for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
+  {
+  CoarseTyre         tyre(N, small_patch(N, load));
   auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
                                           tyre.patch);
   periodic::SolveDiagnostics diagnostics;
   for (double f = 10.; f <= 2000.; f += 220.)
     {
       const auto g = full->solve(2. * M_PI * f, diagnostics);
-      BOOST_TEST_CONTEXT("f = " << f << " Hz")
+      BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
       {
         // g_ij = g_ji.
         BOOST_TEST((g - g.transpose()).cwiseAbs().maxCoeff() < 1e-10 * g.cwiseAbs().maxCoeff());
@@ -258,6 +335,7 @@ BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
           BOOST_TEST(g(i, i).imag() < 0.);
       }
     }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)

@@ -19,7 +19,8 @@ namespace greentread
 {
   namespace analysis
   {
-    /// contact_points.csv: `point,i_x,i_y,x,y,radius,cell`.
+    /// contact_points.csv: `point,i_x,i_y,x,y,radius,load_dofs`: each point's
+    /// centre [m] and the number of radial DoFs its tributary load spreads over.
     void
     write_contact_points(const std::filesystem::path &file, const periodic::ContactPatch &patch,
                          const base::ParameterRecord &record);

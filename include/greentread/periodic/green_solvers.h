@@ -83,7 +83,10 @@ namespace greentread
 
     /**
      * @brief Computes g(w) between the contact points: g(p, q) is the
-     * radial displacement at point p for a unit radial force at point q, in
+     * response of point p to the unit load of point q (ContactPoint::load:
+     * the radial displacement of p's node under a force on q's, or the mean
+     * radial displacement over p's tributary rectangle under a traction over
+     * q's), in
      * the convention D(w) = K + Kp + j w C - w^2 M (so Im g(p, p) <= 0).
      *
      * One object per thread: it keeps its factorisations.
@@ -122,18 +125,17 @@ namespace greentread
     make_green_solver(Method method, const PeriodicCell &cell, const ContactPatch &patch);
 
     /**
-     * @brief The whole ring's response at @p omega to a unit radial force on
-     * the reference DoF @p dof (of [L, I]) of cell @p force_cell, by the
-     * Bloch transform over all N wavenumbers: column m holds the DoFs [L, I]
-     * of cell m, in cylindrical components.
+     * @brief The whole ring's response at @p omega to the unit load @p load
+     * (a contact point's, ContactPoint::load), by the Bloch transform over
+     * all N wavenumbers: column m holds the DoFs [L, I] of cell m, in
+     * cylindrical components.
      * @throws NumericalError as GreenSolver::solve().
      */
     Eigen::MatrixXcd
-    ring_response(const PeriodicCell &cell,
-                  double              omega,
-                  unsigned int        force_cell,
-                  unsigned int        dof,
-                  SolveDiagnostics   &diagnostics);
+    ring_response(const PeriodicCell           &cell,
+                  double                        omega,
+                  const std::vector<LoadEntry> &load,
+                  SolveDiagnostics             &diagnostics);
 
     /// Above this condition estimate a solve is refused (an undamped
     /// resonance): about 1e-16 x 1e13 = 1e-3 relative accuracy left.

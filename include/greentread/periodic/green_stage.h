@@ -50,7 +50,7 @@ namespace greentread
 
       /// Two lines: the ring, its cell and inflation; the contact points.
       std::string
-      describe(double pressure, const PatchRequest &request) const;
+      describe(double pressure) const;
     };
 
     /**
