@@ -275,42 +275,10 @@ namespace greentread
     ContactPatch
     place_on_nodes(const PeriodicCell &cell, const PatchRequest &request)
     {
-      // The radial tread DoFs of the left face (layer 0) and of the
-      // mid-plane (layer 1), by their axial position.
-      double radius = 0., z_scale = 0.;
-      for (const auto &d : cell.dofs)
-        {
-          z_scale = std::max(z_scale, std::abs(d.axial) + d.radius);
-          if (d.on_tread && d.component == 0)
-            radius = std::max(radius, d.radius);
-        }
-      if (radius == 0.)
-        throw InputError("the cell has no tread surface nodes: the .geo must define the "
-                         "physical curve 'tread surface'");
-      const auto key = [&](const double z) { return std::llround(z / (1e-9 * z_scale)); };
-      std::map<long long, unsigned int> face_dof, mid_dof;
-      std::map<long long, double>       radius_at;
-      for (unsigned int i = 0; i < cell.n_face + cell.n_interior; ++i)
-        {
-          const auto &d = cell.dofs[i];
-          if (!d.on_tread || d.component != 0)
-            continue;
-          if (i < cell.n_face)
-            {
-              face_dof[key(d.axial)]  = i;
-              radius_at[key(d.axial)] = d.radius;
-            }
-          else if (std::abs(d.angle - 0.5 * cell.angle) < 1e-6 * cell.angle)
-            mid_dof[key(d.axial)] = i;
-        }
-      std::vector<double> z;
-      for (unsigned int i = 0; i < cell.n_face; ++i)
-        if (cell.dofs[i].on_tread && cell.dofs[i].component == 0)
-          z.push_back(cell.dofs[i].axial);
-      std::sort(z.begin(), z.end());
-      z.erase(std::unique(z.begin(), z.end(),
-                          [&](double a, double b) { return key(a) == key(b); }),
-              z.end());
+      // The radial tread DoFs of the left face and of the mid-plane.
+      const TreadNodes           nodes  = tread_nodes(cell);
+      const std::vector<double> &z      = nodes.z;
+      const double               radius = nodes.outer_radius;
 
       ContactPatch patch;
       patch.points_along  = request.points_along;
@@ -344,7 +312,7 @@ namespace greentread
       const double       half_cell = 0.5 * radius * cell.angle;
       const double       asked_dx  = request.length / nx;
       long qx = nx == 1 ? 2 : std::max(1L, std::lround(asked_dx / half_cell));
-      if (mid_dof.empty() && qx % 2 == 1)
+      if (nodes.degree == 1 && qx % 2 == 1)
         qx += 1; // no mid-plane nodes (linear elements): faces only
       const long last_s = (static_cast<long>(nx) - 1) * qx;
       patch.n_contact_cells = static_cast<unsigned int>(last_s / 2 + 1);
@@ -377,16 +345,13 @@ namespace greentread
           const long s = i * qx;
           for (unsigned int j = 0; j < ny; ++j)
             {
-              const double y      = z[first_y + j * qy];
-              const auto  &layer  = s % 2 == 0 ? face_dof : mid_dof;
-              const auto   found  = layer.find(key(y));
-              if (found == layer.end())
-                throw InputError("the tread surface has no mid-plane node at y = " +
-                                 format_short(y) + " m for a contact point; change 'Patch "
-                                 "length' or 'Points along'");
-              patch.points.push_back(
-                {(s - 0.5 * last_s) * half_cell, y, radius_at.at(key(y)), 0.5 * s * cell.angle,
-                 {{static_cast<unsigned int>(s / 2), found->second, 1.}}});
+              // Even strides are faces; odd ones mid-planes, which
+              // quadratic elements alone have (qx is even otherwise).
+              const std::size_t  k   = first_y + j * qy;
+              const unsigned int dof = s % 2 == 0 ? nodes.face_dof[k] : nodes.mid_dof[k];
+              patch.points.push_back({(s - 0.5 * last_s) * half_cell, z[k], nodes.radius[k],
+                                      0.5 * s * cell.angle,
+                                      {{static_cast<unsigned int>(s / 2), dof, 1.}}});
             }
         }
       return patch;
