@@ -512,12 +512,19 @@ namespace greentread
     void
     BlochCell::set_frequency(const double omega)
     {
+      set_combination(1., Complex(0., omega), -omega * omega);
+    }
+
+
+
+    void
+    BlochCell::set_combination(const Complex a, const Complex c, const Complex m)
+    {
       for (unsigned int t = 0; t < 3; ++t)
         {
           at_frequency[t].resize(matrix.nonZeros());
           for (std::size_t e = 0; e < at_frequency[t].size(); ++e)
-            at_frequency[t][e] =
-              Complex(parts[0][t][e] - omega * omega * parts[2][t][e], omega * parts[1][t][e]);
+            at_frequency[t][e] = a * parts[0][t][e] + c * parts[1][t][e] + m * parts[2][t][e];
         }
     }
 

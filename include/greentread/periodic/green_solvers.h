@@ -59,6 +59,11 @@ namespace greentread
       void
       set_frequency(double omega);
 
+      /// Take a (K + Kp) + c C + m M for the following assemble(): (1, 0, 0)
+      /// gives the Bloch stiffness K_phi, (0, 0, 1) the mass M_phi.
+      void
+      set_combination(Complex a, Complex c, Complex m);
+
       /// D_phi at the current frequency; its pattern never changes.
       const SparseComplex &
       assemble(double phi);
