@@ -2,6 +2,7 @@
 // directly (from the same cell, and from deal.II's own ring mesh in
 // Cartesian components), the paper's doubling against the Bloch transform,
 // reciprocity, passivity, and a thin ring's analytic natural frequencies.
+#include "coarse_tyre.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/cylindrical.h>
@@ -28,39 +29,6 @@ using periodic::Complex;
 
 namespace
 {
-  /// The coarse inflated tyre cell and its contact points.
-  struct CoarseTyre
-  {
-    geometry::GeometryParameters geometry;
-    fe::MaterialParameters       materials;
-    std::unique_ptr<geometry::TyreCell> cell;
-    std::unique_ptr<fe::ElasticModel>   model;
-    periodic::PeriodicCell              periodic_cell;
-    periodic::ContactPatch              patch;
-
-    explicit CoarseTyre(const unsigned int n_cells, const periodic::PatchRequest &request)
-    {
-      geometry.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
-      geometry.mesh_size = 0.04;
-      geometry.n_cells   = n_cells;
-      cell  = std::make_unique<geometry::TyreCell>(geometry);
-      model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
-      model->assemble();
-      AffineConstraints<double> constraints;
-      model->add_clamp(geometry::rim_seat, constraints);
-      model->add_rotational_periodicity(geometry::periodic_first, geometry::periodic_second,
-                                        cell->angle(), constraints);
-      constraints.close();
-      const auto u =
-        model->solve_static(constraints, model->pressure_load(geometry::inner_surface, 2e5));
-      model->assemble_geometric_stiffness(u);
-      periodic_cell = periodic::make_periodic_cell(*model, cell->angle(), n_cells,
-                                                   geometry::rim_seat, geometry::tread_surface,
-                                                   true);
-      patch = periodic::place_contact_points(periodic_cell, request);
-    }
-  };
-
   /// Points on faces and mid-planes alike: 3 x 3 at half-cell spacing (as
   /// nodes, or as the centres of tributary areas).
   periodic::PatchRequest
@@ -86,7 +54,7 @@ namespace
   /// The ring from deal.II's own mesh of N rotated cells, in Cartesian
   /// components: its own inflation, Kp, and a direct solve.
   Eigen::MatrixXcd
-  cartesian_ring_green(const CoarseTyre &tyre, const double omega)
+  cartesian_ring_green(const test::CoarseTyre &tyre, const double omega)
   {
     Triangulation<3> ring;
     geometry::make_ring(tyre.cell->cell(), tyre.cell->angle(), tyre.cell->n_cells(), ring);
@@ -170,7 +138,7 @@ BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
   for (const unsigned int N : {16u, 12u})
     {
-      CoarseTyre tyre(N, small_patch(N, load));
+      test::CoarseTyre tyre(N, small_patch(N, load));
       BOOST_TEST_CONTEXT("N = " << N << (load == periodic::PointLoad::node ? ", node loads" :
                                                                                ", tributary areas"))
       {
@@ -223,7 +191,7 @@ BOOST_AUTO_TEST_CASE(tributary_loads_have_the_moments_of_their_rectangles)
   request.length        = 0.0913;
   request.width         = 0.0771;
   request.load          = periodic::PointLoad::tributary_area;
-  CoarseTyre         tyre(64, request);
+  test::CoarseTyre         tyre(64, request);
   const auto        &patch = tyre.patch;
   const double       alpha = tyre.cell->angle();
   BOOST_TEST(patch.points.size() == 35u);
@@ -267,7 +235,7 @@ BOOST_AUTO_TEST_CASE(ring_response_equals_the_full_ring)
   const unsigned int N = 12;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
   {
-  CoarseTyre         tyre(N, small_patch(N, load));
+  test::CoarseTyre         tyre(N, small_patch(N, load));
   auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
                                           tyre.patch);
   periodic::SolveDiagnostics diagnostics;
@@ -299,7 +267,7 @@ BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
   const unsigned int N = 8;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
   {
-  CoarseTyre         tyre(N, small_patch(N, load));
+  test::CoarseTyre         tyre(N, small_patch(N, load));
   auto bloch = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
   periodic::SolveDiagnostics diagnostics;
   for (const double f : {0., 90., 700.})
@@ -319,7 +287,7 @@ BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
   const unsigned int N = 16;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
   {
-  CoarseTyre         tyre(N, small_patch(N, load));
+  test::CoarseTyre         tyre(N, small_patch(N, load));
   auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
                                           tyre.patch);
   periodic::SolveDiagnostics diagnostics;
