@@ -1,0 +1,75 @@
+#pragma once
+
+#include <greentread/periodic/periodic_cell.h>
+
+#include <Eigen/Dense>
+
+/**
+ * @file
+ * The undamped modes of the ring, one circumferential wavenumber at a time.
+ *
+ * A ring of N identical cells is block circulant, so its modes are Bloch
+ * waves: u_m = psi e^{i phi m} in cell m, phi = 2 pi k / N, where psi solves
+ * the Hermitian problem of the reduced cell (BlochCell)
+ *   K_phi psi = w^2 M_phi psi,   psi^H M_phi psi = 1,
+ * with K_phi and M_phi the cell's K + Kp and M folded onto [L, I].
+ * Wavenumbers k and N - k have the same frequencies, with conjugate shapes.
+ */
+
+namespace greentread
+{
+  namespace periodic
+  {
+    /// The modes of one wavenumber below a cut-off.
+    struct BlochModes
+    {
+      unsigned int wavenumber = 0;
+      /// Natural angular frequencies w_r [rad/s], ascending.
+      Eigen::VectorXd omega;
+      /// psi_r^H C_phi psi_r / (2 w_r): each mode's viscous damping ratio
+      /// from the cell's damping C, its diagonal in the modal basis.
+      Eigen::VectorXd damping_ratio;
+      /// The mass-normalised shapes psi_r over [L, I], one column each.
+      Eigen::MatrixXcd shapes;
+      /// How the search went: sparse solves, Krylov dimension, and the
+      /// largest relative residual |K psi - w^2 M psi| / |K psi| kept.
+      unsigned int n_solves = 0, krylov_dimension = 0;
+      double       max_residual = 0.;
+    };
+
+    /// How far and how tightly bloch_modes() searches.
+    struct ModeSearch
+    {
+      /// Keep the modes with w_r <= cutoff [rad/s].
+      double cutoff = 0.;
+      /// A Ritz pair counts as converged when ||K x - w^2 M x|| / ||K x||
+      /// is below this, or when it is at rounding level (backward error
+      /// ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||) below 1e3 eps).
+      double tolerance = 1e-9;
+      /// Vectors added per step: a mode repeated more often than this
+      /// could be missed (the cell's modes are distinct, and k, N - k are
+      /// separate problems).
+      unsigned int block = 4;
+    };
+
+    /**
+     * @brief The modes of wavenumber @p k of @p cell up to the cut-off.
+     *
+     * Shift-invert block Krylov with Rayleigh-Ritz: the Krylov space of
+     * T = (K_phi - s M_phi)^{-1} M_phi from a block X of fixed pseudo-random
+     * vectors, s = -(cutoff / 20)^2 (K_phi - s M_phi is positive definite,
+     * even for an unheld cell), kept M-orthonormal by two passes of block
+     * Gram-Schmidt, is grown until every Ritz pair up to 1.25 times the
+     * cut-off (and at least one beyond it) has converged. The sparse
+     * factorisation is the Bloch solver's (supernodal LU with COLAMD), one
+     * per wavenumber. Spectra and ARPACK's symmetric drivers are real only,
+     * and the real form of twice the size repeats every eigenvalue, so this
+     * small driver is written here and tested against dense solves.
+     *
+     * @throws NumericalError if the factorisation fails or the search does
+     * not converge within the size of the cell, naming the wavenumber.
+     */
+    BlochModes
+    bloch_modes(const PeriodicCell &cell, unsigned int k, const ModeSearch &search);
+  } // namespace periodic
+} // namespace greentread

@@ -1,0 +1,151 @@
+// The ring's Bloch modes and the modal synthesis against independent
+// references: dense generalised eigen-solves of the same Bloch matrices, and
+// the direct Bloch solve of the Green's functions (with every mode kept and a
+// proportional damping the synthesis is exact; with a cut-off it converges).
+#include "coarse_tyre.h"
+#include <greentread/modal/mode_synthesis.h>
+#include <greentread/periodic/bloch_modes.h>
+#include <greentread/periodic/green_solvers.h>
+#include <greentread/periodic/ring_modes.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace greentread;
+using periodic::Complex;
+
+namespace
+{
+  /// 4 x 3 tributary rectangles on a 6 x 5 cm patch.
+  periodic::PatchRequest
+  patch_request()
+  {
+    periodic::PatchRequest r;
+    r.load          = periodic::PointLoad::tributary_area;
+    r.points_along  = 4;
+    r.points_across = 3;
+    r.length        = 0.06;
+    r.width         = 0.05;
+    return r;
+  }
+
+  /// The Bloch matrices a K + c C + m M of wavenumber k, dense.
+  Eigen::MatrixXcd
+  dense_part(const periodic::PeriodicCell &cell, const unsigned int k, const Complex a,
+             const Complex c, const Complex m)
+  {
+    periodic::BlochCell bloch(cell);
+    bloch.set_combination(a, c, m);
+    const Eigen::MatrixXcd A = Eigen::MatrixXcd(bloch.assemble(2. * M_PI * k / cell.n_cells));
+    return 0.5 * (A + A.adjoint());
+  }
+
+  /// The direct Bloch Green's functions at @p omega.
+  Eigen::MatrixXcd
+  direct(const test::CoarseTyre &tyre, const double omega)
+  {
+    auto solver = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
+    periodic::SolveDiagnostics diagnostics;
+    return solver->solve(omega, diagnostics);
+  }
+
+  modal::ModeSynthesis
+  synthesis(const test::CoarseTyre &tyre, const periodic::RingModes &modes)
+  {
+    std::vector<std::array<double, 3>> points;
+    for (const auto &p : tyre.patch.points)
+      points.push_back({{p.x, p.y, p.radius}});
+    return modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                             direct(tyre, 0.).real(), points);
+  }
+
+  double
+  relative_difference(const Eigen::MatrixXcd &a, const Eigen::MatrixXcd &b)
+  {
+    return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(ring_modes)
+
+BOOST_AUTO_TEST_CASE(bloch_modes_equal_a_dense_eigen_solve)
+{
+  // The inflated cell (K + Kp): wavenumbers 0 and N/2 are real problems,
+  // 3 a complex Hermitian one.
+  const unsigned int     N = 16;
+  const test::CoarseTyre tyre(N, patch_request());
+  periodic::ModeSearch   search;
+  search.cutoff = 2. * M_PI * 3000.;
+  for (const unsigned int k : {0u, 3u, N / 2})
+    {
+      const auto K = dense_part(tyre.periodic_cell, k, 1., 0., 0.);
+      const auto C = dense_part(tyre.periodic_cell, k, 0., 1., 0.);
+      const auto M = dense_part(tyre.periodic_cell, k, 0., 0., 1.);
+      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> dense(K, M);
+      const auto modes = periodic::bloch_modes(tyre.periodic_cell, k, search);
+      Eigen::Index expected = 0;
+      while (expected < dense.eigenvalues().size() &&
+             dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
+        ++expected;
+      BOOST_TEST_MESSAGE("k = " << k << ": " << modes.omega.size() << " modes to 3 kHz ("
+                                << K.rows() << " DoFs), first "
+                                << modes.omega(0) / (2. * M_PI) << " Hz, Krylov dimension "
+                                << modes.krylov_dimension << ", residual "
+                                << modes.max_residual);
+      BOOST_TEST_REQUIRE(modes.omega.size() == expected);
+      BOOST_TEST_REQUIRE(expected > 5);
+      const Eigen::MatrixXcd gram = modes.shapes.adjoint() * M * modes.shapes;
+      BOOST_TEST((gram - Eigen::MatrixXcd::Identity(expected, expected)).cwiseAbs().maxCoeff() <
+                 1e-10);
+      for (Eigen::Index r = 0; r < expected; ++r)
+        {
+          const double w = std::sqrt(dense.eigenvalues()(r));
+          BOOST_TEST(std::abs(modes.omega(r) / w - 1.) < 1e-9);
+          // The damping ratio from the dense eigenvector (its phase cancels),
+          // unless the frequency is repeated.
+          const bool repeated = (r > 0 && dense.eigenvalues()(r) < 1.0001 * dense.eigenvalues()(r - 1)) ||
+                                (r + 1 < expected && dense.eigenvalues()(r + 1) < 1.0001 * dense.eigenvalues()(r));
+          if (!repeated)
+            {
+              const Eigen::VectorXcd v  = dense.eigenvectors().col(r);
+              const double           xi = v.dot(C * v).real() / (2. * w * v.dot(M * v).real());
+              BOOST_TEST(std::abs(modes.damping_ratio(r) - xi) < 1e-9 * xi);
+            }
+          if (k == 0 || 2 * k == N)
+            // Real up to the eigenvector's error, about residual / relative gap.
+            BOOST_TEST(modes.shapes.col(r).imag().norm() < 1e-6 * modes.shapes.col(r).norm());
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(every_mode_and_proportional_damping_give_the_bloch_solve)
+{
+  // With C = a M + b K and every mode kept, the synthesis is the exact
+  // inverse of D(w): only round-off may separate it from the direct solve,
+  // and the static residual G_r vanishes.
+  const unsigned int     N = 12;
+  const test::CoarseTyre tyre(N, patch_request(), false);
+  periodic::ModeSearch   search;
+  search.cutoff    = 2. * M_PI * 1e7;
+  search.tolerance = 1e-7;
+  const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
+  const auto model = synthesis(tyre, modes);
+  const unsigned int n_bloch = tyre.periodic_cell.n_face + tyre.periodic_cell.n_interior;
+  BOOST_TEST_MESSAGE(modes.size() << " ring modes from cells of " << n_bloch << " DoFs, up to "
+                                  << modes.omega.maxCoeff() / (2. * M_PI) << " Hz");
+  BOOST_TEST(modes.size() == N * n_bloch);
+  BOOST_TEST(model.instantaneous.cwiseAbs().maxCoeff() <
+             1e-8 * direct(tyre, 0.).cwiseAbs().maxCoeff());
+  for (const double f : {0., 150., 700., 2500.})
+    {
+      const double omega = 2. * M_PI * f;
+      const double error = relative_difference(model.at(omega), direct(tyre, omega));
+      BOOST_TEST_MESSAGE("every mode, " << f << " Hz: synthesis against Bloch " << error);
+      BOOST_TEST(error < 1e-8);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
