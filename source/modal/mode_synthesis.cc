@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace greentread
 {
@@ -100,7 +101,9 @@ namespace greentread
       for (unsigned int i = 0; i < P; ++i)
         for (unsigned int j = 0; j < P; ++j)
           {
-            const double e = difference(i, j) / size(i, j);
+            // A pair that is zero at every line: no error if the model is zero too.
+            const double e = size(i, j) > 0. ? difference(i, j) / size(i, j) :
+                             difference(i, j) > 0. ? std::numeric_limits<double>::infinity() : 0.;
             errors.pair_error[i * P + j] = e;
             if (e > errors.worst)
               {
