@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <thread>
+#include <vector>
 
 namespace greentread
 {
@@ -52,6 +54,37 @@ namespace greentread
       char line[256];
       std::snprintf(line, sizeof(line), "%s: done (%zu), %.1f s", label.c_str(), total, elapsed);
       std::cerr << line << std::endl;
+    }
+
+
+
+    void
+    run_on_threads(const unsigned int               n_threads,
+                   const std::function<void()>     &work,
+                   const std::atomic<unsigned int> &done,
+                   const std::size_t                total,
+                   Progress                        *progress,
+                   const std::function<bool()>     &failed)
+    {
+      std::vector<std::thread> threads;
+      for (unsigned int t = 1; t < n_threads; ++t)
+        threads.emplace_back(work);
+      if (progress != nullptr)
+        {
+          // The calling thread works too, and reports between its items.
+          std::thread main_worker(work);
+          while (done < total && !failed())
+            {
+              progress->update(done);
+              std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            }
+          main_worker.join();
+          progress->finish();
+        }
+      else
+        work();
+      for (auto &t : threads)
+        t.join();
     }
   } // namespace base
 } // namespace greentread

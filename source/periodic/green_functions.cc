@@ -208,30 +208,11 @@ namespace greentread
               failure = e.what();
           }
       };
-      std::vector<std::thread> threads;
-      for (unsigned int t = 1; t < n_threads; ++t)
-        threads.emplace_back(work);
-      if (show_progress && rank == 0)
-        {
-          // The main thread works too, and reports between its lines.
-          std::thread main_worker(work);
-          while (done < lines.size())
-            {
-              {
-                std::lock_guard<std::mutex> lock(mutex);
-                if (!failure.empty())
-                  break;
-              }
-              progress.update(done);
-              std::this_thread::sleep_for(std::chrono::milliseconds(200));
-            }
-          main_worker.join();
-          progress.finish();
-        }
-      else
-        work();
-      for (auto &t : threads)
-        t.join();
+      base::run_on_threads(n_threads, work, done, lines.size(),
+                           show_progress && rank == 0 ? &progress : nullptr, [&]() {
+                                 std::lock_guard<std::mutex> lock(mutex);
+                                 return !failure.empty();
+                               });
 
       // Every rank learns whether any failed; the lowest failing rank's
       // message is the one reported.

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <cmath>
 #include <mutex>
 #include <numeric>
@@ -103,34 +104,16 @@ namespace greentread
       };
       const unsigned int n_threads =
         std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), mine.size()));
-      std::vector<std::thread> threads;
-      for (unsigned int t = 1; t < n_threads; ++t)
-        threads.emplace_back(work);
+      std::unique_ptr<base::Progress> progress;
       if (show_progress && rank == 0)
-        {
-          base::Progress progress("ring modes (" +
-                                    (n_ranks == 1 ? std::string() : "rank 0's ") +
-                                    std::to_string(mine.size()) + " of " +
-                                    std::to_string(n_k) + " wavenumbers)",
-                                  mine.size());
-          std::thread main_worker(work);
-          while (done < mine.size())
-            {
-              {
-                std::lock_guard<std::mutex> lock(mutex);
-                if (!failure.empty())
-                  break;
-              }
-              progress.update(done);
-              std::this_thread::sleep_for(std::chrono::milliseconds(200));
-            }
-          main_worker.join();
-          progress.finish();
-        }
-      else
-        work();
-      for (auto &t : threads)
-        t.join();
+        progress = std::make_unique<base::Progress>(
+          "ring modes (" + (n_ranks == 1 ? std::string() : "rank 0's ") +
+            std::to_string(mine.size()) + " of " + std::to_string(n_k) + " wavenumbers)",
+          mine.size());
+      base::run_on_threads(n_threads, work, done, mine.size(), progress.get(), [&]() {
+                                 std::lock_guard<std::mutex> lock(mutex);
+                                 return !failure.empty();
+                               });
       throw_if_any_rank_failed(comm, failure.empty() ? RankFailure::none : RankFailure::numerical,
                                "ring modes: " + failure);
 

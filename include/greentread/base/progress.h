@@ -1,7 +1,9 @@
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -49,5 +51,19 @@ namespace greentread
       std::chrono::steady_clock::time_point              start;
       std::chrono::steady_clock::time_point              last;
     };
+
+    /**
+     * Runs @p work on @p n_threads threads, the calling thread being one of
+     * them, and returns when all have returned. With a @p progress, the
+     * calling thread reports @p done out of @p total every 0.2 s until the
+     * work is done or @p failed() says a worker has given up.
+     */
+    void
+    run_on_threads(unsigned int                     n_threads,
+                   const std::function<void()>     &work,
+                   const std::atomic<unsigned int> &done,
+                   std::size_t                      total,
+                   Progress                        *progress,
+                   const std::function<bool()>     &failed);
   } // namespace base
 } // namespace greentread
