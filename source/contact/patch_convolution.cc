@@ -13,15 +13,20 @@ namespace greentread
   {
     namespace
     {
-      /// Per-pole quantities shared by both convolutions.
+      /// Per-pole quantities shared by the convolutions.
       struct PoleWeights
       {
         // Per term k: e^{lambda dt} and the weights of the start and end
         // values of a linear load (greentread/convolution/
         // modal_recursive_convolution.h).
         std::vector<std::complex<double>> alpha, beta_a, beta_b;
-        // Per term k: c_u = s R, c_v = s R lambda, s = 2 for pairs, 1 for real poles.
+        // Per term k, full form: c_u = s R, c_v = s R lambda, s = 2 for
+        // pairs, 1 for real poles.
         std::vector<Eigen::MatrixXcd> cu, cv;
+        // Rank-one form: c_u = s c_k phi_k phi_k^T, stored as the scalars
+        // s c_k and s c_k lambda_k and the shapes phi_k (rows).
+        std::vector<std::complex<double>> cu1, cv1;
+        Eigen::MatrixXd                   shapes;
         // The instantaneous compliance (may be empty) and the step.
         Eigen::MatrixXd instantaneous;
         double          dt;
@@ -33,6 +38,8 @@ namespace greentread
           if (!(dt > 0.) || !std::isfinite(dt))
             throw InputError("patch convolution: time step " + format_short(dt) +
                              " s is not allowed; allowed: a finite number > 0");
+          if (model.is_rank_one())
+            shapes = model.shapes;
           for (unsigned int k = 0; k < model.n_terms(); ++k)
             {
               const std::complex<double> l = model.lambda[k];
@@ -45,6 +52,15 @@ namespace greentread
               beta_a.push_back(dt * psi[1]);
               beta_b.push_back(dt * (psi[0] - psi[1]));
               const double scale = model.real[k] ? 1. : 2.;
+              if (model.is_rank_one())
+                {
+                  const std::complex<double> c =
+                    model.real[k] ? std::complex<double>(scale * model.factor[k].real()) :
+                                    scale * model.factor[k];
+                  cu1.push_back(c);
+                  cv1.push_back(c * l);
+                  continue;
+                }
               Eigen::MatrixXcd r = scale * model.residues[k];
               if (model.real[k])
                 r = r.real().cast<std::complex<double>>();
@@ -53,11 +69,26 @@ namespace greentread
             }
         }
 
-        /// Re sum_k c_k z_k for per-term coefficients z.
-        static Eigen::MatrixXd
-        contract(const std::vector<Eigen::MatrixXcd>        &c,
-                 const std::vector<std::complex<double>> &z)
+        bool
+        rank_one() const
         {
+          return shapes.rows() > 0;
+        }
+
+        /// Re sum_k c_k z_k (c_u, or c_v with @p velocity) for per-term
+        /// coefficients z.
+        Eigen::MatrixXd
+        contract(const bool velocity, const std::vector<std::complex<double>> &z) const
+        {
+          if (rank_one())
+            {
+              const auto     &c = velocity ? cv1 : cu1;
+              Eigen::VectorXd w(z.size());
+              for (std::size_t k = 0; k < z.size(); ++k)
+                w(k) = std::real(c[k] * z[k]);
+              return shapes.transpose() * w.asDiagonal() * shapes;
+            }
+          const auto     &c      = velocity ? cv : cu;
           Eigen::MatrixXd result = Eigen::MatrixXd::Zero(c[0].rows(), c[0].cols());
           for (std::size_t k = 0; k < c.size(); ++k)
             result += (c[k].real() * z[k].real() - c[k].imag() * z[k].imag());
@@ -69,10 +100,10 @@ namespace greentread
         {
           const std::vector<std::complex<double>> ones(alpha.size(), 1.);
           PatchInfluence                          psi;
-          const Eigen::MatrixXd                   g0 = contract(cu, ones);
-          psi.u = {{contract(cu, alpha), contract(cu, beta_a), contract(cu, beta_b), g0}};
-          psi.v = {{contract(cv, alpha), contract(cv, beta_a), contract(cv, beta_b) + g0,
-                    contract(cv, ones)}};
+          const Eigen::MatrixXd                   g0 = contract(false, ones);
+          psi.u = {{contract(false, alpha), contract(false, beta_a), contract(false, beta_b), g0}};
+          psi.v = {{contract(true, alpha), contract(true, beta_a), contract(true, beta_b) + g0,
+                    contract(true, ones)}};
           if (instantaneous.size() && instantaneous.cwiseAbs().maxCoeff() > 0.)
             {
               // u = G_r q(t): the end value acts at once; the slope of the
@@ -84,6 +115,121 @@ namespace greentread
             }
           return psi;
         }
+      };
+
+
+
+      /**
+       * The recursion for a rank-one model: one complex state per term,
+       * driven by the modal force phi_k^T q, and u = sum_k phi_k Re(c_k s_k).
+       * Per step two products with the N_m x N_p shapes: O(N_p N_m), not
+       * O(N_p^2 N_m).
+       */
+      class ModePatchConvolution : public PatchConvolution
+      {
+      public:
+        ModePatchConvolution(const modal::PatchModel &model, const double dt,
+                             const unsigned int n_threads)
+          : PatchConvolution(model.n_points(), dt)
+          , threads(n_threads)
+          , w(model, dt)
+          , shapes(model.shapes)
+          , shapes_t(model.shapes.transpose())
+          , lambda(model.lambda)
+        {
+          psi               = w.influence();
+          const auto n_term = shapes.rows();
+          sr = si = hr = hi = Eigen::VectorXd::Zero(n_term);
+          weights.resize(n_term, 2);
+          forces.resize(n_term, 4);
+          loads.resize(n_p, 4);
+        }
+
+        void
+        history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
+        {
+          for (Eigen::Index k = 0; k < sr.size(); ++k)
+            {
+              const std::complex<double> h = w.alpha[k] * std::complex<double>(sr(k), si(k));
+              hr(k)                        = h.real();
+              hi(k)                        = h.imag();
+              weights(k, 0)                = std::real(w.cu1[k] * h);
+              weights(k, 1)                = std::real(w.cv1[k] * h);
+            }
+          product(shapes_t, weights, uv);
+          u = uv.col(0);
+          v = uv.col(1);
+          history_ready = true;
+        }
+
+        void
+        advance(const PatchLoad &load) override
+        {
+          if (!history_ready)
+            {
+              Eigen::VectorXd u(n_p), v(n_p);
+              history(u, v);
+            }
+          for (unsigned int g = 0; g < 4; ++g)
+            loads.col(g) = load.component[g];
+          product(shapes, loads, forces);
+          for (Eigen::Index k = 0; k < sr.size(); ++k)
+            {
+              const std::complex<double> s = std::complex<double>(hr(k), hi(k)) +
+                                             w.alpha[k] * forces(k, 0) +
+                                             w.beta_a[k] * forces(k, 1) +
+                                             w.beta_b[k] * forces(k, 2) + forces(k, 3);
+              sr(k) = s.real();
+              si(k) = s.imag();
+            }
+          history_ready = false;
+        }
+
+        void
+        preload(const Eigen::VectorXd &q0) override
+        {
+          // s_k = int_{-inf}^0 e^{-lambda tau} phi_k^T q0 dtau = -phi_k^T q0 / lambda_k.
+          const Eigen::VectorXd f = shapes * q0;
+          for (Eigen::Index k = 0; k < sr.size(); ++k)
+            {
+              const std::complex<double> s = -f(k) / lambda[k];
+              sr(k)                        = s.real();
+              si(k)                        = s.imag();
+            }
+          history_ready = false;
+        }
+
+        std::string
+        name() const override
+        {
+          return "modal-recursive";
+        }
+
+      private:
+        /// out = A * B, the rows of A split over two threads when asked.
+        void
+        product(const Eigen::MatrixXd &A, const Eigen::MatrixXd &B, Eigen::MatrixXd &out) const
+        {
+          out.resize(A.rows(), B.cols());
+          const Eigen::Index half = A.rows() / 2;
+          if (threads > 1 && half > 64)
+            {
+              auto task = dealii::Threads::new_task(
+                [&]() { out.topRows(half).noalias() = A.topRows(half) * B; });
+              out.bottomRows(A.rows() - half).noalias() = A.bottomRows(A.rows() - half) * B;
+              task.join();
+            }
+          else
+            out.noalias() = A * B;
+        }
+
+        unsigned int                      threads;
+        PoleWeights                       w;
+        Eigen::MatrixXd                   shapes, shapes_t;
+        std::vector<std::complex<double>> lambda;
+        Eigen::VectorXd                   sr, si, hr, hi;
+        Eigen::MatrixXd                   weights, forces, loads, uv;
+        bool                              history_ready = false;
       };
 
 
@@ -211,18 +357,40 @@ namespace greentread
                                const unsigned int n_kernel_)
           : PatchConvolution(model.n_points(), dt)
           , n_kernel(std::max(2u, n_kernel_))
-          , preload_model(model, dt, 1)
+          , preload_model(make_modal_patch_convolution(model, dt, 1))
         {
           const PoleWeights w(model, dt);
           psi = w.influence();
           // Lag m >= 1: the loads of step n - m seen at t_{n+1} are those of
           // the current step's influence, decayed over m steps:
           // W_m = Re sum_k c_k e^{lambda_k m dt} w_k, w = (alpha, beta_a, beta_b, 1).
-          // All lags at once as one product: rows (lag, generator), columns
-          // (i, j), inner dimension the real and imaginary part of each pole.
+          // Stored per lag as one n_p x 4 n_p block [W_g0 W_g1 W_g2 W_g3].
           const unsigned int n_terms = model.n_terms();
           const Eigen::Index n_lags  = n_kernel - 1;
-          Eigen::MatrixXd    Z(n_lags * 4, 2 * n_terms);
+          Wu.assign(n_lags, Eigen::MatrixXd(n_p, 4 * n_p));
+          Wv.assign(n_lags, Eigen::MatrixXd(n_p, 4 * n_p));
+          if (w.rank_one())
+            {
+              std::vector<std::complex<double>> z(n_terms);
+              for (Eigen::Index m = 0; m < n_lags; ++m)
+                for (unsigned int g = 0; g < 4; ++g)
+                  {
+                    for (unsigned int k = 0; k < n_terms; ++k)
+                      {
+                        const std::complex<double> gen[4] = {w.alpha[k], w.beta_a[k],
+                                                             w.beta_b[k], 1.};
+                        z[k] = std::exp(model.lambda[k] * double(m + 1) * dt) * gen[g];
+                      }
+                    Wu[m].middleCols(g * n_p, n_p) = w.contract(false, z);
+                    Wv[m].middleCols(g * n_p, n_p) = w.contract(true, z);
+                  }
+              past.assign(n_lags, Eigen::VectorXd::Zero(4 * n_p));
+              return;
+            }
+          // Full form: all lags at once as one product: rows (lag, generator),
+          // columns (i, j), inner dimension the real and imaginary part of
+          // each pole.
+          Eigen::MatrixXd Z(n_lags * 4, 2 * n_terms);
           for (Eigen::Index m = 0; m < n_lags; ++m)
             for (unsigned int k = 0; k < n_terms; ++k)
               {
@@ -249,9 +417,7 @@ namespace greentread
                                          Eigen::Index(n_p) * n_p);
                 }
               const Eigen::MatrixXd W = Z * C;
-              // Store per lag one n_p x 4 n_p block [W_g0 W_g1 W_g2 W_g3].
               auto &target = (c == &w.cu) ? Wu : Wv;
-              target.assign(n_lags, Eigen::MatrixXd(n_p, 4 * n_p));
               for (Eigen::Index m = 0; m < n_lags; ++m)
                 for (unsigned int g = 0; g < 4; ++g)
                   target[m].middleCols(g * n_p, n_p) =
@@ -263,7 +429,7 @@ namespace greentread
         void
         history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
         {
-          preload_model.history(u, v);
+          preload_model->history(u, v);
           const std::size_t n_lags = std::min<std::size_t>(n_recorded, past.size());
           for (std::size_t m = 0; m < n_lags; ++m)
             {
@@ -283,13 +449,13 @@ namespace greentread
           head = (head + 1) % past.size();
           ++n_recorded;
           // The preload decays freely.
-          preload_model.advance(PatchLoad(n_p));
+          preload_model->advance(PatchLoad(n_p));
         }
 
         void
         preload(const Eigen::VectorXd &q0) override
         {
-          preload_model.preload(q0);
+          preload_model->preload(q0);
         }
 
         std::string
@@ -300,7 +466,7 @@ namespace greentread
 
       private:
         unsigned int                 n_kernel;
-        ModalPatchConvolution        preload_model;
+        std::unique_ptr<PatchConvolution> preload_model;
         std::vector<Eigen::MatrixXd> Wu, Wv;
         std::vector<Eigen::VectorXd> past;
         std::size_t                  head = 0, n_recorded = 0;
@@ -313,6 +479,8 @@ namespace greentread
     make_modal_patch_convolution(const modal::PatchModel &model, const double dt,
                                  const unsigned int n_threads)
     {
+      if (model.is_rank_one())
+        return std::make_unique<ModePatchConvolution>(model, dt, n_threads);
       return std::make_unique<ModalPatchConvolution>(model, dt, n_threads);
     }
 

@@ -20,6 +20,19 @@ namespace greentread
       prm.enter_subsection("Patch model");
       {
         prm.declare_entry(
+          "Source", "identified", dealii::Patterns::Selection("identified|fe modes"),
+          "Where the patch model comes from. 'identified': the paper's path, LSCE poles "
+          "found on reference functions and the residues of every pair fitted to the Green's "
+          "functions (Appendix A; the entries below). 'fe modes': the ring's own modes, "
+          "computed per circumferential wavenumber from the cell (Bloch eigenproblem of "
+          "K + Kp and M), g(w) = G_r + sum_k phi_k phi_k^T / (w_k^2 - w^2 + 2 j xi_k w_k w) "
+          "with the static residual G_r = G(0) - sum_k phi_k phi_k^T / w_k^2; exact up to "
+          "the cut-off, passive, and rank one per mode (saved as modal_model.h5).");
+        prm.declare_entry("Mode cutoff", "8000", RangePattern::positive("Hz"),
+                          "'fe modes': the ring's modes with a natural frequency up to this "
+                          "are kept; those above it enter through the static residual G_r "
+                          "only. Unit: Hz.");
+        prm.declare_entry(
           "Residual flexibility", "instantaneous",
           dealii::Patterns::Selection("instantaneous|real pole"),
           "How the local compliance of a point force that the modes below f_max do not "
@@ -59,6 +72,9 @@ namespace greentread
     {
       prm.enter_subsection("Patch model");
       {
+        source = prm.get("Source") == "fe modes" ? PatchModelSource::fe_modes :
+                                                   PatchModelSource::identified;
+        mode_cutoff            = prm.get_double("Mode cutoff");
         instantaneous_residual = prm.get("Residual flexibility") == "instantaneous";
         residual_pole_factor   = prm.get_double("Residual pole factor");
         static_weight        = prm.get_double("Static weight");
@@ -76,9 +92,9 @@ namespace greentread
       convolution::ModalModel m;
       for (unsigned int k = 0; k < n_terms(); ++k)
         if (real[k])
-          m.add_real(lambda[k].real(), residues[k](i, j).real());
+          m.add_real(lambda[k].real(), residue(k, i, j).real());
         else
-          m.add_pair(lambda[k], residues[k](i, j));
+          m.add_pair(lambda[k], residue(k, i, j));
       return m;
     }
 
@@ -93,7 +109,7 @@ namespace greentread
       std::complex<double>       g = instantaneous.size() ? instantaneous(i, j) : 0.;
       for (unsigned int k = 0; k < n_terms(); ++k)
         {
-          const std::complex<double> r = residues[k](i, j);
+          const std::complex<double> r = residue(k, i, j);
           if (real[k])
             g += r.real() / (jw - lambda[k].real());
           else
@@ -109,6 +125,15 @@ namespace greentread
     {
       const unsigned int n = n_points();
       Eigen::MatrixXd    g = instantaneous.size() ? instantaneous : Eigen::MatrixXd::Zero(n, n);
+      if (is_rank_one())
+        {
+          // Re(s c_k / lambda_k) phi_k phi_k^T, s = 1 for a real pole, 2 for a pair.
+          Eigen::VectorXd weight(n_terms());
+          for (unsigned int k = 0; k < n_terms(); ++k)
+            weight(k) = (real[k] ? 1. : 2.) * std::real(factor[k] / lambda[k]);
+          g -= shapes.transpose() * weight.asDiagonal() * shapes;
+          return g;
+        }
       for (unsigned int k = 0; k < n_terms(); ++k)
         if (real[k])
           g -= residues[k].real() / lambda[k].real();

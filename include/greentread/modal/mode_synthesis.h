@@ -1,10 +1,14 @@
 #pragma once
 
+#include <greentread/base/output.h>
 #include <greentread/modal/frequency_response.h>
+#include <greentread/modal/patch_model.h>
 
 #include <Eigen/Dense>
 
 #include <array>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 /**
@@ -24,6 +28,14 @@ namespace greentread
 {
   namespace modal
   {
+    /// The ring's Bloch frequencies per circumferential wavenumber.
+    struct Dispersion
+    {
+      /// Per wavenumber k = 0 .. N/2: the branches' frequencies [Hz],
+      /// ascending, and their damping ratios.
+      std::vector<Eigen::VectorXd> frequency_hz, damping_ratio;
+    };
+
     /// A modal synthesis at the contact points.
     struct ModeSynthesis
     {
@@ -35,6 +47,10 @@ namespace greentread
       Eigen::MatrixXd instantaneous;
       /// The points [m]: x, y, radius.
       std::vector<std::array<double, 3>> points;
+      /// Per mode: the circumferential wavenumber it comes from (may be empty).
+      std::vector<unsigned int> wavenumber;
+      /// The dispersion curves the modes came from (may be empty).
+      Dispersion dispersion;
 
       unsigned int
       n_modes() const
@@ -63,6 +79,45 @@ namespace greentread
                const Eigen::MatrixXd                    &shapes,
                const Eigen::MatrixXd                    &static_green,
                const std::vector<std::array<double, 3>> &points);
+
+    /**
+     * @brief The synthesis as a PatchModel in rank-one form, for the
+     * contact's convolutions: per mode the pole pair
+     * \f$\lambda = \omega_k(-\xi_k + j\sqrt{1-\xi_k^2})\f$ with
+     * \f$R = \phi\phi^T / (2 j \omega_d)\f$, so that
+     * \f$R/(j\omega-\lambda) + \bar R/(j\omega-\bar\lambda)\f$ equals
+     * \f$\phi\phi^T/(\omega_k^2-\omega^2+2j\xi_k\omega_k\omega)\f$ exactly. An
+     * over-critical mode (\f$\xi_k \ge 1\f$) is two real poles
+     * \f$\omega_k(-\xi_k \pm \sqrt{\xi_k^2-1})\f$ (\f$\xi_k\f$ within 1e-6
+     * of 1 is taken as 1 + 1e-6). G_r is the model's instantaneous
+     * compliance; @p errors (E per pair, may be empty) and @p f_max are
+     * copied.
+     * @throws NumericalError for a mode with w_k <= 0 or a negative damping ratio.
+     */
+    PatchModel
+    to_patch_model(const ModeSynthesis &synthesis, const Eigen::MatrixXd &errors, double f_max);
+
+    /**
+     * @brief Write @p synthesis as modal_model.h5 (temporary name, renamed when
+     * complete): `/frequency_hz` [m], `/damping_ratio` [m], `/wavenumber` [m],
+     * `/shapes` [m][n_p], `/instantaneous` [n_p][n_p] (G_r), `/points`
+     * [n_p][3], `/dispersion` [rows][4] (wavenumber, branch, frequency [Hz],
+     * damping ratio), and the attributes `parameters` and `stage_key`.
+     */
+    void
+    write_modal_model(const std::filesystem::path &file,
+                      const ModeSynthesis         &synthesis,
+                      const base::ParameterRecord &record,
+                      const std::string           &stage_key);
+
+    /// Read a file written by write_modal_model().
+    /// @throws InputError naming the file if it is incomplete or inconsistent.
+    ModeSynthesis
+    read_modal_model(const std::string &file);
+
+    /// The `stage_key` of a modal model file, empty if there is none.
+    std::string
+    read_modal_model_key(const std::string &file);
 
     /// How far a synthesis is from the direct Green's functions.
     struct SynthesisErrors

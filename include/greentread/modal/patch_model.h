@@ -60,9 +60,21 @@ namespace greentread
 {
   namespace modal
   {
+    /// Where the patch model comes from.
+    enum class PatchModelSource
+    {
+      /// LSCE poles and fitted residues (Appendix A): the paper's path.
+      identified,
+      /// The ring's own modes with a static residual (modal/mode_synthesis.h).
+      fe_modes
+    };
+
     /// Subsection "Patch model".
     struct PatchModelParameters
     {
+      PatchModelSource source = PatchModelSource::identified;
+      /// The modes kept by `fe modes`: natural frequency <= this [Hz].
+      double mode_cutoff = 8000.;
       /// A constant G_r (true) or a real pole (false) carries the residual.
       bool instantaneous_residual = true;
       /// f_r / f_max of the residual pole (0: no residual pole).
@@ -86,14 +98,24 @@ namespace greentread
      * Term k is a complex pair (lambda[k] with Im > 0, contributing
      * \f$R/(j\omega-\lambda) + \bar R/(j\omega-\bar\lambda)\f$) or a real pole
      * (Im lambda = 0, \f$R/(j\omega-\lambda)\f$ with real R).
+     *
+     * The residues are stored in one of two forms, and every user goes
+     * through residue() or is_rank_one():
+     * - full (`identified`): residues[k] is the n x n matrix R_k;
+     * - rank one (`fe modes`): residues is empty and
+     *   \f$R_k = c_k\,\phi_k\phi_k^T\f$ with \f$\phi_k\f$ = shapes.row(k) and
+     *   \f$c_k\f$ = factor[k], N_p values per term instead of N_p^2.
      */
     struct PatchModel
     {
       std::vector<std::complex<double>> lambda;
       std::vector<bool>                 real;
       /// residues[k](i, j): the residue of term k for the displacement at i
-      /// due to a force at j.
+      /// due to a force at j (full form only).
       std::vector<Eigen::MatrixXcd> residues;
+      /// Rank-one form: one shape per term, [term][point], and its factor.
+      Eigen::MatrixXd                   shapes;
+      std::vector<std::complex<double>> factor;
       /// The instantaneous compliance G_r [m/N] (n x n, symmetric positive
       /// definite), or empty with a real residual pole.
       Eigen::MatrixXd instantaneous;
@@ -117,6 +139,19 @@ namespace greentread
       n_terms() const
       {
         return static_cast<unsigned int>(lambda.size());
+      }
+
+      bool
+      is_rank_one() const
+      {
+        return residues.empty() && shapes.rows() > 0;
+      }
+
+      /// The residue of term @p k for the pair (i, j), in either form.
+      std::complex<double>
+      residue(unsigned int k, unsigned int i, unsigned int j) const
+      {
+        return is_rank_one() ? factor[k] * shapes(k, i) * shapes(k, j) : residues[k](i, j);
       }
 
       /// The model of one pair, as used by the one-point convolutions

@@ -1,0 +1,224 @@
+// The patch model from real modes (Patch model/Source = fe modes) in its
+// rank-one form, against independent references:
+// - its pole-residue form against the closed form
+//   g = G_r + sum phi phi^T / (w_k^2 - w^2 + 2 j xi_k w_k w), over- and
+//   under-critical modes alike;
+// - its O(N_p N_m) recursion against the full-form recursion (every residue
+//   a dense matrix) and the direct convolution sum, step by step;
+// - modal_model.h5 read back bit for bit, and refused when incomplete.
+
+#include "scratch.h"
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/patch_convolution.h>
+#include <greentread/modal/mode_synthesis.h>
+
+#include <deal.II/base/hdf5.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace greentread;
+
+namespace
+{
+  /// 7 points, 9 modes from 120 Hz to 3 kHz (one over-critical, one
+  /// undamped), shapes of mass-normalised size, a static residual of rank 2.
+  modal::ModeSynthesis
+  known_synthesis()
+  {
+    const unsigned int P = 7, m = 9;
+    std::mt19937       random(7);
+    std::uniform_real_distribution<double> u(-1., 1.);
+    modal::ModeSynthesis s;
+    s.frequency_hz.resize(m);
+    s.damping_ratio.resize(m);
+    const double f[m]  = {120., 310., 311., 640., 900., 1400., 1900., 2500., 3000.};
+    const double xi[m] = {0.02, 0.05, 0.05, 0., 0.1, 1.7, 0.03, 1., 0.04};
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        s.frequency_hz(k)  = f[k];
+        s.damping_ratio(k) = xi[k];
+      }
+    s.shapes.resize(m, P);
+    for (unsigned int k = 0; k < m; ++k)
+      for (unsigned int p = 0; p < P; ++p)
+        s.shapes(k, p) = 0.3 * u(random);
+    Eigen::MatrixXd B(P, 2);
+    for (unsigned int p = 0; p < P; ++p)
+      B.row(p) << 1e-6 * u(random), 1e-6 * u(random);
+    s.instantaneous = B * B.transpose();
+    for (unsigned int p = 0; p < P; ++p)
+      s.points.push_back({{0.01 * p, 0.002 * p, 0.27}});
+    s.wavenumber = {0, 1, 1, 2, 3, 4, 5, 6, 7};
+    s.dispersion.frequency_hz  = {Eigen::VectorXd::LinSpaced(2, 120., 640.)};
+    s.dispersion.damping_ratio = {Eigen::VectorXd::Constant(2, 0.02)};
+    return s;
+  }
+
+  modal::PatchModel
+  full_form(const modal::PatchModel &rank_one)
+  {
+    modal::PatchModel full = rank_one;
+    full.shapes.resize(0, 0);
+    full.factor.clear();
+    for (unsigned int k = 0; k < rank_one.n_terms(); ++k)
+      {
+        const Eigen::VectorXd phi = rank_one.shapes.row(k).transpose();
+        full.residues.push_back(rank_one.factor[k] *
+                                (phi * phi.transpose()).cast<std::complex<double>>());
+      }
+    return full;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(mode_model)
+
+namespace
+{
+  /// The largest difference of the pole-residue form from the closed form
+  /// over a few lines, relative to the largest |g| at each line.
+  double
+  pole_residue_error(const modal::ModeSynthesis &s, const modal::PatchModel &model)
+  {
+    double worst = 0.;
+    // 640 Hz is left out: the undamped mode is infinite there.
+    for (const double f : {0., 50., 119., 120., 311., 1000., 2500., 2999., 5000.})
+      {
+        const Eigen::MatrixXcd g = s.at(2. * M_PI * f);
+        for (unsigned int i = 0; i < 7; ++i)
+          for (unsigned int j = 0; j < 7; ++j)
+            worst = std::max(worst, std::abs(model.frequency_response(i, j, 2. * M_PI * f) -
+                                             g(i, j)) /
+                                      g.cwiseAbs().maxCoeff());
+      }
+    return worst;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(poles_and_residues_give_the_closed_form)
+{
+  auto s             = known_synthesis();
+  s.damping_ratio(7) = 1.3; // critical damping is the next case
+  const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  BOOST_TEST(model.is_rank_one());
+  // Two real poles for each mode with xi >= 1, one pair for the others.
+  BOOST_TEST(model.n_terms() == 11u);
+  const double worst = pole_residue_error(s, model);
+  BOOST_TEST_MESSAGE("pole-residue form against the closed form: " << worst);
+  BOOST_TEST(worst < 1e-11);
+  // Exactly critical damping is taken as xi = 1 + 1e-6 (two real poles
+  // 2.8e-3 w apart): a relative change of order 1e-6 in that mode.
+  const auto   s1      = known_synthesis();
+  const double nudged = pole_residue_error(s1, modal::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
+  BOOST_TEST_MESSAGE("with a critically damped mode: " << nudged);
+  BOOST_TEST(nudged < 1e-6);
+  // The static compliance: G_r + sum phi phi^T / w^2.
+  const Eigen::MatrixXd G0 = s.at(0.).real();
+  BOOST_TEST((model.static_compliance() - G0).cwiseAbs().maxCoeff() <
+             1e-12 * G0.cwiseAbs().maxCoeff());
+}
+
+BOOST_AUTO_TEST_CASE(negative_damping_and_zero_frequency_are_refused)
+{
+  auto s             = known_synthesis();
+  s.damping_ratio(2) = -0.01;
+  BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
+  s                  = known_synthesis();
+  s.frequency_hz(0)  = 0.;
+  BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
+}
+
+BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
+{
+  // The undamped mode cannot be convolved (Re lambda = 0): give it a little damping.
+  auto s             = known_synthesis();
+  s.damping_ratio(3) = 0.01;
+  const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto full    = full_form(model);
+  const double       dt = 2e-5;
+  const unsigned int n  = 400, P = 7;
+  auto fast     = contact::make_modal_patch_convolution(model, dt, 2);
+  auto dense    = contact::make_modal_patch_convolution(full, dt, 1);
+  auto direct   = contact::make_direct_patch_convolution(model, dt, n + 1);
+  // The one-step influences first.
+  // The one-step influences, each against its own size.
+  double influence = 0.;
+  const contact::PatchInfluence &a = fast->influence(), &b = dense->influence();
+  for (unsigned int g = 0; g < 4; ++g)
+    influence = std::max({influence,
+                          (a.u[g] - b.u[g]).cwiseAbs().maxCoeff() / b.u[g].cwiseAbs().maxCoeff(),
+                          (a.v[g] - b.v[g]).cwiseAbs().maxCoeff() / b.v[g].cwiseAbs().maxCoeff()});
+  BOOST_TEST(fast->influence().instantaneous);
+  BOOST_TEST(influence < 1e-12);
+
+  std::mt19937                            random(3);
+  std::uniform_real_distribution<double>  u(0., 100.);
+  Eigen::VectorXd q0(P);
+  for (unsigned int p = 0; p < P; ++p)
+    q0(p) = u(random);
+  for (auto *c : {fast.get(), dense.get(), direct.get()})
+    c->preload(q0);
+  double worst_dense = 0., worst_direct = 0., size = 0.;
+  Eigen::VectorXd previous = q0;
+  for (unsigned int step = 0; step < n; ++step)
+    {
+      Eigen::VectorXd u1(P), v1(P), u2(P), v2(P), u3(P), v3(P);
+      fast->history(u1, v1);
+      dense->history(u2, v2);
+      direct->history(u3, v3);
+      size         = std::max(size, u2.cwiseAbs().maxCoeff());
+      worst_dense  = std::max(worst_dense, (u1 - u2).cwiseAbs().maxCoeff());
+      worst_direct = std::max(worst_direct, (u1 - u3).cwiseAbs().maxCoeff());
+      // A load continuous and linear over each step, some steps with an impulse too.
+      contact::PatchLoad load(P);
+      Eigen::VectorXd    next(P);
+      for (unsigned int p = 0; p < P; ++p)
+        next(p) = u(random);
+      load.component[1] = previous;
+      load.component[2] = next;
+      if (step % 37 == 0)
+        load.component[0] = 1e-4 * next;
+      previous = next;
+      for (auto *c : {fast.get(), dense.get(), direct.get()})
+        c->advance(load);
+    }
+  BOOST_TEST_MESSAGE("rank-one recursion against the full form " << worst_dense / size
+                     << ", against the direct sum " << worst_direct / size);
+  BOOST_TEST(worst_dense < 1e-11 * size);
+  BOOST_TEST(worst_direct < 1e-9 * size);
+}
+
+BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
+{
+  const auto dir  = test::scratch_directory("mode_model");
+  const auto file = dir / "modal_model.h5";
+  const auto s    = known_synthesis();
+  base::ParameterRecord record;
+  modal::write_modal_model(file, s, record, "key 1");
+  BOOST_TEST(modal::read_modal_model_key(file.string()) == "key 1");
+  const auto r = modal::read_modal_model(file.string());
+  BOOST_TEST((r.frequency_hz - s.frequency_hz).cwiseAbs().maxCoeff() == 0.);
+  BOOST_TEST((r.damping_ratio - s.damping_ratio).cwiseAbs().maxCoeff() == 0.);
+  BOOST_TEST((r.shapes - s.shapes).cwiseAbs().maxCoeff() == 0.);
+  BOOST_TEST((r.instantaneous - s.instantaneous).cwiseAbs().maxCoeff() == 0.);
+  BOOST_TEST(r.wavenumber == s.wavenumber);
+  BOOST_TEST(r.points == s.points);
+  BOOST_REQUIRE(r.dispersion.frequency_hz.size() == 1u);
+  BOOST_TEST((r.dispersion.frequency_hz[0] - s.dispersion.frequency_hz[0]).norm() == 0.);
+  // A file without one of its datasets has no key, and reading it is refused by name.
+  {
+    dealii::HDF5::File h5((dir / "partial.h5").string(),
+                          dealii::HDF5::File::FileAccessMode::create);
+    h5.create_dataset<double>("frequency_hz", {1}).write(std::vector<double>{1.});
+    h5.set_attribute("stage_key", std::string("key 1"));
+  }
+  BOOST_TEST(modal::read_modal_model_key((dir / "partial.h5").string()).empty());
+  BOOST_CHECK_EXCEPTION(modal::read_modal_model((dir / "partial.h5").string()), InputError,
+                        [](const InputError &e) {
+                          return std::string(e.what()).find("partial.h5") != std::string::npos;
+                        });
+}
+
+BOOST_AUTO_TEST_SUITE_END()
