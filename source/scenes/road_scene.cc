@@ -1,3 +1,4 @@
+#include <greentread/analysis/mode_output.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
@@ -8,6 +9,7 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/periodic/mode_stage.h>
 #include <greentread/scenes/road_scene.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -148,9 +150,7 @@ namespace greentread
       const unsigned int                   n_p       = G.n_points();
 
       // Stage 4: modal, the patch model (saved too).
-      const modal::PatchModel model = modal::patch_model_stage(
-        G, identification, patch_model, directory / "patch_model.h5",
-        modal::patch_model_stage_key(prm, green_key), record, global.reuse, global.print_timings);
+      const modal::PatchModel model = modal_stage(G, green_key, directory, record);
 
       // The patch lattice, the tread's own height (its curvature along x) and
       // the structure's static compliance, which the static start uses.
@@ -222,6 +222,35 @@ namespace greentread
                     << format_printf("%.2g", result.report.diagnostics.max_residual) << '\n';
         }
       return G;
+    }
+
+
+
+    modal::PatchModel
+    RoadContactScene::modal_stage(const modal::FrequencyResponseMatrix &G,
+                                  const std::string                    &green_key,
+                                  const std::filesystem::path          &directory,
+                                  const base::ParameterRecord          &record) const
+    {
+      if (patch_model.source == modal::PatchModelSource::identified)
+        return modal::patch_model_stage(G, identification, patch_model,
+                                        directory / "patch_model.h5",
+                                        modal::patch_model_stage_key(prm, green_key), record,
+                                        global.reuse, global.print_timings);
+      const periodic::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
+                                             patch_model.mode_cutoff};
+      const modal::ModeSynthesis synthesis = periodic::run_mode_stage(
+        inputs, G, directory / "modal_model.h5", periodic::mode_stage_key(prm, green_key),
+        record, global.reuse, global.print_timings, MPI_COMM_WORLD);
+      analysis::write_dispersion(directory, synthesis.dispersion, patch_model.mode_cutoff, record);
+      const modal::SynthesisErrors errors = modal::compare(synthesis, G);
+      analysis::report_synthesis(directory, synthesis, errors, record);
+      const unsigned int n_p = G.n_points();
+      Eigen::MatrixXd    E(n_p, n_p);
+      for (unsigned int i = 0; i < n_p; ++i)
+        for (unsigned int j = 0; j < n_p; ++j)
+          E(i, j) = errors.pair_error[i * n_p + j];
+      return modal::to_patch_model(synthesis, E, G.df * (G.n_lines - 1));
     }
 
 

@@ -46,6 +46,14 @@ namespace greentread
       green_stage(const std::filesystem::path &h5, const std::string &key,
                   const base::ParameterRecord &record) const;
 
+      /// Stage modal: the patch model from 'Patch model/Source', the LSCE fit
+      /// or the ring's own modes, each saved beside @p h5 and reused when its
+      /// key matches.
+      modal::PatchModel
+      modal_stage(const modal::FrequencyResponseMatrix &G, const std::string &green_key,
+                  const std::filesystem::path &directory,
+                  const base::ParameterRecord &record) const;
+
       /// One run: road @p road_name at @p speed_kmh, from the static contact
       /// (compliance @p G0), with its outputs; returns its spectrum.
       analysis::RunSpectrum

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <greentread/base/output.h>
+#include <greentread/modal/frequency_response.h>
+#include <greentread/modal/mode_synthesis.h>
+#include <greentread/periodic/green_stage.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <filesystem>
+#include <string>
+
+/**
+ * @file
+ * The modal stage of `Patch model/Source = fe modes` as a saved stage: the
+ * ring's modes up to the cut-off (periodic/ring_modes.h) at the contact
+ * points, with the static residual from the Green's functions' 0 Hz line
+ * (modal/mode_synthesis.h), read from modal_model.h5 when its key matches
+ * and the file reads in full, computed and written otherwise.
+ * Implemented in source/periodic/mode_stage.cc.
+ */
+
+namespace greentread
+{
+  namespace periodic
+  {
+    /**
+     * @brief The key saved with modal_model.h5: the Green's stage's key
+     * (which covers the geometry, materials, inflation, the patch and the
+     * periodic sources that compute the modes), a digest of the modal
+     * sources, and the 'Patch model/Mode cutoff'.
+     */
+    std::string
+    mode_stage_key(const dealii::ParameterHandler &prm, const std::string &green_key);
+
+    /// Everything the modal stage needs to build the tyre when it computes.
+    struct ModeStageInputs
+    {
+      const geometry::GeometryParameters &geometry;
+      const fe::MaterialParameters       &materials;
+      const fe::InflationParameters      &inflation;
+      const PatchRequest                 &patch;
+      /// Keep the modes up to this [Hz].
+      double cutoff_hz = 0.;
+    };
+
+    /**
+     * @brief The modal synthesis at the points of @p green: reused from
+     * @p file if @p reuse and its key is @p key, computed (the inflated tyre,
+     * its ring modes over the ranks of @p comm, G_r from the 0 Hz line of
+     * @p green) and written by rank 0 otherwise. Prints what it did.
+     * @throws NumericalError if the points of the tyre built here are not
+     * those of @p green (a Green's file from other parameters).
+     */
+    modal::ModeSynthesis
+    run_mode_stage(const ModeStageInputs                &inputs,
+                   const modal::FrequencyResponseMatrix &green,
+                   const std::filesystem::path          &file,
+                   const std::string                    &key,
+                   const base::ParameterRecord          &record,
+                   bool                                  reuse,
+                   bool                                  print_timings,
+                   MPI_Comm                              comm);
+  } // namespace periodic
+} // namespace greentread
