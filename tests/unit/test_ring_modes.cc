@@ -62,6 +62,25 @@ namespace
                              direct(tyre, 0.).real(), points);
   }
 
+  /// The direct Bloch Green's functions every 50 Hz from 0 to 2 kHz.
+  modal::FrequencyResponseMatrix
+  lines_to_2khz(const test::CoarseTyre &tyre)
+  {
+    modal::FrequencyResponseMatrix lines;
+    lines.df      = 50.;
+    lines.n_lines = 41;
+    for (const auto &p : tyre.patch.points)
+      lines.points.push_back({{p.x, p.y, p.radius}});
+    for (unsigned int l = 0; l < lines.n_lines; ++l)
+      {
+        const Eigen::MatrixXcd g = direct(tyre, 2. * M_PI * l * lines.df);
+        for (Eigen::Index i = 0; i < g.rows(); ++i)
+          for (Eigen::Index j = 0; j < g.cols(); ++j)
+            lines.values.push_back(g(i, j));
+      }
+    return lines;
+  }
+
   double
   relative_difference(const Eigen::MatrixXcd &a, const Eigen::MatrixXcd &b)
   {
@@ -146,6 +165,61 @@ BOOST_AUTO_TEST_CASE(every_mode_and_proportional_damping_give_the_bloch_solve)
       BOOST_TEST_MESSAGE("every mode, " << f << " Hz: synthesis against Bloch " << error);
       BOOST_TEST(error < 1e-8);
     }
+}
+
+BOOST_AUTO_TEST_CASE(a_cutoff_converges_and_stays_passive)
+{
+  // The inflated tyre with its per-layer damping (not proportional): the
+  // synthesis with a cut-off against the direct Bloch solve on lines every
+  // 50 Hz to 2 kHz. G_r and -Im g stay positive semidefinite (to round-off)
+  // at every cut-off. E falls from 1.25 to 2.5 times the band, then stays:
+  // what is left is the modal coupling of the damping (the diagonal of
+  // Phi^H C Phi is kept), which no cut-off removes; with proportional
+  // damping (next case) it is gone. Measured: worst E 1.14%, 0.646%, 0.653%
+  // at 2.5, 5 and 10 kHz.
+  const unsigned int     N = 16;
+  const test::CoarseTyre tyre(N, patch_request(), true);
+  const modal::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
+  std::vector<double> worst;
+  for (const double cutoff : {2500., 5000., 10000.})
+    {
+      periodic::ModeSearch search;
+      search.cutoff     = 2. * M_PI * cutoff;
+      const auto modes  = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+                                               MPI_COMM_SELF, false);
+      const auto model  = synthesis(tyre, modes);
+      const auto errors = modal::compare(model, direct_lines);
+      BOOST_TEST_MESSAGE("cut-off " << cutoff << " Hz, " << modes.size() << " modes: E median "
+                                    << errors.median << ", worst " << errors.worst
+                                    << ", passivity " << errors.passivity << ", G_r "
+                                    << model.residual_definiteness());
+      BOOST_TEST(errors.passivity > -1e-12);
+      BOOST_TEST(model.residual_definiteness() > -1e-10);
+      worst.push_back(errors.worst);
+    }
+  BOOST_TEST(worst[1] < 0.7 * worst[0]);
+  BOOST_TEST(std::abs(worst[2] - worst[1]) < 0.05 * worst[1]);
+  BOOST_TEST(worst[2] < 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
+{
+  // With C = a M + b K the synthesis differs from the direct solve only by
+  // the modes above the cut-off less their static part: at 2 kHz of lines
+  // and a 10 kHz cut-off, E is below 1e-3 for every pair.
+  const unsigned int     N = 16;
+  const test::CoarseTyre tyre(N, patch_request(), false);
+  const modal::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
+  periodic::ModeSearch search;
+  search.cutoff     = 2. * M_PI * 10000.;
+  const auto modes  = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+                                           MPI_COMM_SELF, false);
+  const auto model  = synthesis(tyre, modes);
+  const auto errors = modal::compare(model, direct_lines);
+  BOOST_TEST_MESSAGE("proportional damping, " << modes.size() << " modes: E median "
+                                               << errors.median << ", worst " << errors.worst);
+  BOOST_TEST(errors.worst < 1e-3);
+  BOOST_TEST(errors.passivity > -1e-12);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
