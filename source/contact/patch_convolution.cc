@@ -122,8 +122,11 @@ namespace greentread
       /**
        * The recursion for a rank-one model: one complex state per term,
        * driven by the modal force phi_k^T q, and u = sum_k phi_k Re(c_k s_k).
-       * Per step two products with the N_m x N_p shapes: O(N_p N_m), not
-       * O(N_p^2 N_m).
+       * O(N_p N_m) per step, not O(N_p^2 N_m). The step is memory bound (the
+       * N_m x N_p shapes do not fit in cache), so advance() makes one pass
+       * over them in blocks of rows that stay in cache: the modal forces of
+       * the step's loads, the new states, and at once the next step's history
+       * u, v. The terms are split between two threads when asked.
        */
       class ModePatchConvolution : public PatchConvolution
       {
@@ -134,32 +137,31 @@ namespace greentread
           , threads(n_threads)
           , w(model, dt)
           , shapes(model.shapes)
-          , shapes_t(model.shapes.transpose())
           , lambda(model.lambda)
         {
-          psi               = w.influence();
-          const auto n_term = shapes.rows();
-          sr = si = hr = hi = Eigen::VectorXd::Zero(n_term);
-          weights.resize(n_term, 2);
-          forces.resize(n_term, 4);
+          psi = w.influence();
+          hr = hi = Eigen::VectorXd::Zero(shapes.rows());
+          uv      = Eigen::MatrixXd::Zero(n_p, 2);
           loads.resize(n_p, 4);
         }
 
         void
         history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
         {
-          for (Eigen::Index k = 0; k < sr.size(); ++k)
+          if (!history_ready)
             {
-              const std::complex<double> h = w.alpha[k] * std::complex<double>(sr(k), si(k));
-              hr(k)                        = h.real();
-              hi(k)                        = h.imag();
-              weights(k, 0)                = std::real(w.cu1[k] * h);
-              weights(k, 1)                = std::real(w.cv1[k] * h);
+              // After a preload: u, v of the states h = e^{lambda dt} s.
+              uv.setZero();
+              for (Eigen::Index k = 0; k < hr.size(); ++k)
+                {
+                  const std::complex<double> h(hr(k), hi(k));
+                  uv.col(0) += std::real(w.cu1[k] * h) * shapes.row(k).transpose();
+                  uv.col(1) += std::real(w.cv1[k] * h) * shapes.row(k).transpose();
+                }
+              history_ready = true;
             }
-          product(shapes_t, weights, uv);
           u = uv.col(0);
           v = uv.col(1);
-          history_ready = true;
         }
 
         void
@@ -172,29 +174,31 @@ namespace greentread
             }
           for (unsigned int g = 0; g < 4; ++g)
             loads.col(g) = load.component[g];
-          product(shapes, loads, forces);
-          for (Eigen::Index k = 0; k < sr.size(); ++k)
+          const Eigen::Index m = shapes.rows(), half = m / 2;
+          if (threads > 1 && half > 64)
             {
-              const std::complex<double> s = std::complex<double>(hr(k), hi(k)) +
-                                             w.alpha[k] * forces(k, 0) +
-                                             w.beta_a[k] * forces(k, 1) +
-                                             w.beta_b[k] * forces(k, 2) + forces(k, 3);
-              sr(k) = s.real();
-              si(k) = s.imag();
+              Eigen::MatrixXd first(n_p, 2);
+              auto task = dealii::Threads::new_task([&]() { sweep(0, half, first); });
+              sweep(half, m, uv);
+              task.join();
+              uv += first;
             }
-          history_ready = false;
+          else
+            sweep(0, m, uv);
+          history_ready = true;
         }
 
         void
         preload(const Eigen::VectorXd &q0) override
         {
-          // s_k = int_{-inf}^0 e^{-lambda tau} phi_k^T q0 dtau = -phi_k^T q0 / lambda_k.
+          // s_k = int_{-inf}^0 e^{-lambda tau} phi_k^T q0 dtau = -phi_k^T q0 / lambda_k,
+          // and the history's states h = e^{lambda dt} s.
           const Eigen::VectorXd f = shapes * q0;
-          for (Eigen::Index k = 0; k < sr.size(); ++k)
+          for (Eigen::Index k = 0; k < hr.size(); ++k)
             {
-              const std::complex<double> s = -f(k) / lambda[k];
-              sr(k)                        = s.real();
-              si(k)                        = s.imag();
+              const std::complex<double> h = -w.alpha[k] * f(k) / lambda[k];
+              hr(k)                        = h.real();
+              hi(k)                        = h.imag();
             }
           history_ready = false;
         }
@@ -206,30 +210,45 @@ namespace greentread
         }
 
       private:
-        /// out = A * B, the rows of A split over two threads when asked.
+        /// Terms [begin, end): the new states from the step's loads, and
+        /// their part of the next history in @p out.
         void
-        product(const Eigen::MatrixXd &A, const Eigen::MatrixXd &B, Eigen::MatrixXd &out) const
+        sweep(const Eigen::Index begin, const Eigen::Index end, Eigen::MatrixXd &out)
         {
-          out.resize(A.rows(), B.cols());
-          const Eigen::Index half = A.rows() / 2;
-          if (threads > 1 && half > 64)
+          constexpr Eigen::Index block = 128;
+          Eigen::MatrixXd        forces(block, 4), weights(block, 2);
+          out.setZero(n_p, 2);
+          for (Eigen::Index b = begin; b < end; b += block)
             {
-              auto task = dealii::Threads::new_task(
-                [&]() { out.topRows(half).noalias() = A.topRows(half) * B; });
-              out.bottomRows(A.rows() - half).noalias() = A.bottomRows(A.rows() - half) * B;
-              task.join();
+              const Eigen::Index rows = std::min(block, end - b);
+              const auto         phi  = shapes.middleRows(b, rows);
+              forces.topRows(rows).noalias() = phi * loads;
+              for (Eigen::Index r = 0; r < rows; ++r)
+                {
+                  const Eigen::Index         k = b + r;
+                  const std::complex<double> s = std::complex<double>(hr(k), hi(k)) +
+                                                 w.alpha[k] * forces(r, 0) +
+                                                 w.beta_a[k] * forces(r, 1) +
+                                                 w.beta_b[k] * forces(r, 2) + forces(r, 3);
+                  const std::complex<double> h = w.alpha[k] * s;
+                  hr(k)                        = h.real();
+                  hi(k)                        = h.imag();
+                  weights(r, 0)                = std::real(w.cu1[k] * h);
+                  weights(r, 1)                = std::real(w.cv1[k] * h);
+                }
+              out.noalias() += phi.transpose() * weights.topRows(rows);
             }
-          else
-            out.noalias() = A * B;
         }
 
-        unsigned int                      threads;
-        PoleWeights                       w;
-        Eigen::MatrixXd                   shapes, shapes_t;
-        std::vector<std::complex<double>> lambda;
-        Eigen::VectorXd                   sr, si, hr, hi;
-        Eigen::MatrixXd                   weights, forces, loads, uv;
-        bool                              history_ready = false;
+        unsigned int threads;
+        PoleWeights  w;
+        // Row-major: a block of terms is one contiguous stretch of memory.
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> shapes;
+        std::vector<std::complex<double>>                                     lambda;
+        // The states of the next history, h = e^{lambda dt} s, and its u, v.
+        Eigen::VectorXd hr, hi;
+        Eigen::MatrixXd uv, loads;
+        bool            history_ready = false;
       };
 
 

@@ -14,17 +14,24 @@ namespace greentread
     Eigen::MatrixXcd
     ModeSynthesis::at(const double omega) const
     {
+      // Two real products, Phi^T diag(Re f) Phi and Phi^T diag(Im f) Phi:
+      // a quarter of the work of one complex product.
       const Eigen::Index m = shapes.rows();
-      Eigen::VectorXcd   factor(m);
+      Eigen::VectorXd    re(m), im(m);
       for (Eigen::Index k = 0; k < m; ++k)
         {
-          const double w = 2. * M_PI * frequency_hz(k);
-          factor(k) =
+          const double               w = 2. * M_PI * frequency_hz(k);
+          const std::complex<double> factor =
             1. / std::complex<double>(w * w - omega * omega, 2. * damping_ratio(k) * w * omega);
+          re(k) = factor.real();
+          im(k) = factor.imag();
         }
-      const Eigen::MatrixXcd weighted = factor.asDiagonal() * shapes.cast<std::complex<double>>();
-      Eigen::MatrixXcd       g        = shapes.transpose().cast<std::complex<double>>() * weighted;
-      g += instantaneous.cast<std::complex<double>>();
+      Eigen::MatrixXd real = instantaneous;
+      real.noalias() += shapes.transpose() * (re.asDiagonal() * shapes);
+      const Eigen::MatrixXd imag = shapes.transpose() * (im.asDiagonal() * shapes);
+      Eigen::MatrixXcd      g(real.rows(), real.cols());
+      g.real() = real;
+      g.imag() = imag;
       return g;
     }
 
