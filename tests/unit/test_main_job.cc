@@ -11,12 +11,15 @@
 #include <greentread/config.h>
 #include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/periodic/mode_stage.h>
 #include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
 
 #include <filesystem>
 
 #include <boost/test/unit_test.hpp>
+
+#include <tuple>
 
 #include <fstream>
 #include <map>
@@ -69,12 +72,14 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
     for (const auto &o : overrides)
       base::apply_override(prm, o);
     const std::string green = periodic::green_stage_key(prm, geo_file);
-    return std::make_pair(green, modal::patch_model_stage_key(prm, green));
+    return std::make_tuple(green, modal::patch_model_stage_key(prm, green),
+                           periodic::mode_stage_key(prm, green));
   };
   const auto reference = keys({}, geo);
-  BOOST_TEST(reference.first.find(GREENTREAD_GIT_REVISION) == std::string::npos);
-  BOOST_TEST(reference.second.find(GREENTREAD_GIT_REVISION) == std::string::npos);
-  BOOST_TEST(reference.first.find(".geo") == std::string::npos);
+  BOOST_TEST(std::get<0>(reference).find(GREENTREAD_GIT_REVISION) == std::string::npos);
+  BOOST_TEST(std::get<1>(reference).find(GREENTREAD_GIT_REVISION) == std::string::npos);
+  BOOST_TEST(std::get<2>(reference).find(GREENTREAD_GIT_REVISION) == std::string::npos);
+  BOOST_TEST(std::get<0>(reference).find(".geo") == std::string::npos);
 
   // Unchanged: another path to the same file, other outputs, later stages.
   BOOST_TEST((keys({}, copy.string()) == reference));
@@ -82,21 +87,26 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
                     "Road texture/Roads=road-B", "Green's functions/Pairs=0:0"},
                    geo) == reference));
 
-  // Changed: a parameter of the Green's stage changes both keys; one of
-  // the modal stage only the second.
+  // Changed: a parameter of the Green's stage changes every key; one of
+  // the LSCE fit only its own, the modes' cut-off only the modes'.
   const auto mesh = keys({"Geometry/Mesh size=0.01"}, geo);
-  BOOST_TEST(mesh.first != reference.first);
-  BOOST_TEST(mesh.second != reference.second);
+  BOOST_TEST(std::get<0>(mesh) != std::get<0>(reference));
+  BOOST_TEST(std::get<1>(mesh) != std::get<1>(reference));
+  BOOST_TEST(std::get<2>(mesh) != std::get<2>(reference));
   const auto weight = keys({"Patch model/Static weight=10"}, geo);
-  BOOST_TEST(weight.first == reference.first);
-  BOOST_TEST(weight.second != reference.second);
+  BOOST_TEST(std::get<0>(weight) == std::get<0>(reference));
+  BOOST_TEST(std::get<1>(weight) != std::get<1>(reference));
+  BOOST_TEST(std::get<2>(weight) == std::get<2>(reference));
+  const auto cutoff = keys({"Patch model/Mode cutoff=6000"}, geo);
+  BOOST_TEST(std::get<0>(cutoff) == std::get<0>(reference));
+  BOOST_TEST(std::get<2>(cutoff) != std::get<2>(reference));
 
   // And the file's contents, not its name.
   {
     std::ofstream append(copy, std::ios::app);
     append << "\n// an edit\n";
   }
-  BOOST_TEST(keys({}, copy.string()).first != reference.first);
+  BOOST_TEST(std::get<0>(keys({}, copy.string())) != std::get<0>(reference));
   fs::remove(copy);
 }
 
