@@ -9,7 +9,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -43,5 +45,19 @@ namespace benchmark
         }
     options.output = greentread::base::prepare_output_directory(options.output.string());
     return options;
+  }
+
+  /// Peak double-precision rate of @p threads cores [FLOP/s]: clock x 16
+  /// (two 4-wide FMA units), the clock from /proc/cpuinfo.
+  inline double
+  peak_flops(const unsigned int threads)
+  {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string   line;
+    double        mhz = 0.;
+    while (std::getline(cpuinfo, line))
+      if (line.rfind("cpu MHz", 0) == 0)
+        mhz = std::max(mhz, std::stod(line.substr(line.find(':') + 1)));
+    return threads * mhz * 1e6 * 16.;
   }
 } // namespace benchmark

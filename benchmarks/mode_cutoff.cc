@@ -115,6 +115,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // The ring modes ask their communicator's rank: MPI must be up.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
       const auto         options = benchmark::parse(argc, argv, "mode_cutoff");

@@ -66,19 +66,6 @@ namespace
     return full;
   }
 
-  /// Peak double-precision rate: cores x clock x 16 (two 4-wide FMA units).
-  double
-  peak_flops(const unsigned int threads)
-  {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string   line;
-    double        mhz = 0.;
-    while (std::getline(cpuinfo, line))
-      if (line.rfind("cpu MHz", 0) == 0)
-        mhz = std::max(mhz, std::stod(line.substr(line.find(':') + 1)));
-    return threads * mhz * 1e6 * 16.;
-  }
-
   struct Timing
   {
     double                       ms_per_step = 0.;
@@ -147,10 +134,10 @@ main(int argc, char **argv)
             std::cout << format_printf("%5.0f", P) << "    " << form
                       << format_printf("%10.3f", t.ms_per_step) << format_printf("%14.1f", b / 1e6)
                       << format_printf("%12.4f", f / 1e9) << format_printf("%9.2f", rate / 1e9)
-                      << format_printf("%10.1f", 100. * rate / peak_flops(threads)) << "   "
+                      << format_printf("%10.1f", 100. * rate / benchmark::peak_flops(threads)) << "   "
                       << difference << '\n';
             csv << P << ',' << form << ',' << n_modes << ',' << t.ms_per_step << ',' << b / 1e6
-                << ',' << f / 1e9 << ',' << rate / 1e9 << ',' << rate / peak_flops(threads) << ','
+                << ',' << f / 1e9 << ',' << rate / 1e9 << ',' << rate / benchmark::peak_flops(threads) << ','
                 << difference << '\n';
           };
           if (P != 120)

@@ -69,19 +69,6 @@ namespace
     return m;
   }
 
-  /// Peak double-precision rate: cores x clock x 16 (two 4-wide FMA units).
-  double
-  peak_flops(unsigned int threads)
-  {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string   line;
-    double        mhz = 0.;
-    while (std::getline(cpuinfo, line))
-      if (line.rfind("cpu MHz", 0) == 0)
-        mhz = std::max(mhz, std::stod(line.substr(line.find(':') + 1)));
-    return threads * mhz * 1e6 * 16.;
-  }
-
   struct Run
   {
     double                       seconds = 0.;
@@ -160,8 +147,8 @@ main(int argc, char **argv)
                 << (target.seconds < 30. ? "within" : "OVER") << " the 30 s target), "
                 << format_printf("%.3f", 1e3 * target.seconds / long_steps) << " ms per step, "
                 << format_printf("%.2f", rate / 1e9) << " GFLOP/s in the update = "
-                << format_printf("%.1f", 100. * rate / peak_flops(threads)) << "% of the "
-                << threads << "-core peak (" << format_printf("%.0f", peak_flops(threads) / 1e9)
+                << format_printf("%.1f", 100. * rate / benchmark::peak_flops(threads)) << "% of the "
+                << threads << "-core peak (" << format_printf("%.0f", benchmark::peak_flops(threads) / 1e9)
                 << " GFLOP/s); failed steps " << target.summary.failed_steps << "\n\n";
 
       // 2. Error against run time: direct (reference) and modal over a

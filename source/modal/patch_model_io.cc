@@ -27,6 +27,9 @@ namespace greentread
                       const base::ParameterRecord &record,
                       const std::string           &stage_key)
     {
+      if (model.is_rank_one())
+        throw NumericalError("write_patch_model: a model from the ring's modes is saved as "
+                             "modal_model.h5 (write_modal_model), not as a patch model");
       write_hdf5_stage(file, model.points, record, stage_key, [&](dealii::HDF5::File &h5) {
         const std::size_t  n = model.n_points(), m = model.n_terms();
         h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
