@@ -30,9 +30,12 @@ namespace greentread
                      "set datafile separator ','\nset datafile commentschars '#'\n"
                      "set title 'Dispersion curves of the ring (Bloch modes per circumferential "
                      "wavenumber)'\nset xlabel 'circumferential wavenumber n'\n"
-                     "set ylabel 'natural frequency [Hz]'\nset grid\nset key top left\n"
+                     "set ylabel 'natural frequency [Hz]'\nset grid\n"
+                     "set key outside bottom center horizontal\nset xrange [0:" +
+                       std::to_string(std::max<std::size_t>(1, dispersion.frequency_hz.size() - 1)) +
+                       "]\nset yrange [0:" + format_printf("%.10g", 1.05 * cutoff_hz) + "]\n"
                      "plot " + base::gnuplot_quote(csv) +
-                       " skip 1 using 1:3 with points pt 7 ps 0.4 title 'modes', " +
+                       " skip 1 using 1:3 with points pt 7 ps 0.3 lc rgb '#5e3c99' title 'Bloch modes', " +
                        format_printf("%.10g", cutoff_hz) +
                        " with lines dt 2 lc rgb 'black' title 'cut-off'\n",
                      record);
