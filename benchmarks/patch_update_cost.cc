@@ -52,19 +52,6 @@ namespace
     return modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   }
 
-  modal::PatchModel
-  full_form(const modal::PatchModel &m)
-  {
-    modal::PatchModel full = m;
-    full.shapes.resize(0, 0);
-    full.factor.clear();
-    for (unsigned int k = 0; k < m.n_terms(); ++k)
-      {
-        const Eigen::VectorXd phi = m.shapes.row(k).transpose();
-        full.residues.push_back(m.factor[k] * (phi * phi.transpose()).cast<std::complex<double>>());
-      }
-    return full;
-  }
 
   struct Timing
   {
@@ -145,7 +132,7 @@ main(int argc, char **argv)
               row("rank-one", rank_one, bytes, flops, "(full form not built: N_m N_p^2 residues)");
               continue;
             }
-          auto         dense = contact::make_modal_patch_convolution(full_form(model), dt, threads);
+          auto         dense = contact::make_modal_patch_convolution(modal::full_form(model), dt, threads);
           const Timing full  = time_update(*dense, steps, true);
           double       diff = 0., size = 0.;
           for (unsigned int n = 0; n < steps; ++n)

@@ -61,6 +61,25 @@ namespace greentread
 
 
 
+    PatchModel
+    full_form(const PatchModel &model)
+    {
+      if (!model.is_rank_one())
+        return model;
+      PatchModel full = model;
+      full.shapes.resize(0, 0);
+      full.factor.clear();
+      for (unsigned int k = 0; k < model.n_terms(); ++k)
+        {
+          const Eigen::VectorXd phi = model.shapes.row(k).transpose();
+          full.residues.push_back(model.factor[k] *
+                                  (phi * phi.transpose()).cast<std::complex<double>>());
+        }
+      return full;
+    }
+
+
+
     namespace
     {
       const std::vector<std::string> modal_datasets = {

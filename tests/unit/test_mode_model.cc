@@ -61,20 +61,6 @@ namespace
     return s;
   }
 
-  modal::PatchModel
-  full_form(const modal::PatchModel &rank_one)
-  {
-    modal::PatchModel full = rank_one;
-    full.shapes.resize(0, 0);
-    full.factor.clear();
-    for (unsigned int k = 0; k < rank_one.n_terms(); ++k)
-      {
-        const Eigen::VectorXd phi = rank_one.shapes.row(k).transpose();
-        full.residues.push_back(rank_one.factor[k] *
-                                (phi * phi.transpose()).cast<std::complex<double>>());
-      }
-    return full;
-  }
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(mode_model)
@@ -140,7 +126,7 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   auto s             = known_synthesis();
   s.damping_ratio(3) = 0.01;
   const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
-  const auto full    = full_form(model);
+  const auto full    = modal::full_form(model);
   const double       dt = 2e-5;
   const unsigned int n  = 400, P = 7;
   auto fast     = contact::make_modal_patch_convolution(model, dt, 2);

@@ -98,6 +98,14 @@ namespace greentread
     to_patch_model(const ModeSynthesis &synthesis, const Eigen::MatrixXd &errors, double f_max);
 
     /**
+     * @brief The same model with every residue a dense n_p x n_p matrix
+     * (\f$R_k = c_k\phi_k\phi_k^T\f$): the identified model's form, for checks
+     * of the rank-one path against the full one. A full model is returned as is.
+     */
+    PatchModel
+    full_form(const PatchModel &model);
+
+    /**
      * @brief Write @p synthesis as modal_model.h5 (temporary name, renamed when
      * complete): `/frequency_hz` [m], `/damping_ratio` [m], `/wavenumber` [m],
      * `/shapes` [m][n_p], `/instantaneous` [n_p][n_p] (G_r), `/points`
