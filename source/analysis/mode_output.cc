@@ -32,7 +32,8 @@ namespace greentread
                      "wavenumber)'\nset xlabel 'circumferential wavenumber n'\n"
                      "set ylabel 'natural frequency [Hz]'\nset grid\n"
                      "set key outside bottom center horizontal\nset xrange [0:" +
-                       std::to_string(std::max<std::size_t>(1, dispersion.frequency_hz.size() - 1)) +
+                       std::to_string(dispersion.frequency_hz.size() > 1 ?
+                                        dispersion.frequency_hz.size() - 1 : 1) +
                        "]\nset yrange [0:" + format_printf("%.10g", 1.05 * cutoff_hz) + "]\n"
                      "plot " + base::gnuplot_quote(csv) +
                        " skip 1 using 1:3 with points pt 7 ps 0.3 lc rgb '#5e3c99' title 'Bloch modes', " +

@@ -22,6 +22,9 @@
  * correction). Every term is passive: -Im g(w) is a sum of positive
  * semidefinite rank-one terms for w > 0. G_r is positive semidefinite: it is
  * the part of the static flexibility that the modes left out.
+ * Implemented in source/modal/mode_synthesis.cc (the synthesis and its
+ * errors) and source/modal/mode_synthesis_io.cc (the rank-one patch model
+ * and modal_model.h5).
  */
 
 namespace greentread
