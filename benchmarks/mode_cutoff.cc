@@ -38,18 +38,6 @@ using namespace greentread;
 
 namespace
 {
-  /// The static line of @p green as a real matrix.
-  Eigen::MatrixXd
-  static_line(const modal::FrequencyResponseMatrix &green)
-  {
-    const unsigned int P = green.n_points();
-    Eigen::MatrixXd    G0(P, P);
-    for (unsigned int i = 0; i < P; ++i)
-      for (unsigned int j = 0; j < P; ++j)
-        G0(i, j) = green.values[std::size_t(i) * P + j].real();
-    return G0;
-  }
-
   /// The coarse tyre's direct Green's functions (lines to 2 kHz every 50 Hz)
   /// and its modes up to @p cutoff_hz.
   std::pair<modal::FrequencyResponseMatrix, modal::ModeSynthesis>
@@ -87,7 +75,7 @@ namespace
     const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                             MPI_COMM_SELF, false);
     return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                     static_line(green), green.points)};
+                                     modal::static_line(green), green.points)};
   }
 
   /// Milliseconds per step of the rank-one update of @p model.
@@ -146,7 +134,7 @@ main(int argc, char **argv)
                     << format_number(top) << " Hz, " << green.n_points() << " points, lines to "
                     << format_number(f_max) << " Hz\n";
         }
-      const Eigen::MatrixXd G0 = static_line(green);
+      const Eigen::MatrixXd G0 = modal::static_line(green);
       const unsigned int    P  = green.n_points();
       std::cout << "  cut-off [Hz]   modes   E median    E p90   E worst  driving  passivity"
                    "       G_r   MB/step  ms/step\n";

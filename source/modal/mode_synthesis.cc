@@ -48,6 +48,19 @@ namespace greentread
 
 
 
+    Eigen::MatrixXd
+    static_line(const FrequencyResponseMatrix &green)
+    {
+      const unsigned int P = green.n_points();
+      Eigen::MatrixXd    G0(P, P);
+      for (unsigned int i = 0; i < P; ++i)
+        for (unsigned int j = 0; j < P; ++j)
+          G0(i, j) = green.values[std::size_t(i) * P + j].real();
+      return G0;
+    }
+
+
+
     ModeSynthesis
     synthesise(const Eigen::VectorXd                    &omega,
                const Eigen::VectorXd                    &damping_ratio,

@@ -67,12 +67,8 @@ namespace greentread
       const RingModes modes = ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
 
       // G_r from the static line: the direct solve at 0 Hz.
-      Eigen::MatrixXd G0(P, P);
-      for (unsigned int i = 0; i < P; ++i)
-        for (unsigned int j = 0; j < P; ++j)
-          G0(i, j) = green.values[std::size_t(i) * P + j].real();
-      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, G0,
-                                    green.points);
+      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                    modal::static_line(green), green.points);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
         {

@@ -9,6 +9,7 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/modal/mode_synthesis.h>
 #include <greentread/periodic/mode_stage.h>
 #include <greentread/scenes/road_scene.h>
 
@@ -156,10 +157,7 @@ namespace greentread
       // the structure's static compliance, which the static start uses.
       const analysis::PatchLattice lattice(model.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(model.points);
-      Eigen::MatrixXd              G0(n_p, n_p);
-      for (unsigned int i = 0; i < n_p; ++i)
-        for (unsigned int j = 0; j < n_p; ++j)
-          G0(i, j) = G.values[std::size_t(i) * n_p + j].real();
+      const Eigen::MatrixXd        G0 = modal::static_line(G);
       const double static_mismatch =
         (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       std::cout << "  the model's static compliance differs from the structure's by "

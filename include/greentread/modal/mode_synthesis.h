@@ -71,6 +71,11 @@ namespace greentread
       residual_definiteness() const;
     };
 
+    /// The 0 Hz line of @p green as a real n_p x n_p matrix: the structure's
+    /// static compliance G(0) [m/N].
+    Eigen::MatrixXd
+    static_line(const FrequencyResponseMatrix &green);
+
     /**
      * @brief The synthesis from the modes (@p omega [rad/s], @p damping_ratio,
      * @p shapes [mode][point]) and the static Green's functions
