@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/periodic/ring_chain.h>
 
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
@@ -226,71 +227,13 @@ namespace greentread
 
 
 
-      /**
-       * A chain of cells: unknowns are the faces 0 .. n_faces - 1, then the
-       * interiors 0 .. n_chain - 1. Cell m joins face m, interior m and face
-       * (m + 1) mod n_faces: an open chain has n_chain + 1 faces, a closed
-       * ring n_chain.
-       */
-      struct Chain
-      {
-        unsigned int n_face, n_interior, n_chain, n_faces;
-
-        unsigned int
-        size() const
-        {
-          return n_faces * n_face + n_chain * n_interior;
-        }
-        /// The chain index of DoF i of cell m's [L, I, R].
-        unsigned int
-        index(const unsigned int m, const unsigned int i) const
-        {
-          if (i < n_face)
-            return m * n_face + i;
-          if (i < n_face + n_interior)
-            return n_faces * n_face + m * n_interior + (i - n_face);
-          return ((m + 1) % n_faces) * n_face + (i - n_face - n_interior);
-        }
-        void
-        add(const SparseComplex &D, std::vector<Eigen::Triplet<Complex>> &entries) const
-        {
-          for (unsigned int m = 0; m < n_chain; ++m)
-            for (int c = 0; c < D.outerSize(); ++c)
-              for (SparseComplex::InnerIterator it(D, c); it; ++it)
-                entries.emplace_back(index(m, it.row()), index(m, it.col()), it.value());
-        }
-        /// The contact points' unit loads, one column each.
-        Dense
-        loads(const ContactPatch &patch) const
-        {
-          Dense B = Dense::Zero(size(), patch.points.size());
-          for (unsigned int q = 0; q < patch.points.size(); ++q)
-            for (const auto &e : patch.points[q].load)
-              B(index(e.cell, e.dof), q) += e.weight;
-          return B;
-        }
-        /// g(p, q) from the solutions X of the loads: the same weights.
-        Dense
-        at_points(const ContactPatch &patch, const Dense &X) const
-        {
-          const unsigned int P = patch.points.size();
-          Dense              g = Dense::Zero(P, P);
-          for (unsigned int p = 0; p < P; ++p)
-            for (const auto &e : patch.points[p].load)
-              g.row(p) += e.weight * X.row(index(e.cell, e.dof));
-          return g;
-        }
-      };
-
-
-
       /// The reference: all N cells assembled, one sparse solve.
       /// Factorise the chain's matrix @p A (analysed already), solve for
       /// unit loads at the contact points, check, and read g off.
       Dense
       solve_chain(ChainLU            &lu,
                   const SparseComplex &A,
-                  const Chain         &chain,
+                  const RingChain     &chain,
                   const ContactPatch  &patch,
                   const double         omega,
                   const std::string   &what,
@@ -308,7 +251,7 @@ namespace greentread
                std::string()) +
             "): the ring is too large for a direct solve; use Method = bloch");
         require_factorised(lu, omega, what);
-        const Dense B = chain.loads(patch);
+        const Dense B = chain.loads(patch).cast<Complex>();
         const Dense X = lu.solve(B);
         check_solution(A, X, B, omega, what, diagnostics);
         return chain.at_points(patch, X);
@@ -328,11 +271,7 @@ namespace greentread
         Dense
         solve(const double omega, SolveDiagnostics &diagnostics) override
         {
-          std::vector<Eigen::Triplet<Complex>> entries;
-          ring.add(cell.dynamic_stiffness(omega), entries);
-          SparseComplex A(ring.size(), ring.size());
-          A.setFromTriplets(entries.begin(), entries.end());
-          A.makeCompressed();
+          const SparseComplex A = ring.assemble(cell.dynamic_stiffness(omega));
           if (!analysed)
             {
               lu.analyzePattern(A);
@@ -344,7 +283,7 @@ namespace greentread
       private:
         const PeriodicCell &cell;
         const ContactPatch &patch;
-        const Chain         ring;
+        const RingChain     ring;
         ChainLU             lu;
         bool                analysed = false;
       };
@@ -466,7 +405,7 @@ namespace greentread
       private:
         const PeriodicCell &cell;
         const ContactPatch &patch;
-        const Chain         contact;
+        const RingChain     contact;
       };
     } // namespace
 
