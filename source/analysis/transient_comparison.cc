@@ -264,6 +264,7 @@ namespace greentread
       const auto start    = std::chrono::steady_clock::now();
       const auto summary  = contact::roll_patch(convolution, tread, heights, start_contact, rolling, observe);
       result.seconds      = seconds_since(start);
+      result.step_compliance      = convolution.influence().u[2](centre, centre);
       result.failed_steps         = summary.failed_steps;
       result.static_contacts      = start_contact.n_contact;
       result.min_contact_fraction = summary.min_contact_fraction;

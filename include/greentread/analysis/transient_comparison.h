@@ -74,6 +74,9 @@ namespace greentread
       double              seconds = 0.;
       std::vector<double> force, stress; ///< [N], [Pa]
       unsigned int        failed_steps = 0;
+      /// The complementarity problem's matrix at the centre point: its
+      /// displacement at a step's end per unit force at that end [m/N].
+      double step_compliance = 0.;
       /// Points in contact at the start, and the least and most fraction over the run.
       unsigned int static_contacts = 0;
       double       min_contact_fraction = 1., max_contact_fraction = 0.;
