@@ -83,13 +83,6 @@ namespace greentread
         return ring.size();
       }
 
-      /// The displacement at the points now (t_n).
-      Eigen::VectorXd
-      displacement() const
-      {
-        return loads_t * u;
-      }
-
     private:
       using SparseLU = Eigen::UmfPackLU<SparseReal>;
 
