@@ -120,7 +120,7 @@ namespace greentread
       parameters.sampling   = setup.sampling;
       parameters.amplitude  = setup.sinusoid_amplitude;
       parameters.wavelength = setup.sinusoid_wavelength;
-      spacing             = parameters.spacing;
+      spacing               = parameters.spacing;
       double y_min = 0., y_max = 0.;
       for (const auto &p : points)
         {
@@ -158,8 +158,8 @@ namespace greentread
     std::string
     TransientCase::describe() const
     {
-      return tyre->describe(setup.proportional_damping ? 0. : fe::InflationParameters().pressure) + "  full ring: " +
-             std::to_string(ring_dofs) + " unknowns; its static compliance B^T K^-1 B equals the "
+      const double pressure = setup.proportional_damping ? 0. : fe::InflationParameters().pressure;
+      return tyre->describe(pressure) + "  full ring: " + std::to_string(ring_dofs) + " unknowns; its static compliance B^T K^-1 B equals the "
              "Green's functions' 0 Hz line to " + format_printf("%.2g", static_difference) +
              "\n  Green's functions: " + std::to_string(green.n_lines) + " lines every " +
              format_number(setup.frequency_step) + " Hz (Bloch); static load " +
@@ -180,7 +180,8 @@ namespace greentread
     unsigned int
     TransientCase::steps(const double dt) const
     {
-      return static_cast<unsigned int>(std::ceil(setup.distance / (setup.speed_kmh / 3.6 * dt) - 1e-9));
+      const double V = setup.speed_kmh / 3.6;
+      return static_cast<unsigned int>(std::ceil(setup.distance / (V * dt) - 1e-9));
     }
 
 

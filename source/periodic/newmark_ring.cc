@@ -14,10 +14,10 @@ namespace greentread
       void
       factorise(Eigen::UmfPackLU<SparseReal> &lu, const SparseReal &A, const std::string &what)
       {
-        // No iterative refinement: the solves are checked against the
-      // backward-error bound instead, and refinement tripled a step's cost.
-      lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
-      lu.compute(A);
+        // No iterative refinement: the set-up's solves are checked against
+        // the backward-error bound instead, and refinement tripled a step's cost.
+        lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+        lu.compute(A);
         if (lu.info() != Eigen::Success)
           throw NumericalError("Newmark reference: UMFPACK could not factorise " + what + " of the "
                                "full ring (" + std::to_string(A.rows()) + " unknowns, UMFPACK "
@@ -63,8 +63,8 @@ namespace greentread
       loads                   = B.sparseView();
       loads_t                 = loads.transpose();
 
-      // UMFPACK's solves refine with the matrix itself: Eigen keeps a
-      // reference to it, so it lives as long as its factorisation.
+      // Eigen's UmfPackLU keeps a reference to the matrix and hands it to
+      // every solve: it lives as long as its factorisation.
       K_eff = K + (2. / dt) * C + (4. / (dt * dt)) * M;
       factorise(effective, K_eff, "the effective stiffness K + 2C/dt + 4M/dt^2");
       factorise(stiffness, K, "the stiffness K + Kp");
