@@ -105,7 +105,8 @@ BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_st
                               << " dB, " << d_high.stress_band << " dB; step compliance "
                               << reference.step_compliance << " (reference), "
                               << coarse.step_compliance << ", " << fine.step_compliance
-                              << " m/N");
+                              << " m/N; mean force " << mean(fine.force) << " N against "
+                              << mean(reference.force) << " N");
       BOOST_TEST(d_high.force_band < 1.);
       BOOST_TEST(d_high.stress_band < 1.);
       BOOST_TEST(d_high.force < 0.25);
