@@ -129,9 +129,8 @@ namespace greentread
         }
       for (const std::string name : {"sinusoid", "road-A", "road-B"})
         {
-          textures.emplace(name, parameters.make(name, y_max - y_min + 0.03));
-          roads.emplace(name, std::make_unique<road::PatchRoad>(textures.at(name), points,
-                                                                setup.sampling, name));
+          roads.emplace(name, road::PatchRoad(parameters.make(name, y_max - y_min + 0.03), points,
+                                              setup.sampling, name));
         }
 
       // The reference's static compliance against the Green's functions' 0 Hz line.
@@ -226,7 +225,7 @@ namespace greentread
       const auto it = roads.find(name);
       if (it == roads.end())
         throw InputError("road '" + name + "' is not offered; allowed: sinusoid, road-A, road-B");
-      return *it->second;
+      return it->second;
     }
 
 

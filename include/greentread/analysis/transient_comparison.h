@@ -177,8 +177,7 @@ namespace greentread
       double                                    area = 0., spacing = 0.;
       double                                    static_difference = 0.;
       unsigned int                              ring_dofs = 0;
-      std::map<std::string, road::Texture>      textures;
-      std::map<std::string, std::unique_ptr<road::PatchRoad>> roads;
+      std::map<std::string, road::PatchRoad>    roads;
     };
   } // namespace analysis
 } // namespace greentread
