@@ -2,6 +2,7 @@
 #include <greentread/analysis/transient_comparison.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
+#include <greentread/base/progress.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/modal/identification.h>
 #include <greentread/modal/mode_synthesis.h>
@@ -22,12 +23,6 @@ namespace greentread
   {
     namespace
     {
-      double
-      seconds_since(const std::chrono::steady_clock::time_point start)
-      {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      }
-
       /// max |a - b| / max |b|.
       double
       relative_difference(const std::vector<double> &a, const std::vector<double> &b)
@@ -194,7 +189,7 @@ namespace greentread
       PathModel path;
       path.name    = "LSCE patch model";
       path.model   = modal::fit_patch_model(green, identification, modal::PatchModelParameters(), false);
-      path.seconds = seconds_since(start);
+      path.seconds = base::seconds_since(start);
       return path;
     }
 
@@ -213,7 +208,7 @@ namespace greentread
       PathModel path;
       path.name    = "modes to " + format_number(cutoff_hz / 1000.) + " kHz";
       path.model   = modal::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);
-      path.seconds = seconds_since(start);
+      path.seconds = base::seconds_since(start);
       return path;
     }
 
@@ -263,7 +258,7 @@ namespace greentread
       };
       const auto start    = std::chrono::steady_clock::now();
       const auto summary  = contact::roll_patch(convolution, tread, heights, start_contact, rolling, observe);
-      result.seconds      = seconds_since(start);
+      result.seconds      = base::seconds_since(start);
       result.step_compliance      = convolution.influence().u[2](centre, centre);
       result.failed_steps         = summary.failed_steps;
       result.static_contacts      = start_contact.n_contact;
@@ -324,7 +319,7 @@ namespace greentread
     {
       const auto            start = std::chrono::steady_clock::now();
       periodic::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
-      const double          setup_seconds = seconds_since(start);
+      const double          setup_seconds = base::seconds_since(start);
       TransientRun          result        = run(ring, road, dt);
       result.seconds += setup_seconds;
       return result;
@@ -339,7 +334,7 @@ namespace greentread
       const auto start = std::chrono::steady_clock::now();
       const auto convolution =
         contact::make_patch_convolution(method, model.model, dt, steps(dt), 0, 2);
-      const double setup_seconds = seconds_since(start);
+      const double setup_seconds = base::seconds_since(start);
       TransientRun result        = run(*convolution, road, dt);
       result.seconds += setup_seconds;
       return result;

@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
 #include <greentread/config.h>
 #include <greentread/green_sources_digest.h>
 #include <greentread/periodic/green_stage.h>
@@ -17,12 +18,6 @@ namespace greentread
   {
     namespace
     {
-      double
-      seconds_since(const std::chrono::steady_clock::time_point start)
-      {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      }
-
       /// FNV-1a of a file's bytes, as 16 hex digits: stable across runs and
       /// builds, unlike std::hash. An empty string if it cannot be read.
       std::string
@@ -57,17 +52,17 @@ namespace greentread
     {
       auto start   = std::chrono::steady_clock::now();
       cell         = std::make_unique<geometry::TyreCell>(geometry);
-      mesh_seconds = seconds_since(start);
+      mesh_seconds = base::seconds_since(start);
 
       start = std::chrono::steady_clock::now();
       model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
       model->assemble();
-      assembly_seconds = seconds_since(start);
+      assembly_seconds = base::seconds_since(start);
 
       start        = std::chrono::steady_clock::now();
       const auto u = fe::solve_inflation(*model, cell->angle(), inflation.pressure);
       model->assemble_geometric_stiffness(u);
-      inflation_seconds = seconds_since(start);
+      inflation_seconds = base::seconds_since(start);
 
       tread_growth  = fe::tread_growth(*model, u, geometry.outer_radius()).first;
       periodic_cell = make_periodic_cell(*model, cell->angle(), cell->n_cells(),

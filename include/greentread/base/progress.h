@@ -17,6 +17,13 @@ namespace greentread
 {
   namespace base
   {
+    /// The wall-clock seconds since @p start.
+    inline double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
     /**
      * @brief Prints "label: 42% (8400/20000), 3.1 s, about 4.3 s left" at most
      * every @p interval seconds, and nothing for loops that end sooner.
