@@ -22,6 +22,10 @@
 //    the centre point (its displacement at a step's end per unit force at
 //    that end), which decides the forces at the step's scale.
 // 3. The same with dt halved, with the highest cut-off.
+// 4. The tread surface's mass moved inward ('Materials/Tread pattern/Surface
+//    mass = moved inward'), in the reference and in the modes alike: the
+//    contact nodes carry no mass, and dt is halved twice for every cut-off;
+//    beside each run, how far its force moved from the run at twice its step.
 //
 //   fe_transient [--quick] [--output DIR]
 
@@ -29,6 +33,7 @@
 #include <greentread/analysis/transient_comparison.h>
 #include <greentread/base/exceptions.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -128,7 +133,13 @@ main(int argc, char **argv)
         rolling_cutoffs.push_back(32000.);
       for (const double f : rolling_cutoffs)
         models.push_back(study.mode_model(f));
-      const double dt = study.road_time_step();
+      const double dt   = study.road_time_step();
+      const auto   mean = [](const std::vector<double> &f) {
+        double sum = 0.;
+        for (const double x : f)
+          sum += x;
+        return sum / f.size();
+      };
       for (const std::string road : {"sinusoid", "road-A"})
         {
           std::printf("\n%s at %g km/h over %.2f m, dt = %.4g us (%u steps):\n", road.c_str(),
@@ -136,12 +147,6 @@ main(int argc, char **argv)
           std::printf("  %-40s %9s %11s %11s %10s %10s %11s %12s\n", "path", "time [s]", "dF / F_max",
                       "ds / s_max", "dL_F [dB]", "dL_s [dB]", "mean F [N]", "W_cc [m/N]");
           const auto reference = study.reference(road, dt);
-          const auto mean      = [](const std::vector<double> &f) {
-            double sum = 0.;
-            for (const double x : f)
-              sum += x;
-            return sum / f.size();
-          };
           const auto row = [&](const std::string &path, const unsigned int modes,
                                const analysis::TransientRun &run) {
             const auto d = analysis::compare(run, reference, dt);
@@ -188,6 +193,65 @@ main(int argc, char **argv)
                   << model.model.n_terms() << ',' << 1e6 * half << ',' << run.seconds << ','
                   << d.force << ',' << d.stress << ',' << d.force_band << ',' << d.stress_band
                   << ",," << run.step_compliance << '\n';
+            }
+        }
+      // 4. The tread surface's mass moved inward, in the reference and in the
+      //    modes alike: dt halved twice, every cut-off.
+      if (!quick)
+        {
+          analysis::TransientCaseSetup massless = rolling;
+          massless.surface_mass_inward          = true;
+          const analysis::TransientCase moved(massless);
+          std::printf("\nThe tread surface's mass moved inward (massless contact nodes), "
+                      "modal-recursive:\n%s\n", moved.describe().c_str());
+          std::vector<analysis::PathModel> moved_models;
+          for (const double f : {8000., 16000., 32000.})
+            moved_models.push_back(moved.mode_model(f));
+          // The largest change of the total force between a run and one at
+          // half its step, at their common times, over the finer one's peak.
+          const auto change = [](const std::vector<double> &coarse, const std::vector<double> &fine) {
+            double largest = 0., peak = 0.;
+            for (std::size_t n = 1; n <= coarse.size() && 2 * n <= fine.size(); ++n)
+              {
+                largest = std::max(largest, std::abs(coarse[n - 1] - fine[2 * n - 1]));
+                peak    = std::max(peak, std::abs(fine[2 * n - 1]));
+              }
+            return largest / peak;
+          };
+          for (const std::string road : {"sinusoid", "road-A"})
+            {
+              std::printf("  %s:\n  %-8s %-28s %9s %11s %11s %10s %10s %11s %12s %12s\n",
+                          road.c_str(), "dt [us]", "path", "time [s]", "dF / F_max",
+                          "ds / s_max", "dL_F [dB]", "dL_s [dB]", "mean F [N]", "W_cc [m/N]",
+                          "dt/2 moves F");
+              std::vector<analysis::TransientRun> previous;
+              for (const double fraction : {1., 0.5, 0.25})
+                {
+                  const double                        step = fraction * dt;
+                  std::vector<analysis::TransientRun> runs{moved.reference(road, step)};
+                  for (const auto &m : moved_models)
+                    runs.push_back(moved.fast(road, step, m, convolution::Method::modal_recursive));
+                  for (std::size_t r = 0; r < runs.size(); ++r)
+                    {
+                      const auto  &run  = runs[r];
+                      const auto   d    = analysis::compare(run, runs[0], step);
+                      const std::string name =
+                        r == 0 ? "reference" : moved_models[r - 1].name;
+                      const std::string moved_by =
+                        previous.empty() ? "" : format_printf("%.3e", change(previous[r].force, run.force));
+                      std::printf("  %-8.4g %-28s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %12s\n",
+                                  1e6 * step, name.c_str(), run.seconds, d.force, d.stress,
+                                  d.force_band, d.stress_band, mean(run.force),
+                                  run.step_compliance, moved_by.c_str());
+                      csv << "rolling surface mass inward,per-layer," << road << ',' << name << ','
+                          << (r == 0 ? 0u : moved_models[r - 1].model.n_terms()) << ','
+                          << 1e6 * step << ',' << run.seconds << ',' << d.force << ','
+                          << d.stress << ',' << d.force_band << ',' << d.stress_band << ','
+                          << mean(run.force) << ',' << run.step_compliance << '\n';
+                    }
+                  std::fflush(stdout);
+                  previous = runs;
+                }
             }
         }
       std::printf("\nWrote %s\n", (options.output / "fe_transient.csv").string().c_str());

@@ -89,10 +89,11 @@ namespace greentread
       geometry.n_cells   = setup.n_cells;
       fe::MaterialParameters  materials;
       fe::InflationParameters inflation;
+      materials.tread_surface_mass_inward = setup.surface_mass_inward;
       if (setup.proportional_damping)
         {
           materials.tread_loss = materials.belt_loss = materials.sidewall_loss =
-            materials.bead_loss = 0.05;
+            materials.bead_loss = setup.loss_factor;
           inflation.pressure = 0.;
         }
       tyre = std::make_unique<periodic::InflatedTyre>(geometry, materials, inflation, setup.patch);

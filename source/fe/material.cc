@@ -144,6 +144,15 @@ namespace greentread
         density("1000");
         isotropic("7e6", "0.49", "rubber, 7 MPa, nu = 0.49");
         loss("0.1", "a typical tread compound.");
+        prm.declare_entry(
+          "Surface mass", "consistent", dealii::Patterns::Selection("consistent|moved inward"),
+          "Where the mass of the tread's contact surface sits. 'consistent': the consistent mass "
+          "matrix, so the contact nodes carry mass and kinematic contact on them is an impact "
+          "whose force grows as the time step falls. 'moved inward': the velocity of each node of "
+          "the contact surface is taken, in the kinetic energy and in the damping, as that of "
+          "the nearest node inside the same element (mass redistribution, Khenous, Laborde and "
+          "Renard 2008); the contact nodes then carry no mass and no damping, total mass is kept "
+          "exactly, and the contact force converges as the time step falls.");
         prm.leave_subsection();
 
         prm.enter_subsection("Belt");
@@ -205,6 +214,7 @@ namespace greentread
         tread_E       = prm.get_double("Young's modulus");
         tread_nu      = prm.get_double("Poisson's ratio");
         tread_loss    = prm.get_double("Loss factor");
+        tread_surface_mass_inward = prm.get("Surface mass") == "moved inward";
         prm.leave_subsection();
 
         prm.enter_subsection("Belt");

@@ -153,6 +153,12 @@ namespace greentread
         for (Eigen::Index i = 0; i < n; ++i)
           X(i, j) = Complex(uniform(random), uniform(random));
 
+      // The start is T X, not X: every vector of the Krylov space is then in
+      // the range of T, where the modes are. With a singular M (mass moved
+      // off the contact surface) a random start has components in M's null
+      // space that T never removes, and they swamp the Rayleigh-Ritz step.
+      X = lu.solve(Dense(M * X));
+      ++modes.n_solves;
       const double wanted = std::pow(1.25 * search.cutoff, 2), kept = std::pow(search.cutoff, 2);
       Eigen::Index last_first = 0, last_added = basis.add(X), next_check = 8 * b;
       while (true)
@@ -219,7 +225,7 @@ namespace greentread
             }
           // The next block: T applied to the last block added.
           const Dense last = basis.vectors().middleCols(last_first, last_added);
-          const Dense Y    = lu.solve(M * last);
+          const Dense Y    = lu.solve(Dense(M * last));
           ++modes.n_solves;
           last_first = basis.size();
           last_added = basis.add(Y);

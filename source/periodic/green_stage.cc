@@ -67,7 +67,9 @@ namespace greentread
       tread_growth  = fe::tread_growth(*model, u, geometry.outer_radius()).first;
       periodic_cell = make_periodic_cell(*model, cell->angle(), cell->n_cells(),
                                          geometry::rim_seat, geometry::tread_surface, true);
-      patch         = place_contact_points(periodic_cell, patch_request);
+      if (materials.tread_surface_mass_inward)
+        moved_mass_fraction = move_tread_mass_inward(periodic_cell);
+      patch = place_contact_points(periodic_cell, patch_request);
     }
 
 
@@ -81,8 +83,12 @@ namespace greentread
              std::to_string(pc.size()) + " free DoFs (faces " + std::to_string(pc.n_face) +
              " each, interior " + std::to_string(pc.n_interior) + "), inflated at " +
              format_number(pressure) + " Pa (tread growth " +
-             format_printf("%.4g", 1e3 * tread_growth) + " mm)\n  " + patch.describe() +
-             '\n';
+             format_printf("%.4g", 1e3 * tread_growth) + " mm)" +
+             (moved_mass_fraction > 0. ? "; the tread surface's mass (" +
+                                           format_printf("%.3g", 100. * moved_mass_fraction) +
+                                           "% of the cell's) moved inward"
+                                       : std::string()) +
+             "\n  " + patch.describe() + '\n';
     }
 
 

@@ -7,6 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace greentread
@@ -226,6 +227,66 @@ namespace greentread
       cell.damping = rotate(model.damping());
       cell.mass    = rotate(model.mass());
       return cell;
+    }
+
+
+
+    double
+    move_tread_mass_inward(PeriodicCell &cell)
+    {
+      const Eigen::Index n        = cell.size();
+      const auto         position = [&](const Eigen::Index i) {
+        const CellDof &d = cell.dofs[i];
+        return Eigen::Vector3d(d.radius * std::cos(d.angle), d.radius * std::sin(d.angle), d.axial);
+      };
+      // The mass matrix's pattern is the DoFs' element adjacency.
+      std::vector<Eigen::Triplet<double>> map;
+      map.reserve(n);
+      Eigen::VectorXd axial = Eigen::VectorXd::Zero(n);
+      for (Eigen::Index i = 0; i < n; ++i)
+        {
+          if (cell.dofs[i].component == 2)
+            axial(i) = 1.;
+          if (!cell.dofs[i].on_tread)
+            {
+              map.emplace_back(i, i, 1.);
+              continue;
+            }
+          Eigen::Index partner  = -1;
+          double       distance = std::numeric_limits<double>::infinity();
+          for (SparseReal::InnerIterator it(cell.mass, i); it; ++it)
+            {
+              const Eigen::Index j = it.row();
+              if (cell.dofs[j].on_tread || cell.dofs[j].component != cell.dofs[i].component)
+                continue;
+              const double d = (position(j) - position(i)).norm();
+              if (d < distance)
+                {
+                  distance = d;
+                  partner  = j;
+                }
+            }
+          if (partner < 0)
+            throw NumericalError("move_tread_mass_inward: the tread-surface node at (radius, z) = (" +
+                                 format_number(cell.dofs[i].radius) + ", " +
+                                 format_number(cell.dofs[i].axial) +
+                                 ") m shares no element with a node off the surface");
+          map.emplace_back(i, partner, 1.);
+        }
+      SparseReal T(n, n);
+      T.setFromTriplets(map.begin(), map.end());
+      const Eigen::VectorXd row_sums = cell.mass * axial;
+      const double          total    = axial.dot(row_sums);
+      double                moved    = 0.;
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (cell.dofs[i].on_tread)
+          moved += axial(i) * row_sums(i);
+      const SparseReal Tt = T.transpose();
+      cell.mass           = SparseReal(Tt * cell.mass * T).pruned();
+      cell.damping        = SparseReal(Tt * cell.damping * T).pruned();
+      cell.mass.makeCompressed();
+      cell.damping.makeCompressed();
+      return moved / total;
     }
   } // namespace periodic
 } // namespace greentread

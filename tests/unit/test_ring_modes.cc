@@ -228,4 +228,83 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   BOOST_TEST(errors.passivity > -1e-12);
 }
 
+BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
+{
+  // Mass redistribution (periodic::move_tread_mass_inward) on the inflated
+  // coarse cell: the tread surface's DoFs lose their mass and damping, the
+  // axial translation keeps its kinetic energy exactly, M stays positive
+  // semidefinite. The Bloch modes of the singular pencil (K, M') against an
+  // independent dense solve: the massless DoFs condensed statically
+  // (K_rr - K_rs K_ss^-1 K_sr, with M'_rr positive definite), then a dense
+  // generalised eigen-solve.
+  const unsigned int N = 16;
+  test::CoarseTyre   tyre(N, patch_request(), true);
+  auto              &cell   = tyre.periodic_cell;
+  const periodic::SparseReal before = cell.mass;
+  const double               moved  = periodic::move_tread_mass_inward(cell);
+  Eigen::VectorXd            axial  = Eigen::VectorXd::Zero(cell.size());
+  for (unsigned int i = 0; i < cell.size(); ++i)
+    {
+      if (cell.dofs[i].component == 2)
+        axial(i) = 1.;
+      if (cell.dofs[i].on_tread)
+        {
+          BOOST_TEST(cell.mass.col(i).norm() == 0.);
+          BOOST_TEST(cell.damping.col(i).norm() == 0.);
+        }
+    }
+  const double m0 = axial.dot(before * axial), m1 = axial.dot(cell.mass * axial);
+  BOOST_TEST_MESSAGE("moved " << 100. * moved << "% of the cell's mass; axial mass " << m0
+                              << " -> " << m1 << " kg");
+  BOOST_TEST(moved > 0.01);
+  BOOST_TEST(moved < 0.2);
+  BOOST_TEST(std::abs(m1 - m0) < 1e-12 * m0);
+
+  periodic::ModeSearch search;
+  search.cutoff = 2. * M_PI * 3000.;
+  for (const unsigned int k : {0u, 3u})
+    {
+      const Eigen::MatrixXcd K = dense_part(cell, k, 1., 0., 0.);
+      const Eigen::MatrixXcd M = dense_part(cell, k, 0., 0., 1.);
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> mass_eigen(M);
+      BOOST_TEST(mass_eigen.eigenvalues().minCoeff() > -1e-12 * mass_eigen.eigenvalues().maxCoeff());
+      // The massive DoFs r and the massless s of [L, I].
+      std::vector<Eigen::Index> r, s;
+      for (Eigen::Index i = 0; i < K.rows(); ++i)
+        (M.col(i).norm() == 0. ? s : r).push_back(i);
+      BOOST_TEST_REQUIRE(!s.empty());
+      const auto block = [](const Eigen::MatrixXcd &A, const std::vector<Eigen::Index> &a,
+                            const std::vector<Eigen::Index> &b) {
+        Eigen::MatrixXcd out(a.size(), b.size());
+        for (std::size_t i = 0; i < a.size(); ++i)
+          for (std::size_t j = 0; j < b.size(); ++j)
+            out(i, j) = A(a[i], b[j]);
+        return out;
+      };
+      const Eigen::MatrixXcd K_sr = block(K, s, r);
+      Eigen::MatrixXcd       condensed =
+        block(K, r, r) - K_sr.adjoint() * block(K, s, s).ldlt().solve(K_sr);
+      condensed = (0.5 * (condensed + condensed.adjoint())).eval();
+      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> dense(condensed,
+                                                                             block(M, r, r));
+      const auto modes = periodic::bloch_modes(cell, k, search);
+      Eigen::Index expected = 0;
+      while (expected < dense.eigenvalues().size() &&
+             dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
+        ++expected;
+      BOOST_TEST_MESSAGE("mass moved inward, k = " << k << ": " << modes.omega.size()
+                                                   << " modes to 3 kHz, " << s.size()
+                                                   << " massless DoFs of " << K.rows()
+                                                   << ", residual " << modes.max_residual);
+      BOOST_TEST_REQUIRE(modes.omega.size() == expected);
+      BOOST_TEST_REQUIRE(expected > 5);
+      const double accuracy = std::max(1e-9, modes.max_residual);
+      for (Eigen::Index j = 0; j < expected; ++j)
+        BOOST_TEST(std::abs(modes.omega(j) / std::sqrt(dense.eigenvalues()(j)) - 1.) < accuracy);
+      const Eigen::MatrixXcd gram = modes.shapes.adjoint() * M * modes.shapes;
+      BOOST_TEST((gram - Eigen::MatrixXcd::Identity(expected, expected)).cwiseAbs().maxCoeff() <
+                 1e-10);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

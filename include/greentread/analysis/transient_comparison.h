@@ -52,10 +52,16 @@ namespace greentread
       /// (\f$\sin^2\f$ ramp), so that both paths start at rest from the
       /// static contact on the flat road, with no impact at t = 0 [m].
       double run_in = 0.02;
-      /// No inflation and one loss factor (0.05) for every layer, so that
+      /// No inflation and one loss factor (loss_factor) for every layer, so that
       /// C = a M + b K and the modes diagonalise it: the fast path's only
       /// errors are then the time step's and the cut-off's.
       bool proportional_damping = false;
+      /// With proportional_damping: the loss factor of every layer (0: no damping).
+      double loss_factor = 0.05;
+      /// 'Materials/Tread pattern/Surface mass = moved inward': the contact
+      /// nodes carry no mass and no damping (periodic::move_tread_mass_inward),
+      /// in the reference and in the fast path's Green's functions and modes alike.
+      bool surface_mass_inward = false;
       /// 'Road texture/Sinusoid amplitude' and 'Sinusoid wavelength' [m].
       double sinusoid_amplitude = 1e-3, sinusoid_wavelength = 0.05;
     };

@@ -85,6 +85,10 @@ namespace greentread
       double bead_density = 7850., bead_E = 162.6e9, bead_nu = 0.33, bead_loss = 0.002;
       // The two frequencies where the Rayleigh damping ratio equals eta/2.
       double damping_f1 = 200., damping_f2 = 2000.;
+      /// 'Tread pattern/Surface mass': false = consistent, true = moved
+      /// inward (the contact surface's nodes carry no mass and no damping;
+      /// see periodic::move_tread_mass_inward).
+      bool tread_surface_mass_inward = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

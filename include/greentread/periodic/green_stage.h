@@ -40,6 +40,9 @@ namespace greentread
       ContactPatch                        patch;
       /// The largest radial growth of the tread under the inflation [m].
       double tread_growth = 0.;
+      /// With 'Surface mass = moved inward': the fraction of the cell's
+      /// mass moved off the tread surface (0 otherwise).
+      double moved_mass_fraction = 0.;
       /// Run times of meshing, assembly, inflation with Kp [s].
       double mesh_seconds = 0., assembly_seconds = 0., inflation_seconds = 0.;
 

@@ -90,5 +90,28 @@ namespace greentread
                        dealii::types::boundary_id clamped,
                        dealii::types::boundary_id tread,
                        bool                       with_prestress);
+
+    /**
+     * @brief Mass redistribution at the contact surface (Khenous, Laborde
+     * and Renard 2008): the velocity of each DoF on the tread surface is
+     * taken as that of its partner, the DoF of the same component at the
+     * nearest node off the surface that shares an element with it (for one
+     * element through the tread, the node half-way down). With T that map
+     * (identity elsewhere), M <- T^T M T and C <- T^T C T; K is untouched.
+     *
+     * The surface DoFs then carry no mass and no damping: under kinematic
+     * contact they follow the road quasi-statically, and the continuous
+     * problem has a contact force that converges as the time step falls.
+     * M stays symmetric positive semidefinite; the kinetic energy of an
+     * axial translation is kept exactly, and that of any motion in which a
+     * surface node moves as its partner.
+     *
+     * @returns the fraction of the cell's mass that was moved (the surface
+     * DoFs' share of the axial translation's kinetic energy).
+     * @throws NumericalError if a surface DoF shares no element with a DoF
+     * off the surface, naming where it is.
+     */
+    double
+    move_tread_mass_inward(PeriodicCell &cell);
   } // namespace periodic
 } // namespace greentread
