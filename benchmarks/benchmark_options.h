@@ -1,8 +1,9 @@
 #pragma once
 
 // Command line shared by the benchmarks: --quick (a smoke run with small
-// sizes), --output DIR (where CSV and PNG files go) and --model FILE (an
-// input model, for the benchmarks that take one).
+// sizes), --output DIR (where CSV and PNG files go), --model FILE (an
+// input model, for the benchmarks that take one) and --part N (one part of
+// a benchmark made of parts).
 
 #include <greentread/base/output.h>
 
@@ -24,6 +25,8 @@ namespace benchmark
     std::filesystem::path output;
     /// --model FILE: an input model where a benchmark takes one (else empty).
     std::filesystem::path model;
+    /// --part N: only part N of a benchmark made of parts (0: all of them).
+    unsigned int part = 0;
   };
 
   inline Options
@@ -38,9 +41,22 @@ namespace benchmark
         options.output = argv[++i];
       else if (std::strcmp(argv[i], "--model") == 0 && i + 1 < argc)
         options.model = argv[++i];
+      else if (std::strcmp(argv[i], "--part") == 0 && i + 1 < argc)
+        {
+          const std::string value = argv[++i];
+          if (value.empty() || value.size() > 3 ||
+              value.find_first_not_of("0123456789") != std::string::npos)
+            {
+              std::cerr << name << ": --part '" << value
+                        << "' is not allowed; allowed: a part number (0: every part)\n";
+              std::exit(2);
+            }
+          options.part = static_cast<unsigned int>(std::stoul(value));
+        }
       else
         {
-          std::cerr << "usage: " << name << " [--quick] [--output DIR] [--model FILE]\n";
+          std::cerr << "usage: " << name
+                    << " [--quick] [--output DIR] [--model FILE] [--part N]\n";
           std::exit(2);
         }
     options.output = greentread::base::prepare_output_directory(options.output.string());
