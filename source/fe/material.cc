@@ -151,8 +151,10 @@ namespace greentread
           "whose force grows as the time step falls. 'moved inward': the velocity of each node of "
           "the contact surface is taken, in the kinetic energy and in the damping, as that of "
           "the nearest node inside the same element (mass redistribution, Khenous, Laborde and "
-          "Renard 2008); the contact nodes then carry no mass and no damping, total mass is kept "
-          "exactly, and the contact force converges as the time step falls.");
+          "Renard 2008); the contact nodes then carry no mass and no damping, an axial translation "
+          "keeps its kinetic energy exactly, and the contact force converges as the time step "
+          "falls. Not the default: on a coarse mesh it also removes the surface layer's own "
+          "inertia.");
         prm.leave_subsection();
 
         prm.enter_subsection("Belt");
@@ -214,7 +216,7 @@ namespace greentread
         tread_E       = prm.get_double("Young's modulus");
         tread_nu      = prm.get_double("Poisson's ratio");
         tread_loss    = prm.get_double("Loss factor");
-        tread_surface_mass_inward = prm.get("Surface mass") == "moved inward";
+        tread_surface_mass_inward = (prm.get("Surface mass") == "moved inward");
         prm.leave_subsection();
 
         prm.enter_subsection("Belt");

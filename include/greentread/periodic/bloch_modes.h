@@ -59,8 +59,9 @@ namespace greentread
      * T = (K_phi - s M_phi)^{-1} M_phi from the block T X, X fixed
      * pseudo-random vectors (so that the space lies in T's range, where the
      * modes are, also when M is singular: mass moved off the contact
-     * surface leaves its DoFs massless), s = -(cutoff / 20)^2 (K_phi - s M_phi is positive definite,
-     * even for an unheld cell), kept M-orthonormal by two passes of block
+     * surface leaves its DoFs massless), s = -(cutoff / 20)^2
+     * (K_phi - s M_phi is positive definite, even for an unheld cell),
+     * kept M-orthonormal by two passes of block
      * Gram-Schmidt, is grown until every Ritz pair up to 1.25 times the
      * cut-off (and at least one beyond it) has converged. The sparse
      * factorisation is the Bloch solver's (supernodal LU with COLAMD), one
