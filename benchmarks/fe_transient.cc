@@ -127,6 +127,13 @@ main(int argc, char **argv)
       analysis::TransientCaseSetup rolling = setup;
       rolling.patch.points_along           = 4;
       rolling.patch.points_across          = 3;
+      // The mean of a run's total force [N].
+      const auto mean = [](const std::vector<double> &f) {
+        double sum = 0.;
+        for (const double x : f)
+          sum += x;
+        return sum / f.size();
+      };
       if (wanted(2) || wanted(3))
         {
           std::printf("Building the rolling case: Green's functions every %g Hz to %g Hz, the LSCE "
@@ -147,13 +154,7 @@ main(int argc, char **argv)
             rolling_cutoffs.push_back(32000.);
           for (const double f : rolling_cutoffs)
             models.push_back(study.mode_model(f));
-          const double dt   = study.road_time_step();
-          const auto   mean = [](const std::vector<double> &f) {
-            double sum = 0.;
-            for (const double x : f)
-              sum += x;
-            return sum / f.size();
-          };
+          const double dt = study.road_time_step();
           for (const std::string road : {"sinusoid", "road-A"})
             {
               std::printf("\n%s at %g km/h over %.2f m, dt = %.4g us (%u steps):\n", road.c_str(),
@@ -220,12 +221,6 @@ main(int argc, char **argv)
       // 4. The tread surface's mass moved inward, in the reference and in the
       //    modes alike: dt halved twice, every cut-off; 5. the same with a
       //    light damping that the modes diagonalise.
-      const auto mean = [](const std::vector<double> &f) {
-        double sum = 0.;
-        for (const double x : f)
-          sum += x;
-        return sum / f.size();
-      };
       for (const unsigned int part : {4u, 5u})
         if (!quick && wanted(part))
           {
