@@ -26,8 +26,9 @@
 //    mass = moved inward'), in the reference and in the modes alike: the
 //    contact nodes carry no mass, and dt is halved twice for every cut-off;
 //    beside each run, how far its force moved from the run at twice its step.
-// 5. The same with a light damping the modes diagonalise (no inflation, loss
-//    factor 0.005 everywhere): what is left when the damping is not in the way.
+// 5. The same with a damping the modes diagonalise (no inflation, the tread's
+//    loss factor 0.1 everywhere, so C = aM + bK): what is left when the
+//    damping's modal coupling is not in the way.
 //
 //   fe_transient [--quick] [--output DIR] [--part N]   (N = 1..5; default: all)
 
@@ -53,7 +54,7 @@ main(int argc, char **argv)
       const bool    quick   = options.quick;
       std::ofstream csv(options.output / "fe_transient.csv");
       csv << "study,damping,road,path,modes,dt_us,seconds,difference,stress_difference,"
-             "force_band_dB,stress_band_dB,mean_force_N,step_compliance_m_per_N\n";
+             "force_band_dB,stress_band_dB,mean_force_N,step_compliance_m_per_N,rms_difference\n";
 
       analysis::TransientCaseSetup setup;
       setup.geo_file   = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
@@ -111,7 +112,7 @@ main(int argc, char **argv)
                     std::printf(" %39.3e", e[m]);
                     csv << "structure," << damping << ",pulse," << models[m].name << ','
                         << models[m].model.n_terms() << ',' << 1e6 * dt << ',' << took << ','
-                        << e[m] << ",,,,,\n";
+                        << e[m] << ",,,,,,\n";
                   }
                 std::printf("   %s\n",
                             std::isnan(previous) ?
@@ -159,16 +160,16 @@ main(int argc, char **argv)
             {
               std::printf("\n%s at %g km/h over %.2f m, dt = %.4g us (%u steps):\n", road.c_str(),
                           setup.speed_kmh, setup.distance, 1e6 * dt, study.steps(dt));
-              std::printf("  %-40s %9s %11s %11s %10s %10s %11s %12s\n", "path", "time [s]",
-                          "dF / F_max", "ds / s_max", "dL_F [dB]", "dL_s [dB]", "mean F [N]",
-                          "W_cc [m/N]");
+              std::printf("  %-40s %9s %11s %11s %10s %10s %11s %12s %10s\n", "path",
+                          "time [s]", "dF / F_max", "ds / s_max", "dL_F [dB]", "dL_s [dB]",
+                          "mean F [N]", "W_cc [m/N]", "rms dF");
               const auto reference = study.reference(road, dt);
               const auto row       = [&](const std::string &path, const unsigned int modes,
                                    const analysis::TransientRun &run) {
                 const auto d = analysis::compare(run, reference, dt);
-                std::printf("  %-40s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e%s\n",
+                std::printf("  %-40s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %10.3f%s\n",
                                   path.c_str(), run.seconds, d.force, d.stress, d.force_band,
-                                  d.stress_band, mean(run.force), run.step_compliance,
+                                  d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
                             run.failed_steps ?
                                     format_printf("  (%g failed steps)", run.failed_steps).c_str() :
                                     "");
@@ -176,7 +177,7 @@ main(int argc, char **argv)
                 csv << "rolling,per-layer," << road << ',' << path << ',' << modes << ','
                     << 1e6 * dt << ',' << run.seconds << ',' << d.force << ',' << d.stress << ','
                     << d.force_band << ',' << d.stress_band << ',' << mean(run.force) << ','
-                    << run.step_compliance << '\n';
+                    << run.step_compliance << ',' << d.force_rms << '\n';
               };
               row("reference: Newmark, full ring", 0, reference);
               for (std::size_t m = 0; m < models.size(); ++m)
@@ -198,29 +199,29 @@ main(int argc, char **argv)
               const double half  = 0.5 * dt;
               std::printf("\nHalf the time step, %s (modal-recursive), dt = %.4g us:\n",
                           model.name.c_str(), 1e6 * half);
-              std::printf("  %-10s %11s %11s %10s %10s %14s %14s\n", "road", "dF / F_max",
+              std::printf("  %-10s %11s %11s %10s %10s %14s %14s %10s\n", "road", "dF / F_max",
                           "ds / s_max", "dL_F [dB]", "dL_s [dB]", "W_cc ref [m/N]",
-                          "W_cc fast [m/N]");
+                          "W_cc fast [m/N]", "rms dF");
               for (const std::string road : {"sinusoid", "road-A"})
                 {
                   const auto reference = study.reference(road, half);
                   const auto run =
                     study.fast(road, half, model, convolution::Method::modal_recursive);
                   const auto d = analysis::compare(run, reference, half);
-                  std::printf("  %-10s %11.2e %11.2e %10.2f %10.2f %14.3e %14.3e\n", road.c_str(),
-                              d.force, d.stress, d.force_band, d.stress_band,
-                              reference.step_compliance, run.step_compliance);
+                  std::printf("  %-10s %11.2e %11.2e %10.2f %10.2f %14.3e %14.3e %10.3f\n",
+                              road.c_str(), d.force, d.stress, d.force_band, d.stress_band,
+                              reference.step_compliance, run.step_compliance, d.force_rms);
                   std::fflush(stdout);
                   csv << "rolling half dt,per-layer," << road << ',' << model.name << ','
                       << model.model.n_terms() << ',' << 1e6 * half << ',' << run.seconds << ','
                       << d.force << ',' << d.stress << ',' << d.force_band << ',' << d.stress_band
-                      << ",," << run.step_compliance << '\n';
+                      << ",," << run.step_compliance << ',' << d.force_rms << '\n';
                 }
             }
         }
       // 4. The tread surface's mass moved inward, in the reference and in the
       //    modes alike: dt halved twice, every cut-off; 5. the same with a
-      //    light damping that the modes diagonalise.
+      //    damping that the modes diagonalise.
       for (const unsigned int part : {4u, 5u})
         if (!quick && wanted(part))
           {
@@ -229,20 +230,25 @@ main(int argc, char **argv)
             if (part == 5)
               {
                 massless.proportional_damping = true;
-                massless.loss_factor          = 0.005;
+                massless.loss_factor          = 0.1;
               }
-            const char                   *damping = part == 4 ? "per-layer" : "proportional 0.005";
+            const char                   *damping = part == 4 ? "per-layer" : "proportional 0.1";
             const analysis::TransientCase moved(massless);
             const double                  dt = moved.road_time_step();
             std::printf("\n%u. The tread surface's mass moved inward (massless contact nodes), "
                         "%s, modal-recursive:\n%s\n",
                         part,
                         part == 4 ? "the tyre's per-layer damping" :
-                                    "no inflation, loss factor 0.005 everywhere (C = aM + bK)",
+                                    "no inflation, the tread's loss factor 0.1 everywhere (C = aM + bK)",
                         moved.describe().c_str());
             std::vector<analysis::PathModel> moved_models;
             for (const double f : {8000., 16000., 32000.})
-              moved_models.push_back(moved.mode_model(f));
+              {
+                moved_models.push_back(moved.mode_model(f));
+                std::printf("  %s: %u terms, the residual relaxing in %.3g us\n",
+                            moved_models.back().name.c_str(), moved_models.back().model.n_terms(),
+                            1e6 * moved_models.back().model.residual_relaxation);
+              }
             // The largest change of the total force between a run and one at
             // half its step, at their common times, over the finer one's peak.
             const auto change = [](const std::vector<double> &coarse,
@@ -257,9 +263,10 @@ main(int argc, char **argv)
             };
             for (const std::string road : {"sinusoid", "road-A"})
               {
-                std::printf("  %s:\n  %-8s %-28s %9s %11s %11s %10s %10s %11s %12s %12s\n",
+                std::printf("  %s:\n  %-8s %-28s %9s %11s %11s %10s %10s %11s %12s %12s %8s\n",
                             road.c_str(), "dt [us]", "path", "time [s]", "dF / F_max", "ds / s_max",
-                            "dL_F [dB]", "dL_s [dB]", "mean F [N]", "W_cc [m/N]", "dt/2 moves F");
+                            "dL_F [dB]", "dL_s [dB]", "mean F [N]", "W_cc [m/N]", "dt/2 moves F",
+                            "rms dF");
                 std::vector<analysis::TransientRun> previous;
                 for (const double fraction : {1., 0.5, 0.25})
                   {
@@ -278,14 +285,16 @@ main(int argc, char **argv)
                             "" :
                             format_printf("%.3e", change(previous[r].force, run.force));
                         std::printf(
-                          "  %-8.4g %-28s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %12s\n",
+                          "  %-8.4g %-28s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %12s %8.3f\n",
                           1e6 * step, name.c_str(), run.seconds, d.force, d.stress, d.force_band,
-                          d.stress_band, mean(run.force), run.step_compliance, moved_by.c_str());
+                          d.stress_band, mean(run.force), run.step_compliance, moved_by.c_str(),
+                          d.force_rms);
                         csv << "rolling surface mass inward," << damping << ',' << road << ','
                             << name << ',' << (r == 0 ? 0u : moved_models[r - 1].model.n_terms())
                             << ',' << 1e6 * step << ',' << run.seconds << ',' << d.force << ','
                             << d.stress << ',' << d.force_band << ',' << d.stress_band << ','
-                            << mean(run.force) << ',' << run.step_compliance << '\n';
+                            << mean(run.force) << ',' << run.step_compliance << ','
+                            << d.force_rms << '\n';
                       }
                     std::fflush(stdout);
                     previous = runs;

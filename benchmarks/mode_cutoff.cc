@@ -74,8 +74,7 @@ namespace
     search.cutoff    = 2. * M_PI * cutoff_hz;
     const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                             MPI_COMM_SELF, false);
-    return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                     modal::static_line(green), green.points)};
+    return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green)};
   }
 
   /// Milliseconds per step of the rank-one update of @p model.
@@ -134,7 +133,6 @@ main(int argc, char **argv)
                     << format_number(top) << " Hz, " << green.n_points() << " points, lines to "
                     << format_number(f_max) << " Hz\n";
         }
-      const Eigen::MatrixXd G0 = modal::static_line(green);
       const unsigned int    P  = green.n_points();
       std::cout << "  cut-off [Hz]   modes   E median    E p90   E worst  driving  passivity"
                    "       G_r   MB/step  ms/step\n";
@@ -156,7 +154,7 @@ main(int argc, char **argv)
               xi(r)         = all.damping_ratio(keep[r]);
               shapes.row(r) = all.shapes.row(keep[r]);
             }
-          const auto synthesis = modal::synthesise(omega, xi, shapes, G0, green.points);
+          const auto synthesis = modal::synthesise(omega, xi, shapes, green);
           const auto errors    = modal::compare(synthesis, green);
           double     driving   = 0.;
           for (unsigned int i = 0; i < P; ++i)

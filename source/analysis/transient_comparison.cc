@@ -36,6 +36,26 @@ namespace greentread
         return peak > 0. ? diff / peak : diff;
       }
 
+      /// rms(a - b) / rms(b - mean b): the difference against the reference's
+      /// fluctuation, in the mean over the record; a force that jumps (a
+      /// damped contact touching down) one step earlier in one run weighs
+      /// one step in it, not the whole jump as in the largest difference.
+      double
+      rms_difference(const std::vector<double> &a, const std::vector<double> &b)
+      {
+        double mean = 0.;
+        for (const double x : b)
+          mean += x;
+        mean /= b.size();
+        double diff = 0., size = 0.;
+        for (std::size_t n = 0; n < b.size(); ++n)
+          {
+            diff += (a[n] - b[n]) * (a[n] - b[n]);
+            size += (b[n] - mean) * (b[n] - mean);
+          }
+        return size > 0. ? std::sqrt(diff / size) : std::sqrt(diff);
+      }
+
       /// The largest band-level difference [dB], over the bands from 250 Hz
       /// (or the lowest with at least one Fourier line) to 5 kHz (or the
       /// highest below the Nyquist frequency); NaN if there is none.
@@ -72,6 +92,7 @@ namespace greentread
                             std::to_string(reference.force.size()) + " steps");
       TransientDifference d;
       d.force       = relative_difference(run.force, reference.force);
+      d.force_rms   = rms_difference(run.force, reference.force);
       d.stress      = relative_difference(run.stress, reference.stress);
       d.force_band  = band_difference(run.force, reference.force, dt);
       d.stress_band = band_difference(run.stress, reference.stress, dt);
@@ -205,7 +226,7 @@ namespace greentread
       const periodic::RingModes modes =
         periodic::ring_modes(tyre->periodic_cell, tyre->patch, search, MPI_COMM_SELF, false);
       const modal::ModeSynthesis synthesis =
-        modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, G0, points);
+        modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green);
       PathModel path;
       path.name    = "modes to " + format_number(cutoff_hz / 1000.) + " kHz";
       path.model   = modal::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);

@@ -30,10 +30,14 @@ namespace greentread
         // The instantaneous compliance (may be empty) and the step.
         Eigen::MatrixXd instantaneous;
         double          dt;
+        // A relaxing residual (its poles are among the terms): the force is
+        // continuous as with an instantaneous one.
+        bool relaxing;
 
         PoleWeights(const modal::PatchModel &model, const double dt_)
           : instantaneous(model.instantaneous)
           , dt(dt_)
+          , relaxing(model.residual_relaxation > 0.)
         {
           if (!(dt > 0.) || !std::isfinite(dt))
             throw InputError("patch convolution: time step " + format_short(dt) +
@@ -113,6 +117,8 @@ namespace greentread
               psi.v[2] += instantaneous / dt;
               psi.instantaneous = true;
             }
+          if (relaxing)
+            psi.instantaneous = true;
           return psi;
         }
       };

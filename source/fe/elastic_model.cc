@@ -51,7 +51,7 @@ namespace greentread
       DynamicSparsityPattern dsp(dofs.n_dofs());
       DoFTools::make_sparsity_pattern(dofs, dsp);
       pattern.copy_from(dsp);
-      for (auto *A : {&K, &M, &C, &Kp})
+      for (auto *A : {&K, &M, &C, &C_mass, &Kp})
         A->reinit(pattern);
     }
 
@@ -68,16 +68,17 @@ namespace greentread
     void
     ElasticModel::assemble()
     {
-      K = 0.;
-      M = 0.;
-      C = 0.;
+      K      = 0.;
+      M      = 0.;
+      C      = 0.;
+      C_mass = 0.;
       const QGauss<3>                    quadrature(fe.degree + 1);
       FEValues<3>                        values(map, fe, quadrature,
                              update_values | update_gradients | update_JxW_values |
                                update_quadrature_points);
       const FEValuesExtractors::Vector   u(0);
       const unsigned int                 n = fe.n_dofs_per_cell();
-      FullMatrix<double>                 k(n, n), m(n, n), c(n, n);
+      FullMatrix<double>                 k(n, n), m(n, n), c(n, n), c_mass(n, n);
       std::vector<types::global_dof_index> indices(n);
       std::vector<SymmetricTensor<2, 3>> strain(n), stress_of(n);
       std::vector<Tensor<1, 3>>          shape(n);
@@ -113,11 +114,15 @@ namespace greentread
               }
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
-              c(i, j) = mat.alpha * m(i, j) + mat.beta * k(i, j);
+              {
+                c_mass(i, j) = mat.alpha * m(i, j);
+                c(i, j)      = c_mass(i, j) + mat.beta * k(i, j);
+              }
           cell->get_dof_indices(indices);
           K.add(indices, k);
           M.add(indices, m);
           C.add(indices, c);
+          C_mass.add(indices, c_mass);
         }
     }
 

@@ -26,9 +26,12 @@ namespace greentread
           re(k) = factor.real();
           im(k) = factor.imag();
         }
-      Eigen::MatrixXd real = instantaneous;
+      // G_r / (1 + j w beta_r).
+      const std::complex<double> relaxed = 1. / std::complex<double>(1., omega * residual_relaxation);
+      Eigen::MatrixXd            real    = relaxed.real() * instantaneous;
       real.noalias() += shapes.transpose() * (re.asDiagonal() * shapes);
-      const Eigen::MatrixXd imag = shapes.transpose() * (im.asDiagonal() * shapes);
+      Eigen::MatrixXd imag = relaxed.imag() * instantaneous;
+      imag.noalias() += shapes.transpose() * (im.asDiagonal() * shapes);
       Eigen::MatrixXcd      g(real.rows(), real.cols());
       g.real() = real;
       g.imag() = imag;
@@ -61,6 +64,40 @@ namespace greentread
 
 
 
+    double
+    fit_residual_relaxation(const ModeSynthesis &model, const FrequencyResponseMatrix &direct)
+    {
+      const unsigned int P = direct.n_points();
+      if (model.shapes.cols() != P || model.instantaneous.rows() != P)
+        throw NumericalError("fit_residual_relaxation: the model has " +
+                             std::to_string(model.shapes.cols()) +
+                             " points, the Green's functions " + std::to_string(P));
+      // R = g - (modes) at each line; R (1 + j w beta) = G_r in the least-squares
+      // sense over every pair and line, which is linear in beta:
+      // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
+      ModeSynthesis modes_only       = model;
+      modes_only.residual_relaxation = 0.;
+      double numerator = 0., denominator = 0.;
+      for (unsigned int l = 1; l < direct.n_lines; ++l)
+        {
+          const double           omega = 2. * M_PI * l * direct.df;
+          const Eigen::MatrixXcd modal = modes_only.at(omega);
+          for (unsigned int i = 0; i < P; ++i)
+            for (unsigned int j = 0; j < P; ++j)
+              {
+                const std::complex<double> R =
+                  direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] - modal(i, j) +
+                  model.instantaneous(i, j);
+                const std::complex<double> A(0., omega);
+                numerator -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
+                denominator += std::norm(A * R);
+              }
+        }
+      return denominator > 0. ? std::max(numerator / denominator, 0.) : 0.;
+    }
+
+
+
     ModeSynthesis
     synthesise(const Eigen::VectorXd                    &omega,
                const Eigen::VectorXd                    &damping_ratio,
@@ -81,6 +118,20 @@ namespace greentread
       const Eigen::MatrixXd scaled = omega.cwiseInverse().asDiagonal() * shapes;
       Eigen::MatrixXd       residual = static_green - scaled.transpose() * scaled;
       model.instantaneous            = 0.5 * (residual + residual.transpose());
+      return model;
+    }
+
+
+
+    ModeSynthesis
+    synthesise(const Eigen::VectorXd                &omega,
+               const Eigen::VectorXd                &damping_ratio,
+               const Eigen::MatrixXd                &shapes,
+               const FrequencyResponseMatrix        &direct)
+    {
+      ModeSynthesis model =
+        synthesise(omega, damping_ratio, shapes, static_line(direct), direct.points);
+      model.residual_relaxation = fit_residual_relaxation(model, direct);
       return model;
     }
 

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/hdf5.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,7 +21,9 @@ namespace greentread
       PatchModel         model;
       const Eigen::Index P = synthesis.shapes.cols();
       model.points         = synthesis.points;
-      model.instantaneous  = synthesis.instantaneous;
+      model.residual_relaxation = synthesis.residual_relaxation;
+      if (!(model.residual_relaxation > 0.))
+        model.instantaneous = synthesis.instantaneous;
       model.errors         = errors.size() ? errors : Eigen::MatrixXd::Zero(P, P);
       model.f_max          = f_max;
       model.identified_modes = synthesis.n_modes();
@@ -56,6 +60,22 @@ namespace greentread
       model.shapes.resize(rows.size(), P);
       for (std::size_t t = 0; t < rows.size(); ++t)
         model.shapes.row(t) = synthesis.shapes.row(rows[t]);
+      if (model.residual_relaxation > 0.)
+        {
+          // G_r / (1 + s beta) = sum_i (d_i / beta) v_i v_i^T / (s + 1 / beta).
+          const double                                         beta = model.residual_relaxation;
+          const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(synthesis.instantaneous);
+          const Eigen::Index                                   m = model.shapes.rows();
+          model.shapes.conservativeResize(m + P, P);
+          for (Eigen::Index i = 0; i < P; ++i)
+            {
+              const double d     = std::max(eigen.eigenvalues()(i), 0.);
+              model.shapes.row(m + i) = std::sqrt(d) * eigen.eigenvectors().col(i).transpose();
+              model.lambda.emplace_back(-1. / beta, 0.);
+              model.real.push_back(true);
+              model.factor.emplace_back(1. / beta);
+            }
+        }
       return model;
     }
 
@@ -83,8 +103,8 @@ namespace greentread
     namespace
     {
       const std::vector<std::string> modal_datasets = {
-        "frequency_hz", "damping_ratio", "wavenumber", "shapes", "instantaneous", "points",
-        "dispersion"};
+        "frequency_hz", "damping_ratio", "wavenumber", "shapes", "instantaneous",
+        "residual_relaxation", "points", "dispersion"};
     } // namespace
 
 
@@ -115,6 +135,8 @@ namespace greentread
           for (std::size_t j = 0; j < n; ++j)
             values[i * n + j] = synthesis.instantaneous(i, j);
         h5.create_dataset<double>("instantaneous", {n, n}).write(values);
+        h5.create_dataset<double>("residual_relaxation", {1})
+          .write(std::vector<double>{synthesis.residual_relaxation});
         values.clear();
         const auto &d = synthesis.dispersion;
         for (std::size_t w = 0; w < d.frequency_hz.size(); ++w)
@@ -143,7 +165,7 @@ namespace greentread
                          "' is missing or incomplete; delete it to recompute it");
       // Read everything, and close the file, before any check can throw:
       // deal.II's HDF5 objects abort when destroyed during an exception.
-      std::vector<double> f, xi, k, shapes, gr, p, d;
+      std::vector<double> f, xi, k, shapes, gr, relaxation, p, d;
       {
         dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
         f      = h5.open_dataset("frequency_hz").read<std::vector<double>>();
@@ -151,15 +173,16 @@ namespace greentread
         k      = h5.open_dataset("wavenumber").read<std::vector<double>>();
         shapes = h5.open_dataset("shapes").read<std::vector<double>>();
         gr     = h5.open_dataset("instantaneous").read<std::vector<double>>();
+        relaxation = h5.open_dataset("residual_relaxation").read<std::vector<double>>();
         p      = h5.open_dataset("points").read<std::vector<double>>();
         d      = h5.open_dataset("dispersion").read<std::vector<double>>();
       }
       const std::size_t m = f.size(), n = p.size() / 3;
       if (xi.size() != m || k.size() != m || shapes.size() != m * n || gr.size() != n * n ||
-          p.size() != 3 * n || d.size() % 4 != 0)
+          relaxation.size() != 1 || p.size() != 3 * n || d.size() % 4 != 0)
         throw InputError("modal model file '" + file +
                          "' has inconsistent dataset sizes; delete it to recompute it");
-      for (const auto *values : {&f, &xi, &shapes, &gr, &p, &d})
+      for (const auto *values : {&f, &xi, &shapes, &gr, &relaxation, &p, &d})
         if (!std::all_of(values->begin(), values->end(),
                          [](const double x) { return std::isfinite(x); }))
           throw InputError("modal model file '" + file +
@@ -168,6 +191,7 @@ namespace greentread
       ModeSynthesis s;
       s.frequency_hz  = Eigen::Map<const Eigen::VectorXd>(f.data(), m);
       s.damping_ratio = Eigen::Map<const Eigen::VectorXd>(xi.data(), m);
+      s.residual_relaxation = relaxation[0];
       s.shapes =
         Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           shapes.data(), m, n);

@@ -66,9 +66,9 @@ namespace greentread
       search.cutoff = 2. * M_PI * inputs.cutoff_hz;
       const RingModes modes = ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
 
-      // G_r from the static line: the direct solve at 0 Hz.
-      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                    modal::static_line(green), green.points);
+      // G_r from the static line (the direct solve at 0 Hz), its relaxation
+      // from the others.
+      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
         {

@@ -224,7 +224,8 @@ namespace greentread
       cell.stiffness = rotate(model.stiffness());
       if (with_prestress)
         cell.stiffness += rotate(model.geometric_stiffness());
-      cell.damping = rotate(model.damping());
+      cell.damping      = rotate(model.damping());
+      cell.mass_damping = rotate(model.mass_damping());
       cell.mass    = rotate(model.mass());
       return cell;
     }
@@ -281,11 +282,17 @@ namespace greentread
       for (Eigen::Index i = 0; i < n; ++i)
         if (cell.dofs[i].on_tread)
           moved += axial(i) * row_sums(i);
-      const SparseReal Tt = T.transpose();
-      cell.mass           = SparseReal(Tt * cell.mass * T).pruned();
-      cell.damping        = SparseReal(Tt * cell.damping * T).pruned();
+      // The damping's part alpha M moves with the mass; its part beta K stays
+      // where the stiffness is, so that a damping proportional to M and K
+      // stays proportional to the new M and K.
+      const SparseReal Tt    = T.transpose();
+      const SparseReal moved_damping = SparseReal(Tt * cell.mass_damping * T);
+      cell.mass              = SparseReal(Tt * cell.mass * T).pruned();
+      cell.damping           = SparseReal(cell.damping - cell.mass_damping + moved_damping).pruned();
+      cell.mass_damping      = moved_damping.pruned();
       cell.mass.makeCompressed();
       cell.damping.makeCompressed();
+      cell.mass_damping.makeCompressed();
       return moved / total;
     }
   } // namespace periodic

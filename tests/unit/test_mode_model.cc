@@ -180,6 +180,64 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   BOOST_TEST(worst_direct < 1e-9 * size);
 }
 
+BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
+{
+  // With beta_r > 0 the residual is G_r / (1 + j w beta_r): n_p real poles
+  // from G_r's eigenvectors. Against the closed form, and in time against
+  // the exact solution of w + beta w' = q, u = G_r w, for the residual alone
+  // under a ramp to a constant load (a step-wise linear load: exact).
+  auto s                = known_synthesis();
+  s.damping_ratio(7)    = 1.3;
+  s.residual_relaxation = 7e-6;
+  const auto model      = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  BOOST_TEST(model.n_terms() == 11u + 7u);
+  BOOST_TEST(model.instantaneous.size() == 0);
+  const double worst = pole_residue_error(s, model);
+  BOOST_TEST_MESSAGE("relaxing residual, pole-residue form against the closed form: " << worst);
+  BOOST_TEST(worst < 1e-11);
+
+  modal::ModeSynthesis residual;
+  residual.frequency_hz.resize(0);
+  residual.damping_ratio.resize(0);
+  residual.shapes.resize(0, 7);
+  residual.instantaneous       = s.instantaneous;
+  residual.points              = s.points;
+  residual.residual_relaxation = s.residual_relaxation;
+  const auto         alone     = modal::to_patch_model(residual, Eigen::MatrixXd(), 4000.);
+  const double       dt = 4e-6, beta = residual.residual_relaxation, T = 5 * dt;
+  const unsigned int P = 7;
+  auto               convolution = contact::make_modal_patch_convolution(alone, dt, 1);
+  BOOST_TEST(convolution->influence().instantaneous);
+  Eigen::VectorXd Q(P);
+  for (unsigned int p = 0; p < P; ++p)
+    Q(p) = 100. * (p + 1);
+  const auto load_at = [&](const double t) { return std::min(t / T, 1.) * Q; };
+  const auto exact   = [&](const double t) -> Eigen::VectorXd {
+    if (t <= T)
+      return residual.instantaneous * (t - beta * (1. - std::exp(-t / beta))) / T * Q;
+    const Eigen::VectorXd wT = (T - beta * (1. - std::exp(-T / beta))) / T * Q;
+    return residual.instantaneous * (Q + (wT - Q) * std::exp(-(t - T) / beta));
+  };
+  double difference = 0., size = 0.;
+  for (unsigned int n = 0; n < 40; ++n)
+    {
+      Eigen::VectorXd uh(P), vh(P);
+      convolution->history(uh, vh);
+      contact::PatchLoad load(P);
+      load.component[1] = load_at(n * dt);
+      load.component[2] = load_at((n + 1) * dt);
+      const auto           &psi = convolution->influence();
+      const Eigen::VectorXd u   = uh + psi.u[1] * load.component[1] + psi.u[2] * load.component[2];
+      const Eigen::VectorXd ref = exact((n + 1) * dt);
+      difference                = std::max(difference, (u - ref).cwiseAbs().maxCoeff());
+      size                      = std::max(size, ref.cwiseAbs().maxCoeff());
+      convolution->advance(load);
+    }
+  BOOST_TEST_MESSAGE("relaxing residual in time against the exact solution: "
+                     << difference / size);
+  BOOST_TEST(difference < 1e-12 * size);
+}
+
 BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
 {
   // Seven modes (two of them 2.4% apart), three points, a static residual;
@@ -239,7 +297,8 @@ BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
 {
   const auto dir  = test::scratch_directory("mode_model");
   const auto file = dir / "modal_model.h5";
-  const auto s    = known_synthesis();
+  auto s                = known_synthesis();
+  s.residual_relaxation = 3.5e-6;
   base::ParameterRecord record;
   modal::write_modal_model(file, s, record, "key 1");
   BOOST_TEST(modal::read_modal_model_key(file.string()) == "key 1");
@@ -248,6 +307,7 @@ BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
   BOOST_TEST((r.damping_ratio - s.damping_ratio).cwiseAbs().maxCoeff() == 0.);
   BOOST_TEST((r.shapes - s.shapes).cwiseAbs().maxCoeff() == 0.);
   BOOST_TEST((r.instantaneous - s.instantaneous).cwiseAbs().maxCoeff() == 0.);
+  BOOST_TEST(r.residual_relaxation == s.residual_relaxation);
   BOOST_TEST(r.wavenumber == s.wavenumber);
   BOOST_TEST(r.points == s.points);
   BOOST_REQUIRE(r.dispersion.frequency_hz.size() == 1u);

@@ -59,7 +59,7 @@ namespace greentread
       /// With proportional_damping: the loss factor of every layer (0: no damping).
       double loss_factor = 0.05;
       /// 'Materials/Tread pattern/Surface mass = moved inward': the contact
-      /// nodes carry no mass and no damping (periodic::move_tread_mass_inward),
+      /// nodes carry no mass, only stiffness damping (periodic::move_tread_mass_inward),
       /// in the reference and in the fast path's Green's functions and modes alike.
       bool surface_mass_inward = false;
       /// 'Road texture/Sinusoid amplitude' and 'Sinusoid wavelength' [m].
@@ -91,13 +91,17 @@ namespace greentread
     /**
      * @brief How far a run is from the reference: the largest difference
      * of the total force and of the centre stress over the reference's
-     * largest value, and the largest band-level difference [dB] over the
+     * largest value, the rms of the force difference over the reference's
+     * rms fluctuation, and the largest band-level difference [dB] over the
      * one-third-octave bands from the lowest that the record resolves (or
      * 250 Hz) to 5 kHz (NaN if the record resolves none).
      */
     struct TransientDifference
     {
       double force = 0., stress = 0., force_band = 0., stress_band = 0.;
+      /// rms of the force difference over the rms of the reference's
+      /// fluctuation about its mean.
+      double force_rms = 0.;
     };
 
     TransientDifference

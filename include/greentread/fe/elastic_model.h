@@ -67,6 +67,13 @@ namespace greentread
       {
         return C;
       }
+      /// The part of C proportional to the mass, sum over the materials of
+      /// alpha M: it moves with the mass (periodic::move_tread_mass_inward).
+      const dealii::SparseMatrix<double> &
+      mass_damping() const
+      {
+        return C_mass;
+      }
       /// Kp, after assemble_geometric_stiffness().
       const dealii::SparseMatrix<double> &
       geometric_stiffness() const
@@ -163,7 +170,7 @@ namespace greentread
       dealii::MappingQ<3>              map;
       dealii::DoFHandler<3>            dofs;
       dealii::SparsityPattern          pattern;
-      dealii::SparseMatrix<double>     K, M, C, Kp;
+      dealii::SparseMatrix<double>     K, M, C, C_mass, Kp;
 
       const Material &
       material(unsigned int id) const;

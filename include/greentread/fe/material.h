@@ -86,7 +86,7 @@ namespace greentread
       // The two frequencies where the Rayleigh damping ratio equals eta/2.
       double damping_f1 = 200., damping_f2 = 2000.;
       /// 'Tread pattern/Surface mass': false = consistent, true = moved
-      /// inward (the contact surface's nodes carry no mass and no damping;
+      /// inward (the contact surface's nodes carry no mass, only beta K damping;
       /// see periodic::move_tread_mass_inward).
       bool tread_surface_mass_inward = false;
 

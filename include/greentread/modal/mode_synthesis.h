@@ -18,10 +18,20 @@
  * and modal damping ratios xi_k,
  *   g(w) = G_r + sum_k phi_k phi_k^T / (w_k^2 - w^2 + 2 j xi_k w_k w),
  * where the static residual G_r = G(0) - sum_k phi_k phi_k^T / w_k^2 carries
- * the modes above the cut-off at their static value (the mode-acceleration
- * correction). Every term is passive: -Im g(w) is a sum of positive
- * semidefinite rank-one terms for w > 0. G_r is positive semidefinite: it is
- * the part of the static flexibility that the modes left out.
+ * the modes above the cut-off (the mode-acceleration correction). Every term
+ * is passive: -Im g(w) is a sum of positive semidefinite rank-one terms for
+ * w > 0. G_r is positive semidefinite: it is the part of the static
+ * flexibility that the modes left out.
+ *
+ * **The residual's damping.** With C = alpha M + beta K per material, a mode
+ * far above the band responds below it as phi phi^T / (w_k^2 (1 + j w
+ * beta_k)), beta_k its share of beta by modal strain energy: the residual is
+ * a Kelvin-Voigt solid, G_r / (1 + j w beta_r), not a spring. beta_r is
+ * fitted to the residual of the direct Green's functions, line by line
+ * (fit_residual_relaxation()): one number, no pole moves. It matters most
+ * when the contact nodes carry no mass ('Surface mass = moved inward'):
+ * their motion is all in G_r, and it relaxes in beta (7 us for the tread's
+ * default loss factor), the scale of a contact time step.
  * Implemented in source/modal/mode_synthesis.cc (the synthesis and its
  * errors) and source/modal/mode_synthesis_io.cc (the rank-one patch model
  * and modal_model.h5).
@@ -48,6 +58,8 @@ namespace greentread
       Eigen::MatrixXd shapes;
       /// G_r, [point][point] [m/N].
       Eigen::MatrixXd instantaneous;
+      /// beta_r [s]: the residual is G_r / (1 + j w beta_r) (0: a spring).
+      double residual_relaxation = 0.;
       /// The points [m]: x, y, radius.
       std::vector<std::array<double, 3>> points;
       /// Per mode: the circumferential wavenumber it comes from (may be empty).
@@ -89,6 +101,29 @@ namespace greentread
                const std::vector<std::array<double, 3>> &points);
 
     /**
+     * @brief The synthesis with G_r from the 0 Hz line of @p direct and its
+     * relaxation fitted to every line (fit_residual_relaxation()): what the
+     * modal stage and the contact use.
+     */
+    ModeSynthesis
+    synthesise(const Eigen::VectorXd         &omega,
+               const Eigen::VectorXd         &damping_ratio,
+               const Eigen::MatrixXd         &shapes,
+               const FrequencyResponseMatrix &direct);
+
+    /**
+     * @brief The residual's relaxation time beta_r [s] that makes
+     * G_r / (1 + j w beta_r) closest to the residual of the direct Green's
+     * functions @p direct, R(w) = g(w) - sum_k phi_k phi_k^T / (...), in the
+     * least squares over every pair and line above 0 Hz: it minimises
+     * sum |R (1 + j w beta) - G_r|^2, linear in beta. At least 0; the
+     * relaxation of @p model itself is ignored.
+     * @throws NumericalError if the model and @p direct differ in points.
+     */
+    double
+    fit_residual_relaxation(const ModeSynthesis &model, const FrequencyResponseMatrix &direct);
+
+    /**
      * @brief The synthesis as a PatchModel in rank-one form, for the
      * contact's convolutions: per mode the pole pair
      * \f$\lambda = \omega_k(-\xi_k + j\sqrt{1-\xi_k^2})\f$ with
@@ -98,8 +133,11 @@ namespace greentread
      * over-critical mode (\f$\xi_k \ge 1\f$) is two real poles
      * \f$\omega_k(-\xi_k \pm \sqrt{\xi_k^2-1})\f$ (\f$\xi_k\f$ within 1e-6
      * of 1 is taken as 1 + 1e-6). G_r is the model's instantaneous
-     * compliance; @p errors (E per pair, may be empty) and @p f_max are
-     * copied.
+     * compliance; with a relaxation beta_r > 0 it is instead n_p more real
+     * poles at -1/beta_r, one per eigenvector v of G_r = sum d v v^T (shape
+     * sqrt(d) v, factor 1/beta_r), `instantaneous` is left empty and
+     * `residual_relaxation` says so. @p errors (E per pair, may be empty)
+     * and @p f_max are copied.
      * @throws NumericalError for a mode with w_k <= 0 or a negative damping ratio.
      */
     PatchModel
@@ -116,7 +154,8 @@ namespace greentread
     /**
      * @brief Write @p synthesis as modal_model.h5 (temporary name, renamed when
      * complete): `/frequency_hz` [m], `/damping_ratio` [m], `/wavenumber` [m],
-     * `/shapes` [m][n_p], `/instantaneous` [n_p][n_p] (G_r), `/points`
+     * `/shapes` [m][n_p], `/instantaneous` [n_p][n_p] (G_r),
+     * `/residual_relaxation` [1] (beta_r [s]), `/points`
      * [n_p][3], `/dispersion` [rows][4] (wavenumber, branch, frequency [Hz],
      * damping ratio), and the attributes `parameters` and `stage_key`.
      */

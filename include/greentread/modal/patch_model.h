@@ -119,6 +119,11 @@ namespace greentread
       /// The instantaneous compliance G_r [m/N] (n x n, symmetric positive
       /// definite), or empty with a real residual pole.
       Eigen::MatrixXd instantaneous;
+      /// > 0 when the residual G_r relaxes in this time [s] (modal/
+      /// mode_synthesis.h): it is then the last n_p terms, real poles at
+      /// -1/beta_r, and `instantaneous` is empty. The contact force is still
+      /// taken continuous, as with an instantaneous G_r.
+      double residual_relaxation = 0.;
       /// E of Eq. (50) of every pair.
       Eigen::MatrixXd errors;
       /// The points of the patch, as in the Green's function file.

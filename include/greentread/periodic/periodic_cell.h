@@ -49,6 +49,9 @@ namespace greentread
 
       /// K + Kp, C and M over [L, I, R].
       SparseReal stiffness, damping, mass;
+      /// The part of C proportional to the mass (sum of alpha M over the
+      /// materials); C - mass_damping is proportional to the stiffness.
+      SparseReal mass_damping;
 
       /// For each DoF of [L, I, R].
       std::vector<CellDof> dofs;
@@ -97,10 +100,14 @@ namespace greentread
      * taken as that of its partner, the DoF of the same component at the
      * nearest node off the surface that shares an element with it (for one
      * element through the tread, the node half-way down). With T that map
-     * (identity elsewhere), M <- T^T M T and C <- T^T C T; K is untouched.
+     * (identity elsewhere), M <- T^T M T; the damping's mass-proportional
+     * part C_M moves with it, C <- C - C_M + T^T C_M T, and its
+     * stiffness-proportional part stays, like K. A damping alpha M + beta K
+     * so stays alpha M' + beta K, which the modes diagonalise.
      *
-     * The surface DoFs then carry no mass and no damping: under kinematic
-     * contact they follow the road quasi-statically, and the continuous
+     * The surface DoFs then carry no mass: under kinematic contact they
+     * follow the road through the stiffness and its damping beta K alone (a
+     * Kelvin-Voigt solid, relaxing in the time beta), and the continuous
      * problem has a contact force that converges as the time step falls.
      * M stays symmetric positive semidefinite; the kinetic energy of an
      * axial translation is kept exactly, and that of any motion in which a
