@@ -160,19 +160,19 @@ main(int argc, char **argv)
             {
               std::printf("\n%s at %g km/h over %.2f m, dt = %.4g us (%u steps):\n", road.c_str(),
                           setup.speed_kmh, setup.distance, 1e6 * dt, study.steps(dt));
-              std::printf("  %-40s %9s %11s %11s %10s %10s %11s %12s %10s\n", "path",
-                          "time [s]", "dF / F_max", "ds / s_max", "dL_F [dB]", "dL_s [dB]",
-                          "mean F [N]", "W_cc [m/N]", "rms dF");
+              std::printf("  %-40s %9s %11s %11s %10s %10s %11s %12s %10s\n", "path", "time [s]",
+                          "dF / F_max", "ds / s_max", "dL_F [dB]", "dL_s [dB]", "mean F [N]",
+                          "W_cc [m/N]", "rms dF");
               const auto reference = study.reference(road, dt);
               const auto row       = [&](const std::string &path, const unsigned int modes,
                                    const analysis::TransientRun &run) {
                 const auto d = analysis::compare(run, reference, dt);
                 std::printf("  %-40s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %10.3f%s\n",
-                                  path.c_str(), run.seconds, d.force, d.stress, d.force_band,
-                                  d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
+                            path.c_str(), run.seconds, d.force, d.stress, d.force_band,
+                            d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
                             run.failed_steps ?
-                                    format_printf("  (%g failed steps)", run.failed_steps).c_str() :
-                                    "");
+                              format_printf("  (%g failed steps)", run.failed_steps).c_str() :
+                              "");
                 std::fflush(stdout);
                 csv << "rolling,per-layer," << road << ',' << path << ',' << modes << ','
                     << 1e6 * dt << ',' << run.seconds << ',' << d.force << ',' << d.stress << ','
@@ -238,8 +238,9 @@ main(int argc, char **argv)
             std::printf("\n%u. The tread surface's mass moved inward (massless contact nodes), "
                         "%s, modal-recursive:\n%s\n",
                         part,
-                        part == 4 ? "the tyre's per-layer damping" :
-                                    "no inflation, the tread's loss factor 0.1 everywhere (C = aM + bK)",
+                        part == 4 ?
+                          "the tyre's per-layer damping" :
+                          "no inflation, the tread's loss factor 0.1 everywhere (C = aM + bK)",
                         moved.describe().c_str());
             std::vector<analysis::PathModel> moved_models;
             for (const double f : {8000., 16000., 32000.})
@@ -284,17 +285,17 @@ main(int argc, char **argv)
                           previous.empty() ?
                             "" :
                             format_printf("%.3e", change(previous[r].force, run.force));
-                        std::printf(
-                          "  %-8.4g %-28s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %12s %8.3f\n",
-                          1e6 * step, name.c_str(), run.seconds, d.force, d.stress, d.force_band,
-                          d.stress_band, mean(run.force), run.step_compliance, moved_by.c_str(),
-                          d.force_rms);
+                        std::printf("  %-8.4g %-28s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f "
+                                    "%12.3e %12s %8.3f\n",
+                                    1e6 * step, name.c_str(), run.seconds, d.force, d.stress,
+                                    d.force_band, d.stress_band, mean(run.force),
+                                    run.step_compliance, moved_by.c_str(), d.force_rms);
                         csv << "rolling surface mass inward," << damping << ',' << road << ','
                             << name << ',' << (r == 0 ? 0u : moved_models[r - 1].model.n_terms())
                             << ',' << 1e6 * step << ',' << run.seconds << ',' << d.force << ','
                             << d.stress << ',' << d.force_band << ',' << d.stress_band << ','
-                            << mean(run.force) << ',' << run.step_compliance << ','
-                            << d.force_rms << '\n';
+                            << mean(run.force) << ',' << run.step_compliance << ',' << d.force_rms
+                            << '\n';
                       }
                     std::fflush(stdout);
                     previous = runs;

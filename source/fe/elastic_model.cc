@@ -78,7 +78,7 @@ namespace greentread
                                update_quadrature_points);
       const FEValuesExtractors::Vector   u(0);
       const unsigned int                 n = fe.n_dofs_per_cell();
-      FullMatrix<double>                 k(n, n), m(n, n), c(n, n), c_mass(n, n);
+      FullMatrix<double>                   k(n, n), m(n, n), c(n, n), c_mass(n, n);
       std::vector<types::global_dof_index> indices(n);
       std::vector<SymmetricTensor<2, 3>> strain(n), stress_of(n);
       std::vector<Tensor<1, 3>>          shape(n);

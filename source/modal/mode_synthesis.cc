@@ -27,8 +27,9 @@ namespace greentread
           im(k) = factor.imag();
         }
       // G_r / (1 + j w beta_r).
-      const std::complex<double> relaxed = 1. / std::complex<double>(1., omega * residual_relaxation);
-      Eigen::MatrixXd            real    = relaxed.real() * instantaneous;
+      const std::complex<double> relaxed =
+        1. / std::complex<double>(1., omega * residual_relaxation);
+      Eigen::MatrixXd real = relaxed.real() * instantaneous;
       real.noalias() += shapes.transpose() * (re.asDiagonal() * shapes);
       Eigen::MatrixXd imag = relaxed.imag() * instantaneous;
       imag.noalias() += shapes.transpose() * (im.asDiagonal() * shapes);
@@ -124,10 +125,10 @@ namespace greentread
 
 
     ModeSynthesis
-    synthesise(const Eigen::VectorXd                &omega,
-               const Eigen::VectorXd                &damping_ratio,
-               const Eigen::MatrixXd                &shapes,
-               const FrequencyResponseMatrix        &direct)
+    synthesise(const Eigen::VectorXd         &omega,
+               const Eigen::VectorXd         &damping_ratio,
+               const Eigen::MatrixXd         &shapes,
+               const FrequencyResponseMatrix &direct)
     {
       ModeSynthesis model =
         synthesise(omega, damping_ratio, shapes, static_line(direct), direct.points);

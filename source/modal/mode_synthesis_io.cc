@@ -69,7 +69,7 @@ namespace greentread
           model.shapes.conservativeResize(m + P, P);
           for (Eigen::Index i = 0; i < P; ++i)
             {
-              const double d     = std::max(eigen.eigenvalues()(i), 0.);
+              const double d          = std::max(eigen.eigenvalues()(i), 0.);
               model.shapes.row(m + i) = std::sqrt(d) * eigen.eigenvectors().col(i).transpose();
               model.lambda.emplace_back(-1. / beta, 0.);
               model.real.push_back(true);
@@ -103,8 +103,8 @@ namespace greentread
     namespace
     {
       const std::vector<std::string> modal_datasets = {
-        "frequency_hz", "damping_ratio", "wavenumber", "shapes", "instantaneous",
-        "residual_relaxation", "points", "dispersion"};
+        "frequency_hz",  "damping_ratio",       "wavenumber", "shapes",
+        "instantaneous", "residual_relaxation", "points",     "dispersion"};
     } // namespace
 
 

@@ -285,11 +285,11 @@ namespace greentread
       // The damping's part alpha M moves with the mass; its part beta K stays
       // where the stiffness is, so that a damping proportional to M and K
       // stays proportional to the new M and K.
-      const SparseReal Tt    = T.transpose();
+      const SparseReal Tt            = T.transpose();
       const SparseReal moved_damping = SparseReal(Tt * cell.mass_damping * T);
-      cell.mass              = SparseReal(Tt * cell.mass * T).pruned();
-      cell.damping           = SparseReal(cell.damping - cell.mass_damping + moved_damping).pruned();
-      cell.mass_damping      = moved_damping.pruned();
+      cell.mass                      = SparseReal(Tt * cell.mass * T).pruned();
+      cell.damping      = SparseReal(cell.damping - cell.mass_damping + moved_damping).pruned();
+      cell.mass_damping = moved_damping.pruned();
       cell.mass.makeCompressed();
       cell.damping.makeCompressed();
       cell.mass_damping.makeCompressed();

@@ -156,10 +156,9 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
           mismatch.push_back(std::abs(fast.step_compliance / reference.step_compliance - 1.));
           rms.push_back(d.force_rms);
           BOOST_TEST_MESSAGE(road << ", dt = " << 1e6 * dt << " us, mass moved inward: step "
-                                  << "compliance " << reference.step_compliance
-                                  << " (reference), " << fast.step_compliance
-                                  << " m/N (modes to 16 kHz); force " << d.force
-                                  << " of the peak (rms " << d.force_rms << " of the "
+                                  << "compliance " << reference.step_compliance << " (reference), "
+                                  << fast.step_compliance << " m/N (modes to 16 kHz); force "
+                                  << d.force << " of the peak (rms " << d.force_rms << " of the "
                                   << "fluctuation), bands " << d.force_band << " dB (force), "
                                   << d.stress_band << " dB (stress); mean force "
                                   << mean(fast.force) << " N against " << mean(reference.force)

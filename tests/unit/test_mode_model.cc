@@ -205,14 +205,16 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
   residual.residual_relaxation = s.residual_relaxation;
   const auto         alone     = modal::to_patch_model(residual, Eigen::MatrixXd(), 4000.);
   const double       dt = 4e-6, beta = residual.residual_relaxation, T = 5 * dt;
-  const unsigned int P = 7;
+  const unsigned int P           = 7;
   auto               convolution = contact::make_modal_patch_convolution(alone, dt, 1);
   BOOST_TEST(convolution->influence().instantaneous);
   Eigen::VectorXd Q(P);
   for (unsigned int p = 0; p < P; ++p)
     Q(p) = 100. * (p + 1);
-  const auto load_at = [&](const double t) { return std::min(t / T, 1.) * Q; };
-  const auto exact   = [&](const double t) -> Eigen::VectorXd {
+  const auto load_at = [&](const double t) {
+    return std::min(t / T, 1.) * Q;
+  };
+  const auto exact = [&](const double t) -> Eigen::VectorXd {
     if (t <= T)
       return residual.instantaneous * (t - beta * (1. - std::exp(-t / beta))) / T * Q;
     const Eigen::VectorXd wT = (T - beta * (1. - std::exp(-T / beta))) / T * Q;
@@ -224,8 +226,8 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
       Eigen::VectorXd uh(P), vh(P);
       convolution->history(uh, vh);
       contact::PatchLoad load(P);
-      load.component[1] = load_at(n * dt);
-      load.component[2] = load_at((n + 1) * dt);
+      load.component[1]         = load_at(n * dt);
+      load.component[2]         = load_at((n + 1) * dt);
       const auto           &psi = convolution->influence();
       const Eigen::VectorXd u   = uh + psi.u[1] * load.component[1] + psi.u[2] * load.component[2];
       const Eigen::VectorXd ref = exact((n + 1) * dt);
@@ -233,8 +235,7 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
       size                      = std::max(size, ref.cwiseAbs().maxCoeff());
       convolution->advance(load);
     }
-  BOOST_TEST_MESSAGE("relaxing residual in time against the exact solution: "
-                     << difference / size);
+  BOOST_TEST_MESSAGE("relaxing residual in time against the exact solution: " << difference / size);
   BOOST_TEST(difference < 1e-12 * size);
 }
 
@@ -297,7 +298,7 @@ BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
 {
   const auto dir  = test::scratch_directory("mode_model");
   const auto file = dir / "modal_model.h5";
-  auto s                = known_synthesis();
+  auto       s          = known_synthesis();
   s.residual_relaxation = 3.5e-6;
   base::ParameterRecord record;
   modal::write_modal_model(file, s, record, "key 1");
