@@ -76,19 +76,20 @@ namespace greentread
       // R = g - (modes) at each line; R (1 + j w beta) = G_r in the least-squares
       // sense over every pair and line, which is linear in beta:
       // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
-      ModeSynthesis modes_only       = model;
-      modes_only.residual_relaxation = 0.;
       double numerator = 0., denominator = 0.;
       for (unsigned int l = 1; l < direct.n_lines; ++l)
         {
           const double           omega = 2. * M_PI * l * direct.df;
-          const Eigen::MatrixXcd modal = modes_only.at(omega);
+          // The modes' part: the model less its own (relaxed) residual, no copy
+          // of the shapes.
+          const std::complex<double> own =
+            1. / std::complex<double>(1., omega * model.residual_relaxation);
+          const Eigen::MatrixXcd modal = model.at(omega) - own * model.instantaneous;
           for (unsigned int i = 0; i < P; ++i)
             for (unsigned int j = 0; j < P; ++j)
               {
                 const std::complex<double> R =
-                  direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] - modal(i, j) +
-                  model.instantaneous(i, j);
+                  direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] - modal(i, j);
                 const std::complex<double> A(0., omega);
                 numerator -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
                 denominator += std::norm(A * R);

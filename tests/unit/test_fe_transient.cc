@@ -146,14 +146,14 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
   };
   for (const std::string road : {"sinusoid", "road-A"})
     {
-      std::vector<double> mismatch, rms;
+      std::vector<double> rms;
       for (const double dt : {study.road_time_step(), 0.5 * study.road_time_step()})
         {
           const auto reference = study.reference(road, dt);
           const auto fast      = study.fast(road, dt, modes, convolution::Method::modal_recursive);
           BOOST_TEST_REQUIRE(reference.failed_steps + fast.failed_steps == 0u);
           const auto d = analysis::compare(fast, reference, dt);
-          mismatch.push_back(std::abs(fast.step_compliance / reference.step_compliance - 1.));
+          const double mismatch = std::abs(fast.step_compliance / reference.step_compliance - 1.);
           rms.push_back(d.force_rms);
           BOOST_TEST_MESSAGE(road << ", dt = " << 1e6 * dt << " us, mass moved inward: step "
                                   << "compliance " << reference.step_compliance << " (reference), "
@@ -163,7 +163,7 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
                                   << d.stress_band << " dB (stress); mean force "
                                   << mean(fast.force) << " N against " << mean(reference.force)
                                   << " N");
-          BOOST_TEST(mismatch.back() < 0.05);
+          BOOST_TEST(mismatch < 0.05);
           BOOST_TEST(d.force_band < 1.);
           BOOST_TEST(d.force < 0.25);
           BOOST_TEST(std::abs(mean(fast.force) / mean(reference.force) - 1.) < 0.01);
