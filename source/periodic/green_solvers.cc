@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/serial_blas.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/ring_chain.h>
 
@@ -239,6 +240,7 @@ namespace greentread
                   const std::string   &what,
                   SolveDiagnostics    &diagnostics)
       {
+        auto lock = base::lock_serial_blas();
         lu.factorize(A);
         if (lu.info() != Eigen::Success && lu.umfpackFactorizeReturncode() != UMFPACK_OK &&
             lu.umfpackFactorizeReturncode() != UMFPACK_WARNING_singular_matrix)
@@ -253,6 +255,7 @@ namespace greentread
         require_factorised(lu, omega, what);
         const Dense B = chain.loads(patch).cast<Complex>();
         const Dense X = lu.solve(B);
+        lock.unlock();
         check_solution(A, X, B, omega, what, diagnostics);
         return chain.at_points(patch, X);
       }
@@ -274,6 +277,7 @@ namespace greentread
           const SparseComplex A = ring.assemble(cell.dynamic_stiffness(omega));
           if (!analysed)
             {
+              const auto lock = base::lock_serial_blas();
               lu.analyzePattern(A);
               analysed = true;
             }
@@ -398,7 +402,10 @@ namespace greentread
           A.setFromTriplets(entries.begin(), entries.end());
           A.makeCompressed();
           ChainLU lu;
-          lu.analyzePattern(A);
+          {
+            const auto lock = base::lock_serial_blas();
+            lu.analyzePattern(A);
+          }
           return solve_chain(lu, A, contact, patch, omega, "of the ring (Eq. 49)", diagnostics);
         }
 

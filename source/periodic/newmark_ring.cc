@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
+#include <greentread/base/serial_blas.h>
 #include <greentread/periodic/newmark_ring.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@ namespace greentread
         // No iterative refinement: the set-up's solves are checked against
         // the backward-error bound instead, and refinement tripled a step's cost.
         lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+        const auto lock                     = base::lock_serial_blas();
         lu.compute(A);
         if (lu.info() != Eigen::Success)
           throw NumericalError("Newmark reference: UMFPACK could not factorise " + what + " of the "
@@ -30,7 +32,11 @@ namespace greentread
       checked_solve(const Eigen::UmfPackLU<SparseReal> &lu, const SparseReal &A,
                     const Eigen::MatrixXd &B, const std::string &what)
       {
-        const Eigen::MatrixXd X = lu.solve(B);
+        Eigen::MatrixXd X;
+        {
+          const auto lock = base::lock_serial_blas();
+          X               = lu.solve(B);
+        }
         double                norm_a = 0.;
         for (int c = 0; c < A.outerSize(); ++c)
           norm_a = std::max(norm_a, A.col(c).cwiseAbs().sum());
@@ -91,7 +97,10 @@ namespace greentread
     NewmarkRing::history(Eigen::VectorXd &uh, Eigen::VectorXd &vh)
     {
       rhs            = M * ((4. / (dt * dt)) * u + (4. / dt) * v + a) + C * ((2. / dt) * u + v);
-      u_free         = effective.solve(rhs);
+      {
+        const auto lock = base::lock_serial_blas();
+        u_free          = effective.solve(rhs);
+      }
       have_history   = true;
       uh             = loads_t * u_free;
       // v_{n+1} = 2 (u_{n+1} - u_n) / dt - v_n with no force at the end.
@@ -127,6 +136,7 @@ namespace greentread
     NewmarkRing::preload(const Eigen::VectorXd &q0)
     {
       const Eigen::VectorXd load = loads * q0;
+      const auto            lock = base::lock_serial_blas();
       u                          = stiffness.solve(load);
       v.setZero();
       a.setZero();
