@@ -74,7 +74,7 @@ namespace
     search.cutoff    = 2. * M_PI * cutoff_hz;
     const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                             MPI_COMM_SELF, false);
-    return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green)};
+    return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green)};
   }
 
   /// Milliseconds per step of the rank-one update of @p model.
@@ -147,20 +147,23 @@ main(int argc, char **argv)
               keep.push_back(k);
           const Eigen::Index m = keep.size();
           Eigen::VectorXd    omega(m), xi(m);
-          Eigen::MatrixXd    shapes(m, P);
+          const bool         coupled = all.shapes_imag.size() > 0;
+          Eigen::MatrixXd    shapes(m, P), imag(coupled ? m : 0, P);
           for (Eigen::Index r = 0; r < m; ++r)
             {
               omega(r)      = 2. * M_PI * all.frequency_hz(keep[r]);
               xi(r)         = all.damping_ratio(keep[r]);
               shapes.row(r) = all.shapes.row(keep[r]);
+              if (coupled)
+                imag.row(r) = all.shapes_imag.row(keep[r]);
             }
-          const auto synthesis = modal::synthesise(omega, xi, shapes, green);
+          const auto synthesis = modal::synthesise(omega, xi, shapes, imag, green);
           const auto errors    = modal::compare(synthesis, green);
           double     driving   = 0.;
           for (unsigned int i = 0; i < P; ++i)
             driving = std::max(driving, errors.pair_error[i * P + i]);
           // The update reads the shapes once per step (ModePatchConvolution).
-          const double mb = 8. * m * P / 1e6;
+          const double mb = (coupled ? 16. : 8.) * m * P / 1e6;
           const double ms = update_ms(modal::to_patch_model(synthesis, Eigen::MatrixXd(), 0.), threads);
           std::cout << format_printf("%14.0f", cutoff) << format_printf("%8.0f", m)
                     << format_printf("%10.3f%%", 100. * errors.median)

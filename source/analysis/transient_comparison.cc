@@ -226,7 +226,7 @@ namespace greentread
       const periodic::RingModes modes =
         periodic::ring_modes(tyre->periodic_cell, tyre->patch, search, MPI_COMM_SELF, false);
       const modal::ModeSynthesis synthesis =
-        modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green);
+        modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green);
       PathModel path;
       path.name    = "modes to " + format_number(cutoff_hz / 1000.) + " kHz";
       path.model   = modal::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);

@@ -24,9 +24,10 @@ namespace greentread
         // pairs, 1 for real poles.
         std::vector<Eigen::MatrixXcd> cu, cv;
         // Rank-one form: c_u = s c_k phi_k phi_k^T, stored as the scalars
-        // s c_k and s c_k lambda_k and the shapes phi_k (rows).
+        // s c_k and s c_k lambda_k and the shapes phi_k (rows; complex
+        // shapes have their imaginary parts in shapes_imag).
         std::vector<std::complex<double>> cu1, cv1;
-        Eigen::MatrixXd                   shapes;
+        Eigen::MatrixXd                   shapes, shapes_imag;
         // The instantaneous compliance (may be empty) and the step.
         Eigen::MatrixXd instantaneous;
         double          dt;
@@ -43,7 +44,10 @@ namespace greentread
             throw InputError("patch convolution: time step " + format_short(dt) +
                              " s is not allowed; allowed: a finite number > 0");
           if (model.is_rank_one())
-            shapes = model.shapes;
+            {
+              shapes      = model.shapes;
+              shapes_imag = model.shapes_imag;
+            }
           for (unsigned int k = 0; k < model.n_terms(); ++k)
             {
               const std::complex<double> l = model.lambda[k];
@@ -87,10 +91,13 @@ namespace greentread
           if (rank_one())
             {
               const auto     &c = velocity ? cv1 : cu1;
-              Eigen::VectorXd w(z.size());
+              Eigen::VectorXd re(z.size()), im(z.size());
               for (std::size_t k = 0; k < z.size(); ++k)
-                w(k) = std::real(c[k] * z[k]);
-              return shapes.transpose() * w.asDiagonal() * shapes;
+                {
+                  re(k) = std::real(c[k] * z[k]);
+                  im(k) = -std::imag(c[k] * z[k]);
+                }
+              return modal::shape_sum(shapes, shapes_imag, re, im);
             }
           const auto     &c      = velocity ? cv : cu;
           Eigen::MatrixXd result = Eigen::MatrixXd::Zero(c[0].rows(), c[0].cols());
@@ -127,7 +134,10 @@ namespace greentread
 
       /**
        * The recursion for a rank-one model: one complex state per term,
-       * driven by the modal force phi_k^T q, and u = sum_k phi_k Re(c_k s_k).
+       * driven by the modal force phi_k^T q, and u = sum_k Re(c_k s_k phi_k).
+       * A complex shape a + j b is two rows of the shape matrix, a and b:
+       * its modal force is a^T q + j b^T q, and it adds
+       * Re(c s) a - Im(c s) b to u.
        * O(N_p N_m) per step, not O(N_p^2 N_m). The step is memory bound (the
        * N_m x N_p shapes do not fit in cache), so advance() makes one pass
        * over them in blocks of rows that stay in cache: the modal forces of
@@ -142,11 +152,18 @@ namespace greentread
           : PatchConvolution(model.n_points(), dt)
           , threads(n_threads)
           , w(model, dt)
-          , shapes(model.shapes)
+          , stride(model.shapes_imag.size() ? 2 : 1)
           , lambda(model.lambda)
         {
           psi = w.influence();
-          hr = hi = Eigen::VectorXd::Zero(shapes.rows());
+          shapes.resize(stride * model.shapes.rows(), n_p);
+          for (Eigen::Index k = 0; k < model.shapes.rows(); ++k)
+            {
+              shapes.row(stride * k) = model.shapes.row(k);
+              if (stride == 2)
+                shapes.row(2 * k + 1) = model.shapes_imag.row(k);
+            }
+          hr = hi = Eigen::VectorXd::Zero(model.shapes.rows());
           uv      = Eigen::MatrixXd::Zero(n_p, 2);
           loads.resize(n_p, 4);
         }
@@ -160,9 +177,15 @@ namespace greentread
               uv.setZero();
               for (Eigen::Index k = 0; k < hr.size(); ++k)
                 {
-                  const std::complex<double> h(hr(k), hi(k));
-                  uv.col(0) += std::real(w.cu1[k] * h) * shapes.row(k).transpose();
-                  uv.col(1) += std::real(w.cv1[k] * h) * shapes.row(k).transpose();
+                  const std::complex<double> h(hr(k), hi(k)), u = w.cu1[k] * h,
+                                                              v = w.cv1[k] * h;
+                  uv.col(0) += u.real() * shapes.row(stride * k).transpose();
+                  uv.col(1) += v.real() * shapes.row(stride * k).transpose();
+                  if (stride == 2)
+                    {
+                      uv.col(0) -= u.imag() * shapes.row(2 * k + 1).transpose();
+                      uv.col(1) -= v.imag() * shapes.row(2 * k + 1).transpose();
+                    }
                 }
               history_ready = true;
             }
@@ -180,7 +203,7 @@ namespace greentread
             }
           for (unsigned int g = 0; g < 4; ++g)
             loads.col(g) = load.component[g];
-          const Eigen::Index m = shapes.rows(), half = m / 2;
+          const Eigen::Index m = hr.size(), half = m / 2;
           if (threads > 1 && half > 64)
             {
               Eigen::MatrixXd first(n_p, 2);
@@ -202,7 +225,8 @@ namespace greentread
           const Eigen::VectorXd f = shapes * q0;
           for (Eigen::Index k = 0; k < hr.size(); ++k)
             {
-              const std::complex<double> h = -w.alpha[k] * f(k) / lambda[k];
+              const std::complex<double> fk(f(stride * k), stride == 2 ? f(2 * k + 1) : 0.);
+              const std::complex<double> h = -w.alpha[k] * fk / lambda[k];
               hr(k)                        = h.real();
               hi(k)                        = h.imag();
             }
@@ -221,33 +245,44 @@ namespace greentread
         void
         sweep(const Eigen::Index begin, const Eigen::Index end, Eigen::MatrixXd &out)
         {
-          constexpr Eigen::Index block = 128;
-          Eigen::MatrixXd        forces(block, 4), weights(block, 2);
+          const Eigen::Index block = 128 / stride;
+          Eigen::MatrixXd    forces(stride * block, 4), weights(stride * block, 2);
           out.setZero(n_p, 2);
           for (Eigen::Index b = begin; b < end; b += block)
             {
               const Eigen::Index rows = std::min(block, end - b);
-              const auto         phi  = shapes.middleRows(b, rows);
-              forces.topRows(rows).noalias() = phi * loads;
+              const auto         phi  = shapes.middleRows(stride * b, stride * rows);
+              forces.topRows(stride * rows).noalias() = phi * loads;
               for (Eigen::Index r = 0; r < rows; ++r)
                 {
-                  const Eigen::Index         k = b + r;
+                  const Eigen::Index k = b + r;
+                  const auto         f = [&](const unsigned int g) {
+                    return std::complex<double>(forces(stride * r, g),
+                                                stride == 2 ? forces(2 * r + 1, g) : 0.);
+                  };
                   const std::complex<double> s = std::complex<double>(hr(k), hi(k)) +
-                                                 w.alpha[k] * forces(r, 0) +
-                                                 w.beta_a[k] * forces(r, 1) +
-                                                 w.beta_b[k] * forces(r, 2) + forces(r, 3);
-                  const std::complex<double> h = w.alpha[k] * s;
+                                                 w.alpha[k] * f(0) + w.beta_a[k] * f(1) +
+                                                 w.beta_b[k] * f(2) + f(3);
+                  const std::complex<double> h = w.alpha[k] * s, u = w.cu1[k] * h,
+                                             v = w.cv1[k] * h;
                   hr(k)                        = h.real();
                   hi(k)                        = h.imag();
-                  weights(r, 0)                = std::real(w.cu1[k] * h);
-                  weights(r, 1)                = std::real(w.cv1[k] * h);
+                  weights(stride * r, 0)       = u.real();
+                  weights(stride * r, 1)       = v.real();
+                  if (stride == 2)
+                    {
+                      weights(2 * r + 1, 0) = -u.imag();
+                      weights(2 * r + 1, 1) = -v.imag();
+                    }
                 }
-              out.noalias() += phi.transpose() * weights.topRows(rows);
+              out.noalias() += phi.transpose() * weights.topRows(stride * rows);
             }
         }
 
         unsigned int threads;
         PoleWeights  w;
+        // 1 for real shapes, 2 for complex ones (rows a_k, b_k).
+        Eigen::Index stride;
         // Row-major: a block of terms is one contiguous stretch of memory.
         Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> shapes;
         std::vector<std::complex<double>>                                     lambda;

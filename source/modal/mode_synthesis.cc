@@ -12,30 +12,47 @@ namespace greentread
   namespace modal
   {
     Eigen::MatrixXcd
-    ModeSynthesis::at(const double omega) const
+    ModeSynthesis::modes_at(const double omega) const
     {
-      // Two real products, Phi^T diag(Re f) Phi and Phi^T diag(Im f) Phi:
-      // a quarter of the work of one complex product.
+      // Per mode the factors of Re and Im of psi psi^T (shape_sum()):
+      // d1 = 1 / (w_k^2 - w^2 + 2 j xi w_k w), and for a complex shape
+      // d2 = j (c - c'), c = 1 / (2 j w_d (j w - l)), c' = -1 / (2 j w_d (j w - conj l)).
       const Eigen::Index m = shapes.rows();
-      Eigen::VectorXd    re(m), im(m);
+      Eigen::VectorXd    re1(m), im1(m), re2 = Eigen::VectorXd::Zero(m), im2 = re2;
+      const std::complex<double> s(0., omega);
       for (Eigen::Index k = 0; k < m; ++k)
         {
-          const double               w = 2. * M_PI * frequency_hz(k);
-          const std::complex<double> factor =
-            1. / std::complex<double>(w * w - omega * omega, 2. * damping_ratio(k) * w * omega);
-          re(k) = factor.real();
-          im(k) = factor.imag();
+          const double               w = 2. * M_PI * frequency_hz(k), xi = damping_ratio(k);
+          const std::complex<double> d1 =
+            1. / std::complex<double>(w * w - omega * omega, 2. * xi * w * omega);
+          re1(k) = d1.real();
+          im1(k) = d1.imag();
+          if (shapes_imag.size() == 0 || !(xi < 1.))
+            continue;
+          const double               wd = w * std::sqrt(1. - xi * xi);
+          const std::complex<double> l(-xi * w, wd), twice(0., 2. * wd);
+          const std::complex<double> d2 =
+            std::complex<double>(0., 1.) * (1. / (twice * (s - l)) + 1. / (twice * (s - std::conj(l))));
+          re2(k) = d2.real();
+          im2(k) = d2.imag();
         }
-      // G_r / (1 + j w beta_r).
+      Eigen::MatrixXcd g(shapes.cols(), shapes.cols());
+      g.real() = shape_sum(shapes, shapes_imag, re1, re2);
+      g.imag() = shape_sum(shapes, shapes_imag, im1, im2);
+      return g;
+    }
+
+
+
+    Eigen::MatrixXcd
+    ModeSynthesis::at(const double omega) const
+    {
+      // G_r / (1 + j w beta_r) and the modes.
       const std::complex<double> relaxed =
         1. / std::complex<double>(1., omega * residual_relaxation);
-      Eigen::MatrixXd real = relaxed.real() * instantaneous;
-      real.noalias() += shapes.transpose() * (re.asDiagonal() * shapes);
-      Eigen::MatrixXd imag = relaxed.imag() * instantaneous;
-      imag.noalias() += shapes.transpose() * (im.asDiagonal() * shapes);
-      Eigen::MatrixXcd      g(real.rows(), real.cols());
-      g.real() = real;
-      g.imag() = imag;
+      Eigen::MatrixXcd g = modes_at(omega);
+      g.real() += relaxed.real() * instantaneous;
+      g.imag() += relaxed.imag() * instantaneous;
       return g;
     }
 
@@ -80,11 +97,7 @@ namespace greentread
       for (unsigned int l = 1; l < direct.n_lines; ++l)
         {
           const double           omega = 2. * M_PI * l * direct.df;
-          // The modes' part: the model less its own (relaxed) residual, no copy
-          // of the shapes.
-          const std::complex<double> own =
-            1. / std::complex<double>(1., omega * model.residual_relaxation);
-          const Eigen::MatrixXcd modal = model.at(omega) - own * model.instantaneous;
+          const Eigen::MatrixXcd modal = model.modes_at(omega);
           for (unsigned int i = 0; i < P; ++i)
             for (unsigned int j = 0; j < P; ++j)
               {
@@ -104,11 +117,13 @@ namespace greentread
     synthesise(const Eigen::VectorXd                    &omega,
                const Eigen::VectorXd                    &damping_ratio,
                const Eigen::MatrixXd                    &shapes,
+               const Eigen::MatrixXd                    &shapes_imag,
                const Eigen::MatrixXd                    &static_green,
                const std::vector<std::array<double, 3>> &points)
     {
       const Eigen::Index m = omega.size(), P = static_green.rows();
       if (damping_ratio.size() != m || shapes.rows() != m || shapes.cols() != P ||
+          (shapes_imag.size() && (shapes_imag.rows() != m || shapes_imag.cols() != P)) ||
           static_green.cols() != P || static_cast<Eigen::Index>(points.size()) != P)
         throw NumericalError("synthesise: the modes, the static Green's functions and the "
                              "points do not match in size");
@@ -116,9 +131,17 @@ namespace greentread
       model.frequency_hz  = omega / (2. * M_PI);
       model.damping_ratio = damping_ratio;
       model.shapes        = shapes;
-      model.points        = points;
-      const Eigen::MatrixXd scaled = omega.cwiseInverse().asDiagonal() * shapes;
-      Eigen::MatrixXd       residual = static_green - scaled.transpose() * scaled;
+      if (shapes_imag.size() && shapes_imag.cwiseAbs().maxCoeff() > 0.)
+        model.shapes_imag = shapes_imag;
+      for (Eigen::Index k = 0; k < m; ++k)
+        if (model.shapes_imag.size() && !(damping_ratio(k) < 1.) &&
+            model.shapes_imag.row(k).cwiseAbs().maxCoeff() > 0.)
+          throw NumericalError("synthesise: mode " + std::to_string(k) +
+                               " has a complex shape and a damping ratio of " +
+                               format_short(damping_ratio(k)) + "; a complex shape needs < 1");
+      model.points = points;
+      // The modes' static part is real (for a real shape 1 / w_k^2).
+      const Eigen::MatrixXd residual = static_green - model.modes_at(0.).real();
       model.instantaneous            = 0.5 * (residual + residual.transpose());
       return model;
     }
@@ -129,10 +152,11 @@ namespace greentread
     synthesise(const Eigen::VectorXd         &omega,
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
+               const Eigen::MatrixXd         &shapes_imag,
                const FrequencyResponseMatrix &direct)
     {
       ModeSynthesis model =
-        synthesise(omega, damping_ratio, shapes, static_line(direct), direct.points);
+        synthesise(omega, damping_ratio, shapes, shapes_imag, static_line(direct), direct.points);
       model.residual_relaxation = fit_residual_relaxation(model, direct);
       return model;
     }

@@ -37,6 +37,11 @@ namespace greentread
                                  format_short(synthesis.frequency_hz(k)) +
                                  " Hz and damping ratio " + format_short(xi) +
                                  "; a mode needs a frequency > 0 and a damping ratio >= 0");
+          const bool complex_shape = synthesis.shapes_imag.size() &&
+                                     synthesis.shapes_imag.row(k).cwiseAbs().maxCoeff() > 0.;
+          if (complex_shape && !(xi < 1.))
+            throw NumericalError("mode " + std::to_string(k) + ": a complex shape with a damping "
+                                 "ratio of " + format_short(xi) + "; a complex shape needs < 1");
           if (xi < 1.)
             {
               const double wd = w * std::sqrt(1. - xi * xi);
@@ -60,6 +65,12 @@ namespace greentread
       model.shapes.resize(rows.size(), P);
       for (std::size_t t = 0; t < rows.size(); ++t)
         model.shapes.row(t) = synthesis.shapes.row(rows[t]);
+      if (synthesis.shapes_imag.size())
+        {
+          model.shapes_imag.resize(rows.size(), P);
+          for (std::size_t t = 0; t < rows.size(); ++t)
+            model.shapes_imag.row(t) = synthesis.shapes_imag.row(rows[t]);
+        }
       if (model.residual_relaxation > 0.)
         {
           // G_r / (1 + s beta) = sum_i (d_i / beta) v_i v_i^T / (s + 1 / beta).
@@ -67,6 +78,8 @@ namespace greentread
           const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(synthesis.instantaneous);
           const Eigen::Index                                   m = model.shapes.rows();
           model.shapes.conservativeResize(m + P, P);
+          if (model.shapes_imag.size())
+            model.shapes_imag.conservativeResizeLike(Eigen::MatrixXd::Zero(m + P, P));
           for (Eigen::Index i = 0; i < P; ++i)
             {
               const double d          = std::max(eigen.eigenvalues()(i), 0.);
@@ -88,12 +101,14 @@ namespace greentread
         return model;
       PatchModel full = model;
       full.shapes.resize(0, 0);
+      full.shapes_imag.resize(0, 0);
       full.factor.clear();
       for (unsigned int k = 0; k < model.n_terms(); ++k)
         {
-          const Eigen::VectorXd phi = model.shapes.row(k).transpose();
-          full.residues.push_back(model.factor[k] *
-                                  (phi * phi.transpose()).cast<std::complex<double>>());
+          Eigen::VectorXcd phi = model.shapes.row(k).transpose().cast<std::complex<double>>();
+          if (model.shapes_imag.size())
+            phi.imag() = model.shapes_imag.row(k).transpose();
+          full.residues.push_back(model.factor[k] * (phi * phi.transpose()));
         }
       return full;
     }
@@ -103,8 +118,8 @@ namespace greentread
     namespace
     {
       const std::vector<std::string> modal_datasets = {
-        "frequency_hz",  "damping_ratio",       "wavenumber", "shapes",
-        "instantaneous", "residual_relaxation", "points",     "dispersion"};
+        "frequency_hz",        "damping_ratio", "wavenumber", "shapes",    "shapes_imag",
+        "instantaneous",       "residual_relaxation",       "points",     "dispersion"};
     } // namespace
 
 
@@ -130,6 +145,10 @@ namespace greentread
           for (std::size_t j = 0; j < n; ++j)
             values[i * n + j] = synthesis.shapes(i, j);
         h5.create_dataset<double>("shapes", {m, n}).write(values);
+        for (std::size_t i = 0; i < m; ++i)
+          for (std::size_t j = 0; j < n; ++j)
+            values[i * n + j] = synthesis.shapes_imag.size() ? synthesis.shapes_imag(i, j) : 0.;
+        h5.create_dataset<double>("shapes_imag", {m, n}).write(values);
         values.resize(n * n);
         for (std::size_t i = 0; i < n; ++i)
           for (std::size_t j = 0; j < n; ++j)
@@ -165,24 +184,25 @@ namespace greentread
                          "' is missing or incomplete; delete it to recompute it");
       // Read everything, and close the file, before any check can throw:
       // deal.II's HDF5 objects abort when destroyed during an exception.
-      std::vector<double> f, xi, k, shapes, gr, relaxation, p, d;
+      std::vector<double> f, xi, k, shapes, imag, gr, relaxation, p, d;
       {
         dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
         f      = h5.open_dataset("frequency_hz").read<std::vector<double>>();
         xi     = h5.open_dataset("damping_ratio").read<std::vector<double>>();
         k      = h5.open_dataset("wavenumber").read<std::vector<double>>();
         shapes = h5.open_dataset("shapes").read<std::vector<double>>();
+        imag   = h5.open_dataset("shapes_imag").read<std::vector<double>>();
         gr     = h5.open_dataset("instantaneous").read<std::vector<double>>();
         relaxation = h5.open_dataset("residual_relaxation").read<std::vector<double>>();
         p      = h5.open_dataset("points").read<std::vector<double>>();
         d      = h5.open_dataset("dispersion").read<std::vector<double>>();
       }
       const std::size_t m = f.size(), n = p.size() / 3;
-      if (xi.size() != m || k.size() != m || shapes.size() != m * n || gr.size() != n * n ||
+      if (xi.size() != m || k.size() != m || shapes.size() != m * n || imag.size() != m * n || gr.size() != n * n ||
           relaxation.size() != 1 || p.size() != 3 * n || d.size() % 4 != 0)
         throw InputError("modal model file '" + file +
                          "' has inconsistent dataset sizes; delete it to recompute it");
-      for (const auto *values : {&f, &xi, &shapes, &gr, &relaxation, &p, &d})
+      for (const auto *values : {&f, &xi, &shapes, &imag, &gr, &relaxation, &p, &d})
         if (!std::all_of(values->begin(), values->end(),
                          [](const double x) { return std::isfinite(x); }))
           throw InputError("modal model file '" + file +
@@ -195,6 +215,17 @@ namespace greentread
       s.shapes =
         Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           shapes.data(), m, n);
+      if (std::any_of(imag.begin(), imag.end(), [](const double x) { return x != 0.; }))
+        {
+          s.shapes_imag =
+            Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+              imag.data(), m, n);
+          for (std::size_t i = 0; i < m; ++i)
+            if (!(xi[i] < 1.) && s.shapes_imag.row(i).cwiseAbs().maxCoeff() > 0.)
+              throw InputError("modal model file '" + file + "': mode " + std::to_string(i) +
+                               " has a complex shape and a damping ratio of " +
+                               format_short(xi[i]) + "; allowed: below 1");
+        }
       s.instantaneous =
         Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           gr.data(), n, n);

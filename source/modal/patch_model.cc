@@ -121,17 +121,38 @@ namespace greentread
 
 
     Eigen::MatrixXd
+    shape_sum(const Eigen::MatrixXd &A,
+              const Eigen::MatrixXd &B,
+              const Eigen::VectorXd &w1,
+              const Eigen::VectorXd &w2)
+    {
+      Eigen::MatrixXd sum = A.transpose() * (w1.asDiagonal() * A);
+      if (B.size() == 0)
+        return sum;
+      sum.noalias() -= B.transpose() * (w1.asDiagonal() * B);
+      const Eigen::MatrixXd cross = A.transpose() * (w2.asDiagonal() * B);
+      sum += cross + cross.transpose();
+      return sum;
+    }
+
+
+
+    Eigen::MatrixXd
     PatchModel::static_compliance() const
     {
       const unsigned int n = n_points();
       Eigen::MatrixXd    g = instantaneous.size() ? instantaneous : Eigen::MatrixXd::Zero(n, n);
       if (is_rank_one())
         {
-          // Re(s c_k / lambda_k) phi_k phi_k^T, s = 1 for a real pole, 2 for a pair.
-          Eigen::VectorXd weight(n_terms());
+          // Re(s c_k / lambda_k phi_k phi_k^T), s = 1 for a real pole, 2 for a pair.
+          Eigen::VectorXd re(n_terms()), im(n_terms());
           for (unsigned int k = 0; k < n_terms(); ++k)
-            weight(k) = (real[k] ? 1. : 2.) * std::real(factor[k] / lambda[k]);
-          g -= shapes.transpose() * weight.asDiagonal() * shapes;
+            {
+              const std::complex<double> e = (real[k] ? 1. : 2.) * factor[k] / lambda[k];
+              re(k)                        = e.real();
+              im(k)                        = -e.imag();
+            }
+          g -= shape_sum(shapes, shapes_imag, re, im);
           return g;
         }
       for (unsigned int k = 0; k < n_terms(); ++k)

@@ -209,9 +209,11 @@ namespace greentread
                                              "the prestress makes it unstable");
                       modes.omega(j) = std::sqrt(theta(j));
                       fix_phase(modes.shapes.col(j));
-                      const Complex c = modes.shapes.col(j).dot(C * modes.shapes.col(j));
-                      modes.damping_ratio(j) = c.real() / (2. * modes.omega(j));
                     }
+                  modes.modal_damping = modes.shapes.adjoint() * (C * modes.shapes);
+                  for (Eigen::Index j = 0; j < count; ++j)
+                    modes.damping_ratio(j) =
+                      modes.modal_damping(j, j).real() / (2. * modes.omega(j));
                   modes.krylov_dimension = static_cast<unsigned int>(basis.size());
                   modes.max_residual     = worst;
                   return modes;

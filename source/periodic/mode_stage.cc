@@ -68,7 +68,8 @@ namespace greentread
 
       // G_r from the static line (the direct solve at 0 Hz), its relaxation
       // from the others.
-      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, green);
+      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                    modes.shapes_imag, green);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
         {
@@ -81,7 +82,10 @@ namespace greentread
       std::cout << "  " << synthesis.n_modes() << " ring modes from "
                 << modes.branches.size() << " wavenumbers (" << modes.n_solves
                 << " sparse solves, largest relative residual "
-                << format_printf("%.2g", modes.max_residual) << ")";
+                << format_printf("%.2g", modes.max_residual) << "), coupled by the damping";
+      if (modes.uncoupled > 0)
+        std::cout << " except at " << modes.uncoupled
+                  << " wavenumbers (a pole near critical damping: diagonal damping there)";
       if (print_timings)
         std::cout << ", " << format_printf("%.3g", seconds.count()) << " s";
       std::cout << '\n';

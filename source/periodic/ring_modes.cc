@@ -1,14 +1,18 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/progress.h>
+#include <greentread/base/serial_blas.h>
 #include <greentread/periodic/ring_modes.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <deal.II/lac/lapack_templates.h>
+
 #include <algorithm>
 #include <atomic>
 #include <memory>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <thread>
@@ -17,18 +21,56 @@ namespace greentread
 {
   namespace periodic
   {
+    namespace
+    {
+      /// The eigenvalues and right eigenvectors of the dense @p L by LAPACK's
+      /// zgeev (blocked: about three times faster than Eigen's
+      /// ComplexEigenSolver at the few hundred modes of a wavenumber).
+      /// One call at a time (base/serial_blas.h): the wavenumbers are
+      /// searched on several threads. False if it fails.
+      bool
+      eigen_decomposition(Eigen::MatrixXcd L, Eigen::VectorXcd &lambda, Eigen::MatrixXcd &vectors)
+      {
+        const auto lock = base::lock_serial_blas();
+        const dealii::types::blas_int n = L.rows();
+        dealii::types::blas_int       lwork = -1, info = 0, one = 1;
+        lambda.resize(n);
+        vectors.resize(n, n);
+        std::complex<double>              query, unused;
+        std::vector<double>               rwork(2 * n);
+        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(),
+                     &n, &query, &lwork, rwork.data(), &info);
+        lwork = static_cast<dealii::types::blas_int>(query.real());
+        std::vector<std::complex<double>> work(std::max<dealii::types::blas_int>(lwork, 1));
+        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(),
+                     &n, work.data(), &lwork, rwork.data(), &info);
+        return info == 0 && lambda.allFinite() && vectors.allFinite();
+      }
+
+      /// a(r, q): Bloch mode r seen by the unit load of point q,
+      /// sum over q's entries (n, s, w) of w e^{i phi n} psi_r(s).
+      Eigen::MatrixXcd
+      bloch_point_values(const BlochModes &modes, const PeriodicCell &cell, const ContactPatch &patch)
+      {
+        const double     phi = 2. * M_PI * modes.wavenumber / cell.n_cells;
+        Eigen::MatrixXcd a   = Eigen::MatrixXcd::Zero(modes.omega.size(), patch.points.size());
+        for (std::size_t q = 0; q < patch.points.size(); ++q)
+          for (const auto &e : patch.points[q].load)
+            a.col(q) +=
+              e.weight * std::polar(1., phi * e.cell) * modes.shapes.row(e.dof).transpose();
+        return a;
+      }
+    } // namespace
+
+
+
     Eigen::MatrixXd
     point_shapes(const BlochModes &modes, const PeriodicCell &cell, const ContactPatch &patch)
     {
-      const unsigned int N = cell.n_cells, k = modes.wavenumber, P = patch.points.size();
-      const double       phi  = 2. * M_PI * k / N;
-      const bool         real = k == 0 || 2 * k == N;
-      const Eigen::Index m    = modes.omega.size();
-      Eigen::MatrixXcd   a    = Eigen::MatrixXcd::Zero(m, P);
-      for (unsigned int q = 0; q < P; ++q)
-        for (const auto &e : patch.points[q].load)
-          a.col(q) += e.weight * std::polar(1., phi * e.cell) * modes.shapes.row(e.dof).transpose();
-      if (real)
+      const unsigned int     N = cell.n_cells, k = modes.wavenumber, P = patch.points.size();
+      const Eigen::Index     m = modes.omega.size();
+      const Eigen::MatrixXcd a = bloch_point_values(modes, cell, patch);
+      if (k == 0 || 2 * k == N)
         return a.real() / std::sqrt(double(N));
       Eigen::MatrixXd shapes(2 * m, P);
       const double    scale = std::sqrt(2. / N);
@@ -42,13 +84,131 @@ namespace greentread
 
 
 
+    PointModes
+    coupled_point_modes(const BlochModes   &modes,
+                        const PeriodicCell &cell,
+                        const ContactPatch &patch,
+                        const bool          couple)
+    {
+      using Complex         = std::complex<double>;
+      const unsigned int N  = cell.n_cells, k = modes.wavenumber;
+      const bool         real = k == 0 || 2 * k == N;
+      const Eigen::Index m = modes.omega.size(), P = patch.points.size(), per = real ? 1 : 2;
+      const auto         diagonal = [&]() {
+        PointModes out;
+        out.shapes = point_shapes(modes, cell, patch);
+        out.shapes_imag.setZero(out.shapes.rows(), P);
+        out.omega.resize(per * m);
+        out.damping_ratio.resize(per * m);
+        for (Eigen::Index r = 0; r < per * m; ++r)
+          {
+            out.omega(r)         = modes.omega(r / per);
+            out.damping_ratio(r) = modes.damping_ratio(r / per);
+          }
+        return out;
+      };
+      // With a proportional damping B is diagonal up to the modes' own
+      // accuracy (relative residuals of 1e-9), and the coupled form would
+      // equal the diagonal one.
+      const Eigen::MatrixXcd &B = modes.modal_damping;
+      const double            off =
+        m > 0 ? (B - Eigen::MatrixXcd(B.diagonal().asDiagonal())).cwiseAbs().maxCoeff() : 0.;
+      if (!couple || m == 0 || !(off > 1e-8 * B.diagonal().cwiseAbs().maxCoeff()))
+        return diagonal();
+
+      // (s^2 I + s B + W^2) x = 0 in the modal coordinates, B = Psi^H C Psi,
+      // linearised with z = [W x; s x]: s z = [[0, W], [-W, -B]] z.
+      Eigen::MatrixXcd L = Eigen::MatrixXcd::Zero(2 * m, 2 * m);
+      L.topRightCorner(m, m).diagonal()   = modes.omega.cast<Complex>();
+      L.bottomLeftCorner(m, m).diagonal() = -modes.omega.cast<Complex>();
+      L.bottomRightCorner(m, m)           = -B;
+      Eigen::VectorXcd lambda;
+      Eigen::MatrixXcd z;
+      if (!eigen_decomposition(L, lambda, z))
+        return diagonal();
+      const Eigen::MatrixXcd x = modes.omega.cwiseInverse().asDiagonal() * z.topRows(m);
+
+      // Each pole above the real axis with its mirror below: the problem is
+      // Hermitian, so the poles come in conjugate pairs, and the mirror's
+      // vector y is the pole's left vector. A pole near the real axis
+      // (over-critical) or a pair not found: the diagonal form.
+      std::vector<Eigen::Index> up, down;
+      for (Eigen::Index r = 0; r < 2 * m; ++r)
+        {
+          const double xi = -lambda(r).real() / std::abs(lambda(r));
+          if (!(xi >= 0. && xi < 0.99))
+            return diagonal();
+          (lambda(r).imag() > 0. ? up : down).push_back(r);
+        }
+      if (up.size() != std::size_t(m))
+        return diagonal();
+      std::vector<bool> taken(2 * m, false);
+      PointModes        out;
+      out.omega.resize(per * m);
+      out.damping_ratio.resize(per * m);
+      out.shapes.resize(per * m, P);
+      out.shapes_imag.resize(per * m, P);
+      const Eigen::MatrixXcd a = bloch_point_values(modes, cell, patch);
+      for (Eigen::Index i = 0; i < m; ++i)
+        {
+          const Eigen::Index u    = up[i];
+          Eigen::Index       d    = -1;
+          double             best = std::numeric_limits<double>::infinity();
+          for (const Eigen::Index r : down)
+            if (!taken[r] && std::abs(lambda(r) - std::conj(lambda(u))) < best)
+              {
+                best = std::abs(lambda(r) - std::conj(lambda(u)));
+                d    = r;
+              }
+          if (d < 0 || best > 1e-6 * std::abs(lambda(u)))
+            return diagonal();
+          taken[d]       = true;
+          const Complex l  = lambda(u);
+          const double  wd = l.imag();
+          // The residue of (s^2 I + s B + W^2)^-1 at l is x y^H / mu.
+          const Eigen::VectorXcd q2 = 2. * l * x.col(u) + modes.modal_damping * x.col(u);
+          const Complex          mu = x.col(d).dot(q2);
+          const Eigen::VectorXcd psi1 = a.transpose() * x.col(u);
+          const Eigen::VectorXcd psi2 = (a.transpose() * x.col(d)).conjugate();
+          out.omega.segment(per * i, per).setConstant(std::abs(l));
+          out.damping_ratio.segment(per * i, per).setConstant(-l.real() / std::abs(l));
+          // Shapes psi such that psi psi^T / (2 j w_d) is the residue at l (and
+          // their conjugates at conj(l)), w_d = Im l.
+          if (real)
+            {
+              // (1/N) psi1 psi2^T / mu, with psi2 = alpha psi1.
+              const double           size  = psi1.squaredNorm();
+              const Complex          alpha = size > 0. ? psi1.dot(psi2) / size : Complex(0.);
+              const Eigen::VectorXcd shape =
+                std::sqrt(Complex(0., 2. * wd) * alpha / (double(N) * mu)) * psi1;
+              out.shapes.row(i)      = shape.real().transpose();
+              out.shapes_imag.row(i) = shape.imag().transpose();
+              continue;
+            }
+          // k and N - k together: (1/N)(psi1 psi2^T + psi2 psi1^T) / mu
+          // = (p p^T + q q^T) / (2 N mu), p = psi1 + psi2, q = (psi1 - psi2) / j.
+          const Complex          scale = std::sqrt(Complex(0., wd) / (double(N) * mu));
+          const Eigen::VectorXcd p     = scale * (psi1 + psi2);
+          const Eigen::VectorXcd q     = scale * (psi1 - psi2) / Complex(0., 1.);
+          out.shapes.row(2 * i)          = p.real().transpose();
+          out.shapes_imag.row(2 * i)     = p.imag().transpose();
+          out.shapes.row(2 * i + 1)      = q.real().transpose();
+          out.shapes_imag.row(2 * i + 1) = q.imag().transpose();
+        }
+      out.coupled = true;
+      return out;
+    }
+
+
+
     namespace
     {
       /// One wavenumber's result, packed as doubles for the gather:
       /// k, m, the m frequencies, the m damping ratios, residual, solves,
-      /// the number of real modes r, then r x P shapes.
+      /// coupled (0 or 1), the number of ring modes r, then per ring mode
+      /// w, xi, its P shape values and their P imaginary parts.
       void
-      pack(const BlochModes &modes, const Eigen::MatrixXd &shapes, std::vector<double> &out)
+      pack(const BlochModes &modes, const PointModes &ring, std::vector<double> &out)
       {
         out.push_back(modes.wavenumber);
         out.push_back(modes.omega.size());
@@ -57,10 +217,17 @@ namespace greentread
                    modes.damping_ratio.data() + modes.damping_ratio.size());
         out.push_back(modes.max_residual);
         out.push_back(modes.n_solves);
-        out.push_back(shapes.rows());
-        for (Eigen::Index r = 0; r < shapes.rows(); ++r)
-          for (Eigen::Index p = 0; p < shapes.cols(); ++p)
-            out.push_back(shapes(r, p));
+        out.push_back(ring.coupled ? 1. : 0.);
+        out.push_back(ring.shapes.rows());
+        for (Eigen::Index r = 0; r < ring.shapes.rows(); ++r)
+          {
+            out.push_back(ring.omega(r));
+            out.push_back(ring.damping_ratio(r));
+            for (Eigen::Index p = 0; p < ring.shapes.cols(); ++p)
+              out.push_back(ring.shapes(r, p));
+            for (Eigen::Index p = 0; p < ring.shapes.cols(); ++p)
+              out.push_back(ring.shapes_imag(r, p));
+          }
       }
     } // namespace
 
@@ -71,7 +238,8 @@ namespace greentread
                const ContactPatch &patch,
                const ModeSearch   &search,
                const MPI_Comm      comm,
-               const bool          show_progress)
+               const bool          show_progress,
+               const bool          couple_damping)
     {
       const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -90,7 +258,7 @@ namespace greentread
             try
               {
                 const BlochModes modes = bloch_modes(cell, mine[i], search);
-                pack(modes, point_shapes(modes, cell, patch), packed[i]);
+                pack(modes, coupled_point_modes(modes, cell, patch, couple_damping), packed[i]);
                 ++done;
               }
             catch (const std::exception &e)
@@ -126,7 +294,7 @@ namespace greentread
       RingModes                    result;
       std::vector<double>          omega, damping;
       std::vector<unsigned int>    wavenumber;
-      std::vector<Eigen::VectorXd> rows;
+      std::vector<Eigen::VectorXd> rows, rows_imag;
       result.branches.resize(n_k);
       result.branch_damping.resize(n_k);
       for (const auto &from : gathered)
@@ -140,15 +308,18 @@ namespace greentread
             at += m;
             result.max_residual = std::max(result.max_residual, from[at++]);
             result.n_solves += static_cast<unsigned int>(from[at++]);
+            if (couple_damping && from[at] == 0. && m > 0)
+              ++result.uncoupled;
+            ++at;
             const auto r = static_cast<Eigen::Index>(from[at++]);
             for (Eigen::Index j = 0; j < r; ++j)
               {
-                // Real modes come one per Bloch mode, or a cos/sin pair.
-                const Eigen::Index bloch = r == m ? j : j / 2;
-                omega.push_back(result.branches[k](bloch));
-                damping.push_back(result.branch_damping[k](bloch));
+                omega.push_back(from[at++]);
+                damping.push_back(from[at++]);
                 wavenumber.push_back(k);
                 rows.emplace_back(Eigen::Map<const Eigen::VectorXd>(from.data() + at, P));
+                at += P;
+                rows_imag.emplace_back(Eigen::Map<const Eigen::VectorXd>(from.data() + at, P));
                 at += P;
               }
           }
@@ -161,13 +332,17 @@ namespace greentread
       result.omega.resize(n_modes);
       result.damping_ratio.resize(n_modes);
       result.shapes.resize(n_modes, P);
+      result.shapes_imag.resize(n_modes, P);
       for (Eigen::Index i = 0; i < n_modes; ++i)
         {
           result.omega(i)         = omega[order[i]];
           result.damping_ratio(i) = damping[order[i]];
           result.wavenumber.push_back(wavenumber[order[i]]);
-          result.shapes.row(i) = rows[order[i]].transpose();
+          result.shapes.row(i)      = rows[order[i]].transpose();
+          result.shapes_imag.row(i) = rows_imag[order[i]].transpose();
         }
+      if (!couple_damping)
+        result.shapes_imag.resize(0, 0);
       return result;
     }
   } // namespace periodic

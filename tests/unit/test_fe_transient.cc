@@ -69,8 +69,14 @@ BOOST_AUTO_TEST_CASE(structure_converges_at_second_order_with_proportional_dampi
   BOOST_TEST(error[2] < 1e-4);
 }
 
-BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_stops_at_the_modal_damping_floor)
+BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_converges_with_coupled_modes)
 {
+  // The per-layer damping is not proportional. With the modes coupled by
+  // it (periodic/ring_modes.h, the default) the structure converges to the
+  // reference as dt falls, as with a proportional damping; with only the
+  // diagonal of Psi^H C Psi it stopped at 2.0e-3 whatever dt (the coupling's
+  // floor; measured 2.1e-3 and 2.05e-3 at 20 and 10 us before the
+  // coupling). Measured now: 2.2e-4 and 8.2e-5.
   const analysis::TransientCase study(coarse_case(false));
   BOOST_TEST(study.static_mismatch() < 1e-10);
   const analysis::PathModel modes = study.mode_model(4000.);
@@ -78,9 +84,8 @@ BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_stops_at_the_modal_damping
   const double              fine   = study.driven_difference({&modes}, 1e-5, 2e-3)[0];
   BOOST_TEST_MESSAGE("per-layer damping: " << coarse << " at dt = 20 us, " << fine
                                            << " at 10 us");
-  // Measured 2.1e-3 and 2.05e-3: the floor is the damping's modal coupling.
-  BOOST_TEST(fine < 3e-3);
-  BOOST_TEST(fine <= coarse);
+  BOOST_TEST(coarse < 5e-4);
+  BOOST_TEST(fine < 0.5 * coarse);
 }
 
 BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_step)

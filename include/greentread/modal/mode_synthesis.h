@@ -32,6 +32,13 @@
  * when the contact nodes carry no mass ('Surface mass = moved inward'):
  * their motion is all in G_r, and it relaxes in beta (7 us for the tread's
  * default loss factor), the scale of a contact time step.
+ *
+ * **Complex shapes.** With a damping that is not proportional the modes
+ * are coupled (periodic/ring_modes.h); the synthesis then holds complex
+ * shapes psi_k = shapes + j shapes_imag, and mode k contributes
+ *   psi psi^T / (2 j w_d (j w - l)) - conj(psi) conj(psi)^T / (2 j w_d (j w - conj(l))),
+ * l = w_k (-xi_k + j sqrt(1 - xi_k^2)), w_d = Im l, which for a real psi is
+ * the term above. A mode with a complex shape has xi_k < 1.
  * Implemented in source/modal/mode_synthesis.cc (the synthesis and its
  * errors) and source/modal/mode_synthesis_io.cc (the rank-one patch model
  * and modal_model.h5).
@@ -54,8 +61,9 @@ namespace greentread
     {
       /// Per mode: natural frequency [Hz] and damping ratio, ascending.
       Eigen::VectorXd frequency_hz, damping_ratio;
-      /// The mass-normalised mode values at the points, [mode][point] [1/sqrt(kg)].
-      Eigen::MatrixXd shapes;
+      /// The mass-normalised mode values at the points, [mode][point]
+      /// [1/sqrt(kg)], and their imaginary parts (empty: real shapes).
+      Eigen::MatrixXd shapes, shapes_imag;
       /// G_r, [point][point] [m/N].
       Eigen::MatrixXd instantaneous;
       /// beta_r [s]: the residual is G_r / (1 + j w beta_r) (0: a spring).
@@ -77,6 +85,10 @@ namespace greentread
       Eigen::MatrixXcd
       at(double omega) const;
 
+      /// The modes' part of g(w), without the residual.
+      Eigen::MatrixXcd
+      modes_at(double omega) const;
+
       /// The smallest eigenvalue of G_r over its largest: >= -1e-12 for a
       /// positive semidefinite residual (round-off).
       double
@@ -90,13 +102,16 @@ namespace greentread
 
     /**
      * @brief The synthesis from the modes (@p omega [rad/s], @p damping_ratio,
-     * @p shapes [mode][point]) and the static Green's functions
-     * @p static_green (the direct solve at 0 Hz) at @p points.
+     * @p shapes [mode][point] and their imaginary parts @p shapes_imag, empty
+     * for real shapes) and the static Green's functions @p static_green (the
+     * direct solve at 0 Hz) at @p points: G_r = G(0) less the modes' part at
+     * 0 Hz.
      */
     ModeSynthesis
     synthesise(const Eigen::VectorXd                    &omega,
                const Eigen::VectorXd                    &damping_ratio,
                const Eigen::MatrixXd                    &shapes,
+               const Eigen::MatrixXd                    &shapes_imag,
                const Eigen::MatrixXd                    &static_green,
                const std::vector<std::array<double, 3>> &points);
 
@@ -109,6 +124,7 @@ namespace greentread
     synthesise(const Eigen::VectorXd         &omega,
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
+               const Eigen::MatrixXd         &shapes_imag,
                const FrequencyResponseMatrix &direct);
 
     /**
@@ -154,7 +170,8 @@ namespace greentread
     /**
      * @brief Write @p synthesis as modal_model.h5 (temporary name, renamed when
      * complete): `/frequency_hz` [m], `/damping_ratio` [m], `/wavenumber` [m],
-     * `/shapes` [m][n_p], `/instantaneous` [n_p][n_p] (G_r),
+     * `/shapes` [m][n_p], `/shapes_imag` [m][n_p] (zeros for real shapes),
+     * `/instantaneous` [n_p][n_p] (G_r),
      * `/residual_relaxation` [1] (beta_r [s]), `/points`
      * [n_p][3], `/dispersion` [rows][4] (wavenumber, branch, frequency [Hz],
      * damping ratio), and the attributes `parameters` and `stage_key`.

@@ -60,6 +60,18 @@ namespace greentread
 {
   namespace modal
   {
+    /**
+     * @brief With shapes psi_k = A.row(k) + j B.row(k) (B may be empty: real
+     * shapes), A^T diag(w1) A - B^T diag(w1) B + A^T diag(w2) B + B^T diag(w2) A.
+     * Re sum_k e_k psi_k psi_k^T is shape_sum(A, B, Re e, -Im e), and Im of
+     * the same sum shape_sum(A, B, Im e, Re e).
+     */
+    Eigen::MatrixXd
+    shape_sum(const Eigen::MatrixXd &A,
+              const Eigen::MatrixXd &B,
+              const Eigen::VectorXd &w1,
+              const Eigen::VectorXd &w2);
+
     /// Where the patch model comes from.
     enum class PatchModelSource
     {
@@ -104,7 +116,9 @@ namespace greentread
      * - full (`identified`): residues[k] is the n x n matrix R_k;
      * - rank one (`fe modes`): residues is empty and
      *   \f$R_k = c_k\,\phi_k\phi_k^T\f$ with \f$\phi_k\f$ = shapes.row(k) and
-     *   \f$c_k\f$ = factor[k], N_p values per term instead of N_p^2.
+     *   \f$c_k\f$ = factor[k], N_p values per term instead of N_p^2; the
+     *   shape is complex, shapes.row(k) + j shapes_imag.row(k), when
+     *   shapes_imag is not empty (modes coupled by the damping).
      */
     struct PatchModel
     {
@@ -114,7 +128,7 @@ namespace greentread
       /// due to a force at j (full form only).
       std::vector<Eigen::MatrixXcd> residues;
       /// Rank-one form: one shape per term, [term][point], and its factor.
-      Eigen::MatrixXd                   shapes;
+      Eigen::MatrixXd                   shapes, shapes_imag;
       std::vector<std::complex<double>> factor;
       /// The instantaneous compliance G_r [m/N] (n x n, symmetric positive
       /// definite), or empty with a real residual pole.
@@ -156,7 +170,12 @@ namespace greentread
       std::complex<double>
       residue(unsigned int k, unsigned int i, unsigned int j) const
       {
-        return is_rank_one() ? factor[k] * shapes(k, i) * shapes(k, j) : residues[k](i, j);
+        if (!is_rank_one())
+          return residues[k](i, j);
+        if (shapes_imag.size() == 0)
+          return factor[k] * shapes(k, i) * shapes(k, j);
+        return factor[k] * std::complex<double>(shapes(k, i), shapes_imag(k, i)) *
+               std::complex<double>(shapes(k, j), shapes_imag(k, j));
       }
 
       /// The model of one pair, as used by the one-point convolutions

@@ -29,6 +29,10 @@ namespace greentread
       /// psi_r^H C_phi psi_r / (2 w_r): each mode's viscous damping ratio
       /// from the cell's damping C, its diagonal in the modal basis.
       Eigen::VectorXd damping_ratio;
+      /// Psi^H C_phi Psi: the damping in the modal basis, whole (its
+      /// diagonal is 2 xi_r w_r). A damping that is not proportional
+      /// couples the modes through its off-diagonal terms.
+      Eigen::MatrixXcd modal_damping;
       /// The mass-normalised shapes psi_r over [L, I], one column each.
       Eigen::MatrixXcd shapes;
       /// How the search went: sparse solves, Krylov dimension, and the

@@ -21,6 +21,20 @@
  * degenerate Bloch waves are one real cos-type and one real sin-type mode
  * of the ring with shapes sqrt(2/N) Re a and sqrt(2/N) Im a. For k = 0 and
  * k = N/2 the problem is real and there is one mode, sqrt(1/N) a.
+ *
+ * **The damping's coupling.** A damping that is not proportional (one
+ * Rayleigh pair per layer) is not diagonal in the modes: B = Psi^H C Psi
+ * has off-diagonal terms, and ring modes with real shapes and the diagonal
+ * xi_r = B_rr / (2 w_r) leave them out. coupled_point_modes() keeps them:
+ * the modes of one wavenumber are coupled only among themselves (C does not
+ * mix wavenumbers), so the complex modes of (s^2 I + s B + W^2) x = 0, a
+ * dense problem of twice the number of Bloch modes, solved once per
+ * wavenumber, give the exact transfer within the modes' subspace. Pole l
+ * (Im l > 0, with its left vector y from the pole conj(l)) has the residue
+ * x y^H / (y^H (2 l I + B) x) in the modal coordinates; at the points, with
+ * k and N - k together, it is sum psi psi^T / (2 j w_d), w_d = Im l, with two
+ * complex shapes psi per pole (one for k = 0 and N/2). With proportional
+ * damping the shapes are real and equal the diagonal form's.
  */
 
 namespace greentread
@@ -34,8 +48,14 @@ namespace greentread
       /// and the wavenumber k (0 .. N/2) it comes from.
       Eigen::VectorXd              omega, damping_ratio;
       std::vector<unsigned int>    wavenumber;
-      /// The mass-normalised shapes at the points, [mode][point].
-      Eigen::MatrixXd shapes;
+      /// The shapes at the points, [mode][point]: mass-normalised real
+      /// shapes, or with the damping's coupling the complex shapes psi of
+      /// coupled_point_modes(), real part here and imaginary part in
+      /// shapes_imag (empty without the coupling).
+      Eigen::MatrixXd shapes, shapes_imag;
+      /// Wavenumbers where the coupling was asked for but the diagonal form
+      /// was kept (a pole near the real axis, over-critical).
+      unsigned int uncoupled = 0;
       /// Per wavenumber 0 .. N/2: the Bloch frequencies [rad/s] (each once,
       /// for the dispersion curves) and their damping ratios.
       std::vector<Eigen::VectorXd> branches, branch_damping;
@@ -54,7 +74,9 @@ namespace greentread
      * @brief The modes of the ring of @p cell up to @p search.cutoff at the
      * points of @p patch. Wavenumber k is searched by rank k mod n_ranks of
      * @p comm, and the results gathered on every rank, in the order of k,
-     * so that the result does not depend on the number of ranks.
+     * so that the result does not depend on the number of ranks. With
+     * @p couple_damping the modes are those of coupled_point_modes(),
+     * otherwise real shapes with the diagonal damping ratios.
      * @throws NumericalError on every rank if any search fails.
      */
     RingModes
@@ -62,7 +84,31 @@ namespace greentread
                const ContactPatch &patch,
                const ModeSearch   &search,
                MPI_Comm            comm,
-               bool                show_progress);
+               bool                show_progress,
+               bool                couple_damping = true);
+
+    /// One wavenumber's ring modes at the points: per mode w [rad/s], the
+    /// damping ratio and the shape (real and imaginary parts, [mode][point]).
+    struct PointModes
+    {
+      Eigen::VectorXd omega, damping_ratio;
+      Eigen::MatrixXd shapes, shapes_imag;
+      /// Whether the damping's coupling is in (false: the diagonal form).
+      bool coupled = false;
+    };
+
+    /**
+     * @brief The ring modes of one wavenumber's @p modes at the points of
+     * @p patch, with the damping's coupling (@p couple) or in the diagonal
+     * form (point_shapes() and the Bloch damping ratios). A pole with a
+     * damping ratio of 0.99 or more, or one whose conjugate is not found,
+     * falls back to the diagonal form for the whole wavenumber.
+     */
+    PointModes
+    coupled_point_modes(const BlochModes   &modes,
+                        const PeriodicCell &cell,
+                        const ContactPatch &patch,
+                        bool                couple);
 
     /**
      * @brief The real ring modes that one Bloch wavenumber's @p modes give
