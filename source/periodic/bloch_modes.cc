@@ -19,16 +19,19 @@ namespace greentread
       using Dense = Eigen::MatrixXcd;
 
       /**
-       * The growing M-orthonormal basis V (with MV = M V kept for the inner
-       * products), stored in preallocated columns.
+       * The growing M-orthonormal basis V, with MV = M V kept for the inner
+       * products and H = V^H K V grown with it (the Rayleigh-Ritz matrix),
+       * stored in preallocated columns.
        */
       class Basis
       {
       public:
-        Basis(const SparseComplex &M_, const Eigen::Index capacity)
-          : M(M_)
+        Basis(const SparseComplex &K_, const SparseComplex &M_, const Eigen::Index capacity)
+          : K(K_)
+          , M(M_)
           , V(M_.rows(), capacity)
           , MV(M_.rows(), capacity)
+          , H(capacity, capacity)
         {}
 
         Eigen::Index
@@ -51,48 +54,94 @@ namespace greentread
         {
           return MV.leftCols(m);
         }
+        /// V^H K V, Hermitian.
+        auto
+        projected_stiffness() const
+        {
+          return H.topLeftCorner(m, m);
+        }
 
         /// Add the part of X that is M-orthogonal to the basis, as
         /// M-orthonormal columns; directions already in the basis (to
-        /// round-off) are dropped. Returns the number added.
+        /// round-off) are dropped. Block classical Gram-Schmidt, twice
+        /// ("twice is enough" while the block keeps more than about 1e-6 of
+        /// its size), then the block made orthonormal by its Gram matrix's
+        /// eigenvectors. If the passes cancelled more than that, or the
+        /// orthonormalisation amplified a weak direction by more than 1e4
+        /// (and its error against the basis with it), once more against
+        /// the basis and within itself. All block products: the basis, tens
+        /// of megabytes, does not stay in cache, and each pass reads it
+        /// once. Returns the number added.
         Eigen::Index
         add(Dense X)
         {
-          const Eigen::Index room = capacity() - m;
+          const double before = X.norm();
           for (int pass = 0; pass < 2; ++pass)
-            if (m > 0)
-              X -= vectors() * (mass_times_vectors().adjoint() * X);
-          // Within the block: the Gram matrix's eigenvectors, scaled.
-          const Dense G = X.adjoint() * (M * X);
-          const Eigen::SelfAdjointEigenSolver<Dense> eigen(0.5 * (G + G.adjoint()));
-          const double largest = eigen.eigenvalues().maxCoeff();
-          Eigen::Index added   = 0;
-          for (Eigen::Index j = G.cols() - 1; j >= 0 && added < room; --j)
+            project_out(X);
+          const bool cancelled = !(X.norm() > 1e-6 * before);
+          // Directions below 1e-10 of the block's largest are round-off;
+          // after a third pass, below 1e-8 of their unit size they were in
+          // the basis already.
+          Dense      MX;
+          const bool weak = orthonormal(X, MX, 1e-20, false) < 1e-8 || cancelled;
+          if (weak)
             {
-              const double lambda = eigen.eigenvalues()(j);
-              if (!(lambda > 1e-20 * largest) || !(largest > 0.))
-                break;
-              Eigen::VectorXcd v = X * eigen.eigenvectors().col(j) / std::sqrt(lambda);
-              // One more pass against everything kept (the block's own
-              // columns included), then normalise.
-              for (int pass = 0; pass < 2; ++pass)
-                if (m > 0)
-                  v -= vectors() * (mass_times_vectors().adjoint() * v);
-              Eigen::VectorXcd Mv   = M * v;
-              const double     norm = std::sqrt(std::abs(v.dot(Mv)));
-              if (!(norm > 1e-8))
-                continue;
-              V.col(m)  = v / norm;
-              MV.col(m) = Mv / norm;
-              ++m;
-              ++added;
+              project_out(X);
+              orthonormal(X, MX, 1e-16, true);
             }
+          const Eigen::Index added = std::min<Eigen::Index>(X.cols(), capacity() - m);
+          if (added == 0)
+            return 0;
+          const Dense KX          = K * X.leftCols(added);
+          V.middleCols(m, added)  = X.leftCols(added);
+          MV.middleCols(m, added) = MX.leftCols(added);
+          // The new columns of H, and its new rows by symmetry.
+          H.block(0, m, m + added, added) = V.leftCols(m + added).adjoint() * KX;
+          H.block(m, 0, added, m)         = H.block(0, m, m, added).adjoint();
+          const Dense corner              = H.block(m, m, added, added);
+          H.block(m, m, added, added)     = 0.5 * (corner + corner.adjoint());
+          m += added;
           return added;
         }
 
       private:
-        const SparseComplex &M;
-        Dense                V, MV;
+        void
+        project_out(Dense &X) const
+        {
+          if (m > 0 && X.cols() > 0)
+            X -= vectors() * (mass_times_vectors().adjoint() * X);
+        }
+
+        /// Replace @p X by M-orthonormal columns spanning it, strongest
+        /// first, without the directions whose squared M-norm is below
+        /// @p drop times the largest (or times 1, @p absolute, for columns
+        /// of unit size), and set @p MX = M X. Returns the smallest kept
+        /// squared norm over the largest (1 if none is kept).
+        double
+        orthonormal(Dense &X, Dense &MX, const double drop, const bool absolute) const
+        {
+          MX = M * X;
+          if (X.cols() == 0)
+            return 1.;
+          const Dense G = X.adjoint() * MX;
+          const Eigen::SelfAdjointEigenSolver<Dense> eigen(0.5 * (G + G.adjoint()));
+          const Eigen::VectorXd &lambda    = eigen.eigenvalues();
+          const Eigen::Index     n         = G.cols();
+          const double           largest   = lambda(n - 1);
+          const double           threshold = drop * (absolute ? 1. : largest);
+          Eigen::Index           keep      = 0;
+          while (keep < n && largest > 0. && lambda(n - 1 - keep) > threshold)
+            ++keep;
+          Dense U(n, keep);
+          for (Eigen::Index j = 0; j < keep; ++j)
+            U.col(j) = eigen.eigenvectors().col(n - 1 - j) / std::sqrt(lambda(n - 1 - j));
+          X  = X * U;
+          MX = MX * U;
+          return keep > 0 ? lambda(n - keep) / largest : 1.;
+        }
+
+        const SparseComplex &K, &M;
+        Dense                V, MV, H;
         Eigen::Index         m = 0;
       };
 
@@ -142,7 +191,7 @@ namespace greentread
       };
       const double       norm_K = row_sum_norm(K), norm_M = row_sum_norm(M);
       const Eigen::Index n = A.rows(), b = std::min<Eigen::Index>(search.block, n);
-      Basis              basis(M, n);
+      Basis              basis(K, M, n);
       BlochModes         modes;
       modes.wavenumber = k;
 
@@ -159,7 +208,7 @@ namespace greentread
       // space that T never removes, and they swamp the Rayleigh-Ritz step.
       X = lu.solve(Dense(M * X));
       ++modes.n_solves;
-      const double wanted = std::pow(1.25 * search.cutoff, 2), kept = std::pow(search.cutoff, 2);
+      const double wanted = std::pow(1.1 * search.cutoff, 2), kept = std::pow(search.cutoff, 2);
       Eigen::Index last_first = 0, last_added = basis.add(X), next_check = 8 * b;
       while (true)
         {
@@ -167,30 +216,45 @@ namespace greentread
           if (basis.size() >= next_check || full)
             {
               // Rayleigh-Ritz on the M-orthonormal basis.
-              const Dense KV = K * basis.vectors();
-              const Dense H  = basis.vectors().adjoint() * KV;
-              const Eigen::SelfAdjointEigenSolver<Dense> ritz(0.5 * (H + H.adjoint()));
+              const Dense H = basis.projected_stiffness();
+              const Eigen::SelfAdjointEigenSolver<Dense> ritz(H);
               const Eigen::VectorXd &theta = ritz.eigenvalues();
               Eigen::Index           below = 0;
               while (below < theta.size() && theta(below) <= wanted)
                 ++below;
-              bool         converged = below < theta.size() || full;
-              double       worst     = 0.;
-              const Dense  Y         = ritz.eigenvectors().leftCols(below);
-              const Dense  VY        = basis.vectors() * Y;
-              const Dense  KY = KV * Y, MY = basis.mass_times_vectors() * Y;
-              for (Eigen::Index j = 0; j < below && converged; ++j)
+              bool   converged = below < theta.size() || full;
+              double worst     = 0.;
+              // The residual against K x (as ARPACK judges T = (K - sM)^-1 M), unless
+              // it is at rounding level: against the size of K and M, a mode far
+              // below the stiffest layer cannot do better than eps ||K|| / w^2.
+              const auto judge = [&](const Eigen::Index j, const auto &x, const auto &Kx,
+                                     const auto &Mx) {
+                const double misfit   = (Kx - theta(j) * Mx).norm();
+                const double residual = misfit / Kx.norm();
+                const double backward =
+                  misfit / ((norm_K + std::abs(theta(j)) * norm_M) * x.norm());
+                worst = std::max(worst, residual);
+                return residual <= search.tolerance ||
+                       backward <= 1e3 * std::numeric_limits<double>::epsilon();
+              };
+              // The highest wanted pair converges last: judge it alone first,
+              // and the others (block products) only once it has converged.
+              if (converged && below > 0)
                 {
-                  // The residual against K x (as ARPACK judges T = (K - sM)^-1 M), unless
-                  // it is at rounding level: against the size of K and M, a mode far
-                  // below the stiffest layer cannot do better than eps ||K|| / w^2.
-                  const double misfit   = (KY.col(j) - theta(j) * MY.col(j)).norm();
-                  const double residual = misfit / KY.col(j).norm();
-                  const double backward =
-                    misfit / ((norm_K + std::abs(theta(j)) * norm_M) * VY.col(j).norm());
-                  worst     = std::max(worst, residual);
-                  converged = residual <= search.tolerance ||
-                              backward <= 1e3 * std::numeric_limits<double>::epsilon();
+                  const Eigen::VectorXcd x = basis.vectors() * ritz.eigenvectors().col(below - 1);
+                  const Eigen::VectorXcd Kx = K * x,
+                                         Mx = basis.mass_times_vectors() *
+                                              ritz.eigenvectors().col(below - 1);
+                  converged = judge(below - 1, x, Kx, Mx);
+                }
+              Dense VY;
+              if (converged)
+                {
+                  const Dense Y = ritz.eigenvectors().leftCols(below);
+                  VY            = basis.vectors() * Y;
+                  const Dense KY = K * VY, MY = basis.mass_times_vectors() * Y;
+                  for (Eigen::Index j = 0; j < below && converged; ++j)
+                    converged = judge(j, VY.col(j), KY.col(j), MY.col(j));
                 }
               if (converged)
                 {
@@ -223,11 +287,11 @@ namespace greentread
                                      std::to_string(basis.size()) +
                                      " vectors (worst relative residual " +
                                      format_short(worst) + ")");
-              next_check = basis.size() + std::max<Eigen::Index>(4 * b, basis.size() / 4);
+              next_check = basis.size() + std::max<Eigen::Index>(4 * b, basis.size() / 10);
             }
           // The next block: T applied to the last block added.
-          const Dense last = basis.vectors().middleCols(last_first, last_added);
-          const Dense Y    = lu.solve(Dense(M * last));
+          const Dense Y =
+            lu.solve(Dense(basis.mass_times_vectors().middleCols(last_first, last_added)));
           ++modes.n_solves;
           last_first = basis.size();
           last_added = basis.add(Y);

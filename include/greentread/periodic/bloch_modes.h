@@ -65,9 +65,15 @@ namespace greentread
      * modes are, also when M is singular: mass moved off the contact
      * surface leaves its DoFs massless), s = -(cutoff / 20)^2
      * (K_phi - s M_phi is positive definite, even for an unheld cell),
-     * kept M-orthonormal by two passes of block
-     * Gram-Schmidt, is grown until every Ritz pair up to 1.25 times the
-     * cut-off (and at least one beyond it) has converged. The sparse
+     * kept M-orthonormal by block Gram-Schmidt (two passes, a third where
+     * they cancel), is grown until every Ritz pair up to 1.1 times the
+     * cut-off (and at least one beyond it) has converged: Ritz values are
+     * upper bounds of the eigenvalues in order, and shift-invert converges
+     * the modes nearest the shift first, so a mode below the cut-off cannot
+     * be missing once those above it have converged (the margin covers a
+     * pair straddling the cut-off). V^H K V grows with the basis, and the
+     * convergence is judged every 10% of growth, on the highest wanted Ritz
+     * pair first (it converges last), then on all of them. The sparse
      * factorisation is the Bloch solver's (supernodal LU with COLAMD), one
      * per wavenumber. Spectra and ARPACK's symmetric drivers are real only,
      * and the real form of twice the size repeats every eigenvalue, so this
