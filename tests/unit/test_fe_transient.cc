@@ -133,12 +133,15 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
   // alike) the contact nodes are a massless Kelvin-Voigt layer (their beta K
   // damping stays), which the modes' residual carries as G_r / (1 + j w
   // beta_r), beta_r fitted to the Green's functions' lines to 5 kHz. At one
-  // and half a road step, the modes to 16 kHz and the reference: step
-  // compliances within 5% (measured 2.7% at both: the reference integrates
-  // the layer by the trapezoidal rule, the recursion exactly), every band of
-  // the total force within 1 dB, the mean force within 1%, the largest force
-  // difference within 25% of the peak (measured 3.4 to 6.5%), and the rms
-  // force difference smaller at the smaller step (3.9 -> 2.7%, 4.4 -> 3.9%).
+  // and half a road step, the coupled modes to 16 kHz against the reference:
+  // every band of the total force within 0.5 dB (measured 0.07 to 0.26 dB),
+  // the rms force difference within 5% of the fluctuation (1.8 to 4.6%) and
+  // smaller at the smaller step, the largest force difference within 10% of
+  // the peak (2.9 to 7.2%), the mean force within 1%; the step compliances
+  // within 7.5% (measured 4.1% and 5.0%: the residual relaxes in one beta_r
+  // for every layer, 7.46 us, where the reference's layer has the tread's
+  // own beta; before the modes were coupled the fitted beta_r absorbed part
+  // of the coupling's error and happened to land nearer, 2.7%).
   analysis::TransientCaseSetup setup = coarse_case(false);
   setup.distance                     = 0.1;
   setup.surface_mass_inward          = true;
@@ -168,9 +171,10 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
                                   << d.stress_band << " dB (stress); mean force "
                                   << mean(fast.force) << " N against " << mean(reference.force)
                                   << " N");
-          BOOST_TEST(mismatch < 0.05);
-          BOOST_TEST(d.force_band < 1.);
-          BOOST_TEST(d.force < 0.25);
+          BOOST_TEST(mismatch < 0.075);
+          BOOST_TEST(d.force_band < 0.5);
+          BOOST_TEST(d.force < 0.10);
+          BOOST_TEST(d.force_rms < 0.05);
           BOOST_TEST(std::abs(mean(fast.force) / mean(reference.force) - 1.) < 0.01);
         }
       BOOST_TEST(rms[1] < rms[0]);
