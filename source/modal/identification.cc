@@ -3,6 +3,7 @@
 #include <greentread/base/progress.h>
 #include <greentread/modal/identification.h>
 #include <greentread/modal/lsce.h>
+#include <greentread/modal/pole_polish.h>
 
 #include <deal.II/base/multithread_info.h>
 
@@ -449,10 +450,39 @@ namespace greentread
       while (!(errors[n] <= result.best_error + parameters.order_tolerance))
         ++n;
       result.n_modes = n;
-      const std::vector<unsigned int> chosen(ranking.begin(), ranking.begin() + n);
+      std::vector<unsigned int> chosen(ranking.begin(), ranking.begin() + n);
       result.model = fit.model_of(fit.coefficients_of(n), chosen, result.lower_residual,
                                   result.upper_residual);
       result.error = modal_error(frf, result.model, result.lower_residual, result.upper_residual);
+      if (parameters.polish_poles && n > 0)
+        {
+          // The chosen poles refined against every line (modal/pole_polish.h),
+          // kept if E of Eq. (50) falls.
+          std::vector<PolishPole> given;
+          for (const unsigned int m : chosen)
+            given.push_back({poles[m].lambda, poles[m].real});
+          const auto refined = polish_poles(frf, given, parameters.lower_residual,
+                                            parameters.upper_residual, result.polish);
+          std::vector<Pole> moved;
+          for (const auto &p : refined)
+            moved.push_back({p.lambda, p.real});
+          const ResidueFit          again(frf, moved, parameters.residue_model,
+                                 parameters.lower_residual, parameters.upper_residual);
+          std::vector<unsigned int> all(moved.size());
+          std::iota(all.begin(), all.end(), 0u);
+          double     lower = 0., upper = 0.;
+          const auto model = again.model_of(again.solve_all(), all, lower, upper);
+          const double e   = modal_error(frf, model, lower, upper);
+          if (e < result.error)
+            {
+              result.model          = model;
+              result.error          = e;
+              result.lower_residual = lower;
+              result.upper_residual = upper;
+              poles                 = moved;
+              chosen                = all;
+            }
+        }
 
       if (parameters.compare_models)
         {

@@ -233,6 +233,10 @@ namespace greentread
         IdentificationParameters poles_only = identification;
         poles_only.upper_residual           = true;
         poles_only.compare_models           = false;
+        // LSCE's poles as found: refined poles of different reference
+        // functions can land within a residue column of each other, and
+        // the patch model's shared least squares then loses rank.
+        poles_only.polish_poles = false;
         double worst_error                  = 0.;
         for (const auto &frf : sources)
           {

@@ -171,7 +171,11 @@ BOOST_AUTO_TEST_CASE(modes_above_f_max)
   // Three modes in the band and two above it, with residues of the same size
   // (mass-normalised modes): the band's modes are found exactly, none is
   // invented above f_max, and the remainder of the others, nearly a
-  // constant stiffness in the band, is what an upper residual takes.
+  // constant stiffness in the band, is what an upper residual takes. LSCE
+  // alone finds the band's poles exactly (to 1e-6); the refinement of the
+  // poles fits them to the lines with the residual term, which is only
+  // nearly constant, so it moves them by up to 1e-4 (measured 7.3e-5) for a
+  // lower E.
   ModalModel in_band, truth;
   add_mode(in_band, 500., 0.02, 1e3);
   add_mode(in_band, 1500., 0.02, -2e3);
@@ -182,19 +186,23 @@ BOOST_AUTO_TEST_CASE(modes_above_f_max)
   const auto frf = modal::sample(truth, 4., 1001);
   double     error[2];
   for (const bool upper : {false, true})
+    for (const bool refine : {false, true})
     {
       auto p           = parameters(60);
       p.upper_residual = upper;
+      p.polish_poles   = refine;
       const auto id    = modal::identify(frf, p);
       double     pe, re;
       match(in_band, id.model, pe, re);
-      BOOST_TEST_MESSAGE("upper residual " << upper << ": N_m = " << id.n_modes << ", pole error "
-                                           << pe << ", E = " << id.error << ", U = "
+      BOOST_TEST_MESSAGE("upper residual " << upper << (refine ? ", refined" : ", LSCE alone")
+                                           << ": N_m = " << id.n_modes << ", pole error " << pe
+                                           << ", E = " << id.error << ", U = "
                                            << id.upper_residual);
-      error[upper] = id.error;
-      BOOST_TEST_CONTEXT("upper residual " << upper)
+      if (refine)
+        error[upper] = id.error;
+      BOOST_TEST_CONTEXT("upper residual " << upper << ", refined " << refine)
       {
-        BOOST_TEST(pe < 1e-6);
+        BOOST_TEST(pe < (refine ? 1e-4 : 1e-6));
         BOOST_TEST(id.error < 0.05);
         for (const auto &t : id.model.terms())
           BOOST_TEST(std::abs(t.lambda.imag()) / (2. * M_PI) < 4000.);
@@ -232,6 +240,61 @@ BOOST_AUTO_TEST_CASE(noise_at_40_dB)
   // The fit is about as good as the truth itself on these noisy data.
   BOOST_TEST(id.error < 1.5 * modal::modal_error(frf, truth));
   check_stable(id);
+}
+
+BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
+{
+  // Measured FRFs are noisy: the fit must describe the structure, not the
+  // noise. Seven modes, two pairs of them closer than their half-power
+  // bandwidths (900 / 925 Hz and 2200 / 2240 Hz at 2-3% damping, so they
+  // overlap), residues of both signs, at 40 dB SNR (complex Gaussian noise
+  // at 1% of the rms of |g|), over ten noise draws: E of Eq. (50) of the
+  // identified model against the clean FRF at most 10%, and every pole
+  // stable, the close pairs' poles within 1%. LSCE alone, without the
+  // refinement of the poles (modal/pole_polish.h), missed the pairs in 4 draws
+  // of 10 (E against the truth up to 13.8%); with it, 0.25 to 0.71%.
+  ModalModel truth;
+  add_mode(truth, 310., 0.02, 2e3);
+  add_mode(truth, 900., 0.025, 4e3);
+  add_mode(truth, 925., 0.025, -2.5e3);
+  add_mode(truth, 1500., 0.03, 5e3);
+  add_mode(truth, 2200., 0.02, 6e3);
+  add_mode(truth, 2240., 0.02, 4e3);
+  add_mode(truth, 3300., 0.03, 8e3);
+  const auto clean = modal::sample(truth, 4., 1001);
+  double     rms   = 0.;
+  for (const auto &v : clean.values)
+    rms += std::norm(v);
+  rms = std::sqrt(rms / clean.values.size());
+  double worst = 0., worst_unrefined = 0., worst_pole = 0.;
+  for (unsigned int draw = 0; draw < 10; ++draw)
+    {
+      auto                             noisy = clean;
+      std::mt19937                     random(100 + draw);
+      std::normal_distribution<double> noise(0., 0.01 * rms / std::sqrt(2.));
+      for (auto &v : noisy.values)
+        v += std::complex<double>(noise(random), noise(random));
+      auto refined         = parameters(60);
+      refined.polish_poles = true;
+      const auto   plain   = modal::identify(noisy, parameters(60));
+      const auto   id      = modal::identify(noisy, refined);
+      const double against   = modal::modal_error(clean, id.model);
+      double       pe, re;
+      match(truth, id.model, pe, re);
+      worst           = std::max(worst, against);
+      worst_pole      = std::max(worst_pole, pe);
+      worst_unrefined = std::max(worst_unrefined, modal::modal_error(clean, plain.model));
+      BOOST_TEST_MESSAGE("close modes, 40 dB, draw "
+                         << draw << ": N_m = " << id.n_modes << ", E against the noisy data "
+                         << id.error << ", against the clean truth " << against
+                         << " (LSCE alone " << modal::modal_error(clean, plain.model)
+                         << "), pole error " << pe << ", refinement "
+                         << id.polish.iterations << " iterations");
+      check_stable(id);
+    }
+  BOOST_TEST(worst < 0.10);
+  BOOST_TEST(worst_pole < 0.01);
+  BOOST_TEST(worst < worst_unrefined);
 }
 
 BOOST_AUTO_TEST_CASE(pure_noise_is_reported_as_a_poor_fit)

@@ -2,6 +2,7 @@
 
 #include <greentread/convolution/modal_model.h>
 #include <greentread/modal/frequency_response.h>
+#include <greentread/modal/pole_polish.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -51,6 +52,10 @@ namespace greentread
       bool         compare_models            = true;
       bool         lower_residual            = false;
       bool         upper_residual            = false;
+      /// Refine the chosen poles against every line (modal/pole_polish.h),
+      /// kept if E falls ('Identification/Pole refinement'): for noisy
+      /// (measured) FRFs; it costs about a hundred times LSCE's time.
+      bool polish_poles = false;
       double       stability_frequency       = 0.01;
       double       stability_damping         = 0.05;
       double       band_edge                 = 0.98;
@@ -107,6 +112,9 @@ namespace greentread
       PoleCounts   poles;
       /// Residual terms (zero when not asked for): lower -L/w^2, upper U [m/N].
       double lower_residual = 0., upper_residual = 0.;
+      /// The poles' refinement, when asked (the misfits are equal when it
+      /// did not lower E and LSCE's poles were kept).
+      PolishReport polish;
     };
 
     /**
