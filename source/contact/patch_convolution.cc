@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/patch_convolution.h>
+#include <greentread/contact/shape_kernels.h>
 #include <greentread/convolution/exponential_integrals.h>
 
 #include <deal.II/base/thread_management.h>
@@ -165,7 +166,7 @@ namespace greentread
             }
           hr = hi = Eigen::VectorXd::Zero(model.shapes.rows());
           uv      = Eigen::MatrixXd::Zero(n_p, 2);
-          loads.resize(n_p, 4);
+          loads_t.resize(4, n_p);
         }
 
         void
@@ -202,7 +203,7 @@ namespace greentread
               history(u, v);
             }
           for (unsigned int g = 0; g < 4; ++g)
-            loads.col(g) = load.component[g];
+            loads_t.row(g) = load.component[g].transpose();
           const Eigen::Index m = hr.size(), half = m / 2;
           if (threads > 1 && half > 64)
             {
@@ -246,13 +247,17 @@ namespace greentread
         sweep(const Eigen::Index begin, const Eigen::Index end, Eigen::MatrixXd &out)
         {
           const Eigen::Index block = 128 / stride;
-          Eigen::MatrixXd    forces(stride * block, 4), weights(stride * block, 2);
-          out.setZero(n_p, 2);
+          // Row-major, as the kernels read them: forces [row][g], weights [row][c].
+          Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> forces(stride * block, 4);
+          Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> weights(stride * block, 2);
+          // [c][p]: u then v.
+          Eigen::Matrix<double, 2, Eigen::Dynamic, Eigen::RowMajor> sum =
+            Eigen::Matrix<double, 2, Eigen::Dynamic, Eigen::RowMajor>::Zero(2, n_p);
           for (Eigen::Index b = begin; b < end; b += block)
             {
               const Eigen::Index rows = std::min(block, end - b);
-              const auto         phi  = shapes.middleRows(stride * b, stride * rows);
-              forces.topRows(stride * rows).noalias() = phi * loads;
+              const double      *phi  = shapes.data() + stride * b * n_p;
+              modal_forces(phi, stride * rows, n_p, loads_t.data(), forces.data());
               for (Eigen::Index r = 0; r < rows; ++r)
                 {
                   const Eigen::Index k = b + r;
@@ -275,8 +280,9 @@ namespace greentread
                       weights(2 * r + 1, 1) = -v.imag();
                     }
                 }
-              out.noalias() += phi.transpose() * weights.topRows(stride * rows);
+              add_weighted_shapes(phi, stride * rows, n_p, weights.data(), sum.data());
             }
+          out = sum.transpose();
         }
 
         unsigned int threads;
@@ -288,7 +294,9 @@ namespace greentread
         std::vector<std::complex<double>>                                     lambda;
         // The states of the next history, h = e^{lambda dt} s, and its u, v.
         Eigen::VectorXd hr, hi;
-        Eigen::MatrixXd uv, loads;
+        Eigen::MatrixXd uv;
+        // The step's four load vectors, one row each, as modal_forces() reads them.
+        Eigen::Matrix<double, 4, Eigen::Dynamic, Eigen::RowMajor> loads_t;
         bool            history_ready = false;
       };
 
