@@ -20,14 +20,15 @@ namespace greentread
       prm.enter_subsection("Patch model");
       {
         prm.declare_entry(
-          "Source", "identified", dealii::Patterns::Selection("identified|fe modes"),
+          "Source", "fe modes", dealii::Patterns::Selection("identified|fe modes"),
           "Where the patch model comes from. 'identified': the paper's path, LSCE poles "
           "found on reference functions and the residues of every pair fitted to the Green's "
           "functions (Appendix A; the entries below). 'fe modes': the ring's own modes, "
           "computed per circumferential wavenumber from the cell (Bloch eigenproblem of "
           "K + Kp and M), g(w) = G_r + sum_k phi_k phi_k^T / (w_k^2 - w^2 + 2 j xi_k w_k w) "
           "with the static residual G_r = G(0) - sum_k phi_k phi_k^T / w_k^2; exact up to "
-          "the cut-off, passive, and rank one per mode (saved as modal_model.h5).");
+          "the cut-off, passive, and rank one per mode (saved as modal_model.h5; the "
+          "default).");
         prm.declare_entry("Mode cutoff", "8000", RangePattern::positive("Hz"),
                           "'fe modes': the ring's modes with a natural frequency up to this "
                           "are kept; those above it enter through the static residual G_r "

@@ -49,13 +49,13 @@ namespace greentread
         prm.declare_entry("Points across", "12", dealii::Patterns::Integer(1, 1000),
                           "N_y, contact points across y. Section 5.2: 12.");
         prm.declare_entry(
-          "Point load", "node", dealii::Patterns::Selection("node|tributary area"),
+          "Point load", "tributary area", dealii::Patterns::Selection("node|tributary area"),
           "What a unit force at a contact point is. 'node': a radial force on one tread "
           "node, the points on a whole stride of nodes nearest the spacing asked (the "
           "paper's; singular in 3D elasticity, so the driving point grows as the mesh is "
           "refined). 'tributary area': a uniform radial traction 1 / A over the point's "
           "rectangle L_c / N_x x l_c / N_y, the response the mean radial displacement over "
-          "it; the points exactly on the grid asked, on any mesh.");
+          "it; the points exactly on the grid asked, on any mesh (the default).");
         prm.declare_entry("Pairs", "auto", dealii::Patterns::Anything(),
                           "The g_ij written as green_<i>_<j>.csv and plotted: 'auto' (the "
                           "driving point p = (N_x/2) N_y + N_y/2 nearest the patch centre, and "
