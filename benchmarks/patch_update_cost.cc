@@ -104,8 +104,8 @@ main(int argc, char **argv)
       csv << "points,form,modes,ms_per_step,mb_per_step,gflop_per_step,gflops,peak_fraction,"
              "difference\n";
       const std::vector<std::array<unsigned int, 2>> grids =
-        options.quick ? std::vector<std::array<unsigned int, 2>>{{10, 12}, {20, 24}} :
-                        std::vector<std::array<unsigned int, 2>>{{10, 12}, {20, 24}, {40, 48}};
+        options.quick ? std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}} :
+                        std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}, {{40, 48}}};
       for (const auto &[nx, ny] : grids)
         {
           const unsigned int P     = nx * ny;

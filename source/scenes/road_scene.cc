@@ -148,7 +148,6 @@ namespace greentread
       const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
       const fs::path                       h5        = directory / "green_functions.h5";
       const modal::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
-      const unsigned int                   n_p       = G.n_points();
 
       // Stage 4: modal, the patch model (saved too).
       const modal::PatchModel model = modal_stage(G, green_key, directory, record);

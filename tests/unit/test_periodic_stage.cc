@@ -109,7 +109,7 @@ namespace
           for (const auto &node : nodes)
             if (node.position.distance(Point<3>(d.radius * c, d.radius * s, d.axial)) < 1e-9)
               {
-                load[p].push_back({{free[node.dofs[0]], free[node.dofs[1]]}, {{c, s}}, e.weight});
+                load[p].push_back({{{free[node.dofs[0]], free[node.dofs[1]]}}, {{c, s}}, e.weight});
                 found = true;
               }
           BOOST_REQUIRE(found);
