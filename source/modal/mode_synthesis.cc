@@ -216,7 +216,6 @@ namespace greentread
             const std::lock_guard<std::mutex> lock(mutex);
             if (failure.empty())
               failure = e.what();
-            done = L;
           }
       };
       base::run_on_threads(n_threads, work, done, L, nullptr, [] { return false; });
