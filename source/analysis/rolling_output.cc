@@ -168,19 +168,26 @@ namespace greentread
 
     RunOutput::RunOutput(const std::filesystem::path &directory_, const std::string &run_,
                          const PatchLattice &lattice_, const double speed_,
-                         const double tributary_, const unsigned int n_steps_,
-                         const unsigned int n_frames, const base::ParameterRecord &record_)
+                         const double tributary_, const Eigen::VectorXd &reporting_,
+                         const unsigned int n_steps_, const unsigned int n_frames,
+                         const base::ParameterRecord &record_)
       : directory(directory_)
       , run(run_)
       , lattice(lattice_)
       , speed(speed_)
       , tributary(tributary_)
+      , reporting(reporting_)
       , n_steps(n_steps_)
       , frame_every(std::max(1u, n_steps_ / n_frames))
       , record(record_)
       , history(directory_ / ("history_" + run_ + ".csv"))
     {
+      if (static_cast<std::size_t>(reporting.size()) != lattice.points.size())
+        throw InputError("rolling output: " + std::to_string(reporting.size()) +
+                         " reporting weights for " + std::to_string(lattice.points.size()) +
+                         " points");
       centre.reserve(n_steps);
+      force.reserve(n_steps);
       auto &ho = history.stream();
       ho.precision(8);
       ho << "# time histories at the points with x0 nearest 0 (i_x = " << lattice.centre / lattice.ny
@@ -200,7 +207,8 @@ namespace greentread
       const unsigned int n = step.step;
       const double       t = step.time;
       stress               = step.force / tributary;
-      centre.push_back(stress[lattice.centre]);
+      centre.push_back(reporting.dot(stress));
+      force.push_back(step.force.sum());
       auto &ho = history.stream();
       ho << t << ',' << speed * t << ',' << step.force.sum();
       for (const auto p : lattice.middle_row)
@@ -279,73 +287,87 @@ namespace greentread
                   const double stress_reference, const double f_max,
                   const base::ParameterRecord &record)
     {
-      // Stage analysis: the spectra per road (speeds) and per speed (roads).
-      {
-        base::AtomicFile f(directory / "spectra.csv");
+      // Stage analysis: the spectra per road (speeds) and per speed (roads),
+      // of the stress at the patch centre and of the total force.
+      const auto write_csv = [&](const std::string &name, const std::string &what,
+                                 const BandSpectrum RunSpectrum::*which) {
+        base::AtomicFile f(directory / name);
         auto            &o = f.stream();
-        o << "# one-third-octave levels L_f = 20 log10(sigma_rms / sigma0) of the contact stress "
-             "at the patch centre, sigma0 = " << stress_reference
-          << " Pa; IEC 61260-1 base-10 bands; the Green's functions end at "
-          << format_number(f_max) << " Hz\nroad,speed_kmh,band_Hz,level_dB\n";
+        o << "# one-third-octave levels " << what << "; IEC 61260-1 base-10 bands; the Green's "
+          << "functions end at " << format_number(f_max) << " Hz\nroad,speed_kmh,band_Hz,level_dB\n";
         for (const auto &r : results)
-          for (std::size_t b = 0; b < r.spectrum.bands.size(); ++b)
-            o << r.road << ',' << r.speed_kmh << ',' << r.spectrum.bands[b].nominal << ','
-              << r.spectrum.level[b] << '\n';
+          for (std::size_t b = 0; b < (r.*which).bands.size(); ++b)
+            o << r.road << ',' << r.speed_kmh << ',' << (r.*which).bands[b].nominal << ','
+              << (r.*which).level[b] << '\n';
         record.write_comments(o);
         f.commit();
-      }
+      };
+      write_csv("spectra.csv",
+                "L_f = 20 log10(sigma_rms / sigma0) of the contact stress at the patch centre "
+                "(the mean over the reporting cell), sigma0 = " +
+                  format_number(stress_reference) + " Pa",
+                &RunSpectrum::spectrum);
+      write_csv("spectra_force.csv",
+                "L_F = 20 log10(F_rms / 1 N) of the total contact force", &RunSpectrum::force_spectrum);
       const auto plot_spectra = [&](const std::filesystem::path &png, const std::string &title,
+                                    const std::string &kind, const std::string &ylabel,
                                     const std::function<bool(const RunSpectrum &)> &take) {
         std::string plot;
         for (const auto &r : results)
           if (take(r))
             plot += (plot.empty() ? "plot " : ", ") +
-                    base::gnuplot_quote(directory / ("spectrum_" + road_label(r.road) + "_" +
+                    base::gnuplot_quote(directory / (kind + road_label(r.road) + "_" +
                                                      speed_label(r.speed_kmh) + ".csv")) +
                     " skip 2 using 1:6 with linespoints lw 2 title '" + road_label(r.road) + ", " +
                     format_number(r.speed_kmh) + " km/h'";
         base::plot_png(png,
                        "set datafile separator ','\nset datafile commentschars '#'\nset grid\n"
                        "set logscale x\nset xrange [90:5600]\nset xtics (100,200,500,1000,2000,5000)\n"
-                       "set xlabel 'one-third-octave band [Hz]'\nset ylabel 'L_f [dB re " +
-                         format_number(stress_reference) + " Pa]'\nset key left bottom\n"
-                         "set title '" + title + "'\n" + plot + "\n",
+                       "set xlabel 'one-third-octave band [Hz]'\nset ylabel '" + ylabel +
+                         "'\nset key left bottom\nset title '" + title + "'\n" + plot + "\n",
                        record);
       };
+      const std::string stress_label = "L_f [dB re " + format_number(stress_reference) + " Pa]";
       for (const auto &road_name : roads)
-        plot_spectra(directory / ("spectra_" + road_label(road_name) + ".png"),
-                     "Contact stress at the patch centre, road " + road_name + " (Figure A.14)",
-                     [&](const RunSpectrum &r) { return r.road == road_name; });
+        {
+          const auto take = [&](const RunSpectrum &r) { return r.road == road_name; };
+          plot_spectra(directory / ("spectra_" + road_label(road_name) + ".png"),
+                       "Contact stress at the patch centre, road " + road_name + " (Figure A.14)",
+                       "spectrum_", stress_label, take);
+          plot_spectra(directory / ("spectra_force_" + road_label(road_name) + ".png"),
+                       "Total contact force, road " + road_name, "spectrum_force_",
+                       "L_F [dB re 1 N]", take);
+        }
       for (const double v : speeds)
         plot_spectra(directory / ("spectra_" + speed_label(v) + ".png"),
                      "Contact stress at the patch centre, " + format_number(v) +
                        " km/h (Figure A.15)",
-                     [&](const RunSpectrum &r) { return r.speed_kmh == v; });
+                     "spectrum_", stress_label, [&](const RunSpectrum &r) { return r.speed_kmh == v; });
 
       // The band of the highest level per run: does it rise with the speed?
+      const auto summarise = [](const BandSpectrum &spectrum) {
+        std::size_t peak = 0;
+        double      power = 0., moment = 0.;
+        for (std::size_t b = 0; b < spectrum.bands.size(); ++b)
+          {
+            if (spectrum.level[b] > spectrum.level[peak])
+              peak = b;
+            const double p = spectrum.rms[b] * spectrum.rms[b];
+            power += p;
+            moment += p * std::log10(spectrum.bands[b].centre);
+          }
+        if (!(power > 0.))
+          return std::string("nothing in any band");
+        return "highest band " + format_number(spectrum.bands[peak].nominal) + " Hz (" +
+               format_printf("%.1f", spectrum.level[peak]) + " dB), spectral centroid " +
+               format_printf("%.0f", std::pow(10., moment / power)) + " Hz";
+      };
       std::cout << "Spectra (one-third octaves of the contact stress at the patch centre, dB re "
-                << format_number(stress_reference) << " Pa):\n";
+                << format_number(stress_reference) << " Pa; of the total force, dB re 1 N):\n";
       for (const auto &r : results)
-        {
-          std::size_t peak = 0;
-          double      power = 0., moment = 0.;
-          for (std::size_t b = 0; b < r.spectrum.bands.size(); ++b)
-            {
-              if (r.spectrum.level[b] > r.spectrum.level[peak])
-                peak = b;
-              const double p = r.spectrum.rms[b] * r.spectrum.rms[b];
-              power += p;
-              moment += p * std::log10(r.spectrum.bands[b].centre);
-            }
-          std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh) << " km/h: ";
-          if (power > 0.)
-            std::cout << "highest band " << format_number(r.spectrum.bands[peak].nominal) << " Hz ("
-                      << format_printf("%.1f", r.spectrum.level[peak]) << " dB), spectral centroid "
-                      << format_printf("%.0f", std::pow(10., moment / power)) << " Hz\n";
-          else
-            std::cout << "no stress at the patch centre in any band (the point never touched "
-                         "the road)\n";
-        }
+        std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
+                  << " km/h: stress " << summarise(r.spectrum) << "; force "
+                  << summarise(r.force_spectrum) << '\n';
     }
   } // namespace analysis
 } // namespace greentread

@@ -36,6 +36,16 @@ namespace greentread
 
 
 
+    double
+    lcp_matrix_norm(const Eigen::MatrixXd &M)
+    {
+      if (!M.allFinite())
+        throw NumericalError("solve_lcp: the matrix M contains NaN or inf");
+      return M.rows() > 0 ? M.cwiseAbs().rowwise().sum().maxCoeff() : 0.;
+    }
+
+
+
     LcpResult
     solve_lcp(const Eigen::MatrixXd &M,
               const Eigen::VectorXd &q,
@@ -54,8 +64,9 @@ namespace greentread
       if (!(options.tolerance >= 0.) || !std::isfinite(options.tolerance))
         throw InputError("solve_lcp: tolerance = " + format_number(options.tolerance) +
                          "; allowed: a finite value >= 0");
-      if (!M.allFinite())
-        throw NumericalError("solve_lcp: the matrix M contains NaN or inf");
+      if (!(options.matrix_norm >= 0.) || !std::isfinite(options.matrix_norm))
+        throw InputError("solve_lcp: matrix norm = " + format_number(options.matrix_norm) +
+                         "; allowed: 0 (computed here) or the value of lcp_matrix_norm(M)");
       if (!q.allFinite())
         throw NumericalError("solve_lcp: the vector q contains NaN or inf");
 
@@ -70,7 +81,7 @@ namespace greentread
           return result;
         }
 
-      const double m       = M.cwiseAbs().rowwise().sum().maxCoeff();
+      const double m       = options.matrix_norm > 0. ? options.matrix_norm : lcp_matrix_norm(M);
       const double q_norm  = q.lpNorm<Eigen::Infinity>();
       const double tau     = options.tolerance;
       const double epsilon = std::numeric_limits<double>::epsilon();
@@ -78,7 +89,14 @@ namespace greentread
       Eigen::VectorXd           z(n), w(n);
       std::vector<Eigen::Index> set, infeasible;
       Eigen::MatrixXd           M_AA;
-      Eigen::VectorXd           q_A;
+      Eigen::VectorXd           q_A, z_A;
+      // w = M z + q from the columns where z is not zero.
+      const auto product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+        y = q;
+        for (Eigen::Index j = 0; j < n; ++j)
+          if (x[j] != 0.)
+            y += x[j] * M.col(j);
+      };
 
       unsigned int lowest_count = n + 1;
       unsigned int tries_left   = full_exchange_tries;
@@ -104,7 +122,7 @@ namespace greentread
                 }
               const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M_AA);
               const double                               rcond = lu.rcond();
-              const Eigen::VectorXd                      z_A   = lu.solve(-q_A);
+              z_A = lu.solve(-q_A);
               if (!(rcond > epsilon) || !z_A.allFinite())
                 {
                   result.iterations = iteration;
@@ -119,8 +137,7 @@ namespace greentread
               for (Eigen::Index b = 0; b < k; ++b)
                 z[set[b]] = z_A[b];
             }
-          w.noalias() = M * z;
-          w += q;
+          product(z, w);
           scale    = std::max(q_norm, m * z.lpNorm<Eigen::Infinity>());
           result.z = z;
           result.w = w;
@@ -136,9 +153,8 @@ namespace greentread
             {
               result.iterations  = iteration;
               result.converged   = true;
-              result.z           = z.cwiseMax(0.);
-              result.w.noalias() = M * result.z;
-              result.w += q;
+              result.z = z.cwiseMax(0.);
+              product(result.z, result.w);
               scale           = std::max(q_norm, m * result.z.lpNorm<Eigen::Infinity>());
               result.residual = natural_residual(result.z, result.w, m, scale);
               return result;

@@ -15,6 +15,8 @@
 
 #include <deal.II/base/multithread_info.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -65,6 +67,7 @@ namespace greentread
       patch_model.parse_parameters(prm);
       roads.parse_parameters(prm);
       rolling.parse_parameters(prm);
+      contact_grid.parse_parameters(prm);
 
       // A texture file is read now, not after the Green's functions (five
       // minutes): a malformed file, or one too narrow or too short for the
@@ -152,31 +155,56 @@ namespace greentread
       // Stage 4: modal, the patch model (saved too).
       const modal::PatchModel model = modal_stage(G, green_key, directory, record);
 
-      // The patch lattice, the tread's own height (its curvature along x) and
-      // the structure's static compliance, which the static start uses.
-      const analysis::PatchLattice lattice(model.points, h5.string());
-      const Eigen::VectorXd        tread = contact::tread_heights(model.points);
-      const Eigen::MatrixXd        G0 = modal::static_line(G);
+      // The contact grid (the Green's functions' points, or finer with the
+      // tread's layer below them), its lattice, the tread's own height (its
+      // curvature along x) and the structure's static compliance, which the
+      // static start uses.
+      const contact::ContactGrid grid(
+        model.points, contact_grid.subdivisions,
+        {materials.tread_E, materials.tread_nu, geometry.tread_thickness});
+      if (grid.subdivisions > 1)
+        std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
+                  << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "
+                  << format_printf("%.3f", 1e3 * grid.dy) << " mm ("
+                  << grid.subdivisions << " x " << grid.subdivisions
+                  << " per Green's-function rectangle, the tread as a "
+                  << format_number(1e3 * geometry.tread_thickness) << " mm layer below it)\n";
+      const analysis::PatchLattice lattice(grid.points, h5.string());
+      const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
+      const Eigen::MatrixXd        G0    = modal::static_line(G);
       const double static_mismatch =
         (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       std::cout << "  the model's static compliance differs from the structure's by "
                 << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
+      const Eigen::MatrixXd G0_grid = grid.compliance(G0);
+      if (grid.subdivisions > 1)
+        {
+          // The local term keeps the contact points' compliance positive
+          // definite (contact/contact_grid.h); say so with the figure.
+          const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(G0_grid, Eigen::EigenvaluesOnly);
+          std::cout << "  static compliance between the contact points: smallest eigenvalue over "
+                       "its largest "
+                    << format_printf("%.2g", eigen.eigenvalues().minCoeff() /
+                                               eigen.eigenvalues().maxCoeff())
+                    << "\n";
+        }
 
       // Stages road and contact: every road at every speed.
       std::vector<analysis::RunSpectrum> spectra;
       for (const auto &road_name : roads.roads)
         {
-          const double width =
-            (lattice.ys.size() > 1 ? lattice.ys.back() - lattice.ys.front() : 0.) + 0.03;
+          // The texture's width from the patch's, not the grid's: every
+          // contact grid rolls on the same realisation.
+          const double width = green.patch.width + 0.03;
           std::cout << "Road '" << road_name << "'\n";
           const auto          file    = texture_files.find(road_name);
           const road::Texture texture =
             file != texture_files.end() ? file->second : roads.make(road_name, width);
-          const road::PatchRoad patch_road(texture, model.points, roads.sampling, road_name);
+          const road::PatchRoad patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
           for (const double speed_kmh : rolling.speeds)
-            spectra.push_back(roll(model, G0, tread, lattice, texture, patch_road, road_name,
-                                   speed_kmh, directory, record));
+            spectra.push_back(roll(model, grid, G0_grid, tread, lattice, texture, patch_road,
+                                   road_name, speed_kmh, directory, record));
         }
 
       // Stage analysis: the spectra per road (speeds) and per speed (roads).
@@ -254,6 +282,7 @@ namespace greentread
 
     analysis::RunSpectrum
     RoadContactScene::roll(const modal::PatchModel      &model,
+                           const contact::ContactGrid   &grid,
                            const Eigen::MatrixXd        &G0,
                            const Eigen::VectorXd        &tread,
                            const analysis::PatchLattice &lattice,
@@ -279,7 +308,7 @@ namespace greentread
                 << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, "
                 << n_steps << " steps, " << convolution::to_string(rolling.convolution) << '\n';
       const auto t_run = std::chrono::steady_clock::now();
-      const unsigned int n_p = model.n_points();
+      const unsigned int n_p = grid.n_points();
 
       // The road under the points, the static start and the run's set-up.
       const contact::PatchRoadHeights road_heights =
@@ -307,8 +336,8 @@ namespace greentread
       result.road  = road_name;
       result.speed = speed_kmh;
       result.steps = n_steps;
-      analysis::RunOutput output(directory, run, lattice, V, tributary, n_steps,
-                                 rolling.frames, record);
+      analysis::RunOutput output(directory, run, lattice, V, tributary, grid.reporting_weights(),
+                                 n_steps, rolling.frames, record);
       base::Progress      progress("    " + run, n_steps);
       const auto observe = [&](const contact::RollingStep &step) {
         if (!step.report.converged && result.failed_steps < 5)
@@ -320,8 +349,12 @@ namespace greentread
         if (global.print_timings)
           progress.update(step.step + 1);
       };
+      const auto convolution = contact::make_grid_convolution(
+        contact::make_patch_convolution(setup.convolution, model, dt, n_steps,
+                                        setup.direct_kernel, setup.threads),
+        grid);
       const auto summary =
-        contact::roll_patch(model, tread, road_heights, equilibrium, setup, observe);
+        contact::roll_patch(*convolution, tread, road_heights, equilibrium, setup, observe);
       result.fallback_points      = summary.fallback_points;
       result.min_contact_fraction = summary.min_contact_fraction;
       result.max_contact_fraction = summary.max_contact_fraction;
@@ -338,7 +371,12 @@ namespace greentread
         output.centre_stress(), dt, rolling.stress_reference, 100., top_band);
       analysis::write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"),
                                         result.spectrum,
-                                        "contact stress at the patch centre, Pa");
+                                        "contact stress at the patch centre (the mean over the "
+                                        "reporting cell), Pa");
+      const analysis::BandSpectrum force_spectrum =
+        analysis::third_octave_spectrum(output.total_force(), dt, 1., 100., top_band);
+      analysis::write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
+                                        force_spectrum, "total contact force, N");
       std::cout << "    mean total force " << format_printf("%.4g", result.mean_force)
                 << " N (static " << format_printf("%.4g", equilibrium.q.sum())
                 << " N), points in contact " << format_printf("%.0f", 100. * result.min_contact_fraction)
@@ -353,7 +391,7 @@ namespace greentread
                   << " ms per step\n";
 
       output.finish("Road " + road_name + ", " + format_number(speed_kmh) + " km/h");
-      return {road_name, speed_kmh, result.spectrum};
+      return {road_name, speed_kmh, result.spectrum, force_spectrum};
     }
   } // namespace scenes
 } // namespace greentread

@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/contact/contact_parameters.h>
+#include <greentread/contact/contact_grid.h>
 #include <greentread/contact/rolling_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
@@ -79,6 +80,7 @@ namespace greentread
       modal::PatchModelParameters::declare_parameters(prm);
       road::RoadTextureParameters::declare_parameters(prm);
       contact::RollingParameters::declare_parameters(prm);
+      contact::ContactGridParameters::declare_parameters(prm);
     }
 
 
@@ -96,7 +98,7 @@ namespace greentread
         return {"Geometry", "Materials", "Inflation", "Green's functions"};
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
               "Identification", "Patch model", "Road texture", "Rolling",
-              "Time stepping/Time step", "Convolution/Method"};
+              "Contact grid", "Time stepping/Time step", "Convolution/Method"};
     }
 
 

@@ -71,21 +71,32 @@ namespace greentread
       /**
        * @param[in] speed V [m/s], for the road position of each step.
        * @param[in] tributary The area of one point [m^2]: stress = force / area.
+       * @param[in] reporting The weight of each point's stress in the
+       *            reporting cell's (contact::ContactGrid::reporting_weights()).
        * @param[in] frames VTU frames written over the run.
        */
       RunOutput(const std::filesystem::path &directory, const std::string &run,
                 const PatchLattice &lattice, double speed, double tributary,
-                unsigned int n_steps, unsigned int frames, const base::ParameterRecord &record);
+                const Eigen::VectorXd &reporting, unsigned int n_steps, unsigned int frames,
+                const base::ParameterRecord &record);
 
       /// Record one step.
       void
       add(const contact::RollingStep &step);
 
-      /// The contact stress at the patch centre, step by step [Pa].
+      /// The contact stress at the patch centre, the mean over the reporting
+      /// cell, step by step [Pa].
       const std::vector<double> &
       centre_stress() const
       {
         return centre;
+      }
+
+      /// The total contact force, step by step [N].
+      const std::vector<double> &
+      total_force() const
+      {
+        return force;
       }
 
       /// Commit the history and the time series, and plot; @p title names the road and speed.
@@ -97,11 +108,12 @@ namespace greentread
       std::string                                 run;
       const PatchLattice                         &lattice;
       double                                      speed, tributary;
+      Eigen::VectorXd                             reporting;
       unsigned int                                n_steps, frame_every;
       const base::ParameterRecord                &record;
       base::AtomicFile                            history;
       std::vector<std::pair<double, std::string>> frames;
-      std::vector<double>                         centre;
+      std::vector<double>                         centre, force;
       Eigen::VectorXd                             stress;
     };
 
@@ -110,13 +122,15 @@ namespace greentread
     {
       std::string  road;
       double       speed_kmh = 0.;
-      BandSpectrum spectrum;
+      BandSpectrum spectrum;       ///< of the stress at the patch centre
+      BandSpectrum force_spectrum; ///< of the total contact force, dB re 1 N
     };
 
     /**
      * @brief spectra.csv (all levels), spectra_<road>.png (Figure A.14) and
-     * spectra_<V>kmh.png (Figure A.15), and on screen each run's highest
-     * band and spectral centroid.
+     * spectra_<V>kmh.png (Figure A.15), the total force's spectra_force.csv
+     * and spectra_force_<road>.png, and on screen each run's highest band and
+     * spectral centroid of both.
      * @param[in] stress_reference sigma_0 of the levels [Pa].
      * @param[in] f_max The Green's functions' highest line [Hz].
      */

@@ -100,6 +100,7 @@ namespace greentread
       solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, PatchLoad &load);
 
       Eigen::VectorXd                      previous_end;
+      double                               end_norm = 0.; // of psi.u[2], continuous path
       Eigen::MatrixXd                      lcp_matrix; // the last round's, iterative path
       const PatchInfluence                &psi;
       std::vector<KinematicContact>        rules;

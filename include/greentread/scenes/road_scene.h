@@ -3,6 +3,7 @@
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/rolling.h>
+#include <greentread/contact/contact_grid.h>
 #include <greentread/contact/rolling_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
@@ -54,10 +55,12 @@ namespace greentread
                   const std::filesystem::path &directory,
                   const base::ParameterRecord &record) const;
 
-      /// One run: road @p road_name at @p speed_kmh, from the static contact
-      /// (compliance @p G0), with its outputs; returns its spectrum.
+      /// One run: road @p road_name at @p speed_kmh on the contact points of
+      /// @p grid, from the static contact (compliance @p G0 between the
+      /// contact points), with its outputs; returns its spectrum.
       analysis::RunSpectrum
-      roll(const modal::PatchModel &model, const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
+      roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
+           const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
            const analysis::PatchLattice &lattice, const road::Texture &texture,
            const road::PatchRoad &patch_road, const std::string &road_name, double speed_kmh,
            const std::filesystem::path &directory, const base::ParameterRecord &record) const;
@@ -72,6 +75,7 @@ namespace greentread
       modal::PatchModelParameters        patch_model;
       road::RoadTextureParameters        roads;
       contact::RollingParameters         rolling;
+      contact::ContactGridParameters     contact_grid;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the
       /// Green's functions.

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <greentread/contact/elastic_layer.h>
+#include <greentread/contact/patch_convolution.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+/**
+ * @file
+ * A contact grid finer than the Green's functions' points, by a split of
+ * scales. Implemented in source/contact/contact_grid.cc.
+ *
+ * Each of the Green's functions' rectangles (dx x dy, the "coarse" cells) is
+ * split into s x s contact rectangles. The finite-element model resolves the
+ * tread's compliance at the coarse cells' scale, not below it; an elastic
+ * layer (greentread/contact/elastic_layer.h: the tread's rubber, its
+ * thickness, bonded to the belt) carries what lies below. With P the mean
+ * over each coarse cell spread back over its contact points, the
+ * displacement of the contact points under their forces f is
+ * \f[
+ *   u = A^T G\,A f + (I - P)\,L_f\,(I - P)\,f,
+ * \f]
+ * A the sum of the forces of each coarse cell (q = A f), G the Green's
+ * functions between the coarse cells (the patch model, with its dynamics) and
+ * L_f the layer's compliance between the contact rectangles. Nothing is
+ * counted twice: the coarse cells' mean displacements are exactly G's response
+ * to the cells' total forces, whatever the forces' distribution within the
+ * cells; the layer adds only the displacement's variation within each cell,
+ * and only in response to the force's variation within the cells. The local
+ * term is symmetric positive semidefinite (L_f is), so the contact points'
+ * instantaneous compliance stays positive definite whatever G's split
+ * between its instantaneous and its modal parts. Left out: how a force's
+ * distribution within one cell moves the mean of another (the layer's cross
+ * terms \f$P L_f (I - P)\f$; the coarse model cannot represent them, and
+ * with them the local term \f$L_f - A^T L_c A\f$ is indefinite, measured:
+ * the contact points' compliance then lost its positivity against the
+ * patch model's instantaneous part G_r). The local term is instantaneous
+ * (the tread layer's own resonances lie far above 5 kHz) and elastic (the
+ * rubber's loss factor is left out of it). With s = 1 the grid is the
+ * Green's functions' points and adds nothing.
+ */
+
+namespace greentread
+{
+  namespace contact
+  {
+    /// Subsection "Contact grid".
+    struct ContactGridParameters
+    {
+      /// Contact rectangles per Green's-function rectangle along each direction.
+      unsigned int subdivisions = 1;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * @brief The contact points of a subdivided patch and the split of the
+     * file documentation.
+     */
+    class ContactGrid
+    {
+    public:
+      /**
+       * @param[in] coarse_points The Green's functions' points, a lattice
+       *            (any order); their third coordinate, the tread's radius,
+       *            is kept.
+       * @param[in] subdivisions s >= 1.
+       * @param[in] layer The tread as a layer (used when s > 1).
+       * @throws InputError if the points are not a lattice or s is 0.
+       */
+      ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
+                  unsigned int subdivisions, const ElasticLayer &layer);
+
+      unsigned int
+      n_points() const
+      {
+        return points.size();
+      }
+
+      /// \f$A^T M A\f$: a coarse matrix seen by the contact points.
+      Eigen::MatrixXd
+      expand(const Eigen::MatrixXd &coarse) const;
+
+      /// \f$A^T v\f$: a coarse cell's value at each of its contact points.
+      Eigen::VectorXd
+      expand(const Eigen::VectorXd &coarse) const;
+
+      /// \f$A f\f$: the sum over each coarse cell.
+      Eigen::VectorXd
+      gather(const Eigen::VectorXd &fine) const;
+
+      /// The static compliance between the contact points, \f$A^T G_0 A\f$
+      /// plus the local term.
+      Eigen::MatrixXd
+      compliance(const Eigen::MatrixXd &coarse_static) const;
+
+      /**
+       * @brief The weights of the reporting cell: a coarse cell's size,
+       * centred at the patch centre (x0 = 0, y0 = 0), whatever the grid. The
+       * stress there is \f$\sum_p w_p \sigma_p\f$, the mean of the piecewise
+       * constant stress over the cell (each w_p is the area of the cell that
+       * contact rectangle p covers, over the cell's area).
+       */
+      Eigen::VectorXd
+      reporting_weights() const;
+
+      unsigned int subdivisions = 1;
+      /// The contact points, a lattice p = i_x ny + i_y, x and y increasing.
+      std::vector<std::array<double, 3>> points;
+      unsigned int                       nx = 0, ny = 0;
+      /// The contact rectangle and the coarse cell [m].
+      double dx = 0., dy = 0., coarse_dx = 0., coarse_dy = 0.;
+      /// The coarse point (index into the constructor's points) of each contact point.
+      std::vector<unsigned int> coarse_of;
+      /// \f$(I - P) L_f (I - P)\f$ [m/N]; empty when s = 1.
+      Eigen::MatrixXd local;
+
+    private:
+      unsigned int n_coarse = 0;
+    };
+
+    /**
+     * @brief The convolution of the contact points: the patch model's
+     * convolution @p coarse driven by the forces gathered per coarse cell,
+     * its history seen by each contact point, plus the local term at the end
+     * of each step. With s = 1, @p coarse itself.
+     */
+    std::unique_ptr<PatchConvolution>
+    make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid);
+  } // namespace contact
+} // namespace greentread

@@ -1,0 +1,252 @@
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/contact_grid.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace greentread
+{
+  namespace contact
+  {
+    void
+    ContactGridParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact grid");
+      prm.declare_entry("Subdivisions", "1", dealii::Patterns::Integer(1, 16),
+                        "Contact points per Green's-function rectangle along each direction: "
+                        "s splits each rectangle ('Green's functions/Patch length' / 'Points "
+                        "along' x 'Patch width' / 'Points across') into s x s contact "
+                        "rectangles. The finite-element Green's functions carry the "
+                        "compliance at the rectangles' scale, an elastic layer (the tread's "
+                        "rubber and thickness on a rigid belt) what lies below it. 1: the "
+                        "Green's functions' points (the paper's grid).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ContactGridParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact grid");
+      subdivisions = prm.get_integer("Subdivisions");
+      prm.leave_subsection();
+    }
+
+
+
+    ContactGrid::ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
+                             const unsigned int subdivisions_, const ElasticLayer &layer)
+      : subdivisions(subdivisions_)
+      , n_coarse(coarse_points.size())
+    {
+      if (subdivisions == 0)
+        throw InputError("parameter 'Contact grid/Subdivisions' = 0; allowed: 1 to 16");
+      // The coarse lattice: its distinct x and y, increasing.
+      std::vector<double> xs, ys;
+      const auto          add = [](std::vector<double> &v, const double x) {
+        if (std::none_of(v.begin(), v.end(), [&](double y) { return std::abs(x - y) < 1e-7; }))
+          v.push_back(x);
+      };
+      for (const auto &p : coarse_points)
+        {
+          add(xs, p[0]);
+          add(ys, p[1]);
+        }
+      std::sort(xs.begin(), xs.end());
+      std::sort(ys.begin(), ys.end());
+      const unsigned int cnx = xs.size(), cny = ys.size();
+      if (cnx * cny != n_coarse || cnx < 2 || cny < 2)
+        throw InputError("contact grid: the Green's functions' " + std::to_string(n_coarse) +
+                         " points are not a lattice of at least 2 x 2 (" + std::to_string(cnx) +
+                         " x " + std::to_string(cny) + ")");
+      coarse_dx = (xs.back() - xs.front()) / (cnx - 1);
+      coarse_dy = (ys.back() - ys.front()) / (cny - 1);
+      const auto index = [](const std::vector<double> &v, const double x) {
+        return static_cast<unsigned int>(
+          std::min_element(v.begin(), v.end(), [&](double a, double b) {
+            return std::abs(a - x) < std::abs(b - x);
+          }) - v.begin());
+      };
+      std::vector<unsigned int> coarse_at(n_coarse);
+      for (unsigned int c = 0; c < n_coarse; ++c)
+        coarse_at[index(xs, coarse_points[c][0]) * cny + index(ys, coarse_points[c][1])] = c;
+
+      const unsigned int s = subdivisions;
+      nx                   = s * cnx;
+      ny                   = s * cny;
+      dx                   = coarse_dx / s;
+      dy                   = coarse_dy / s;
+      points.resize(nx * ny);
+      coarse_of.resize(nx * ny);
+      for (unsigned int ix = 0; ix < nx; ++ix)
+        for (unsigned int iy = 0; iy < ny; ++iy)
+          {
+            const unsigned int c = coarse_at[(ix / s) * cny + iy / s];
+            const unsigned int p = ix * ny + iy;
+            coarse_of[p]         = c;
+            points[p]            = {{coarse_points[c][0] + ((ix % s) + 0.5 - 0.5 * s) * dx,
+                          coarse_points[c][1] + ((iy % s) + 0.5 - 0.5 * s) * dy,
+                          coarse_points[c][2]}};
+          }
+      if (s == 1)
+        return;
+
+      // The layer between the contact rectangles, on a period 4 thicknesses
+      // wider on each side than the patch, and its part that acts on and
+      // returns the variation within the coarse cells: (I - P) L_f (I - P),
+      // P the mean over each cell.
+      const double margin = 4. * layer.thickness;
+      local = layer_patch_compliance(layer, dx, dy, nx, ny, margin);
+      const auto remove_cell_means = [&](Eigen::MatrixXd &m) {
+        const double    n_cell = static_cast<double>(s) * s;
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+          m.col(j) -= expand(Eigen::VectorXd(gather(m.col(j)) / n_cell));
+      };
+      remove_cell_means(local);
+      local.transposeInPlace();
+      remove_cell_means(local);
+      local = 0.5 * (local + local.transpose()).eval();
+    }
+
+
+
+    Eigen::MatrixXd
+    ContactGrid::expand(const Eigen::MatrixXd &coarse) const
+    {
+      const unsigned int n = points.size();
+      Eigen::MatrixXd    m(n, n);
+      for (unsigned int q = 0; q < n; ++q)
+        for (unsigned int p = 0; p < n; ++p)
+          m(p, q) = coarse(coarse_of[p], coarse_of[q]);
+      return m;
+    }
+
+
+
+    Eigen::VectorXd
+    ContactGrid::expand(const Eigen::VectorXd &coarse) const
+    {
+      Eigen::VectorXd v(points.size());
+      for (unsigned int p = 0; p < points.size(); ++p)
+        v[p] = coarse[coarse_of[p]];
+      return v;
+    }
+
+
+
+    Eigen::VectorXd
+    ContactGrid::gather(const Eigen::VectorXd &fine) const
+    {
+      Eigen::VectorXd v = Eigen::VectorXd::Zero(n_coarse);
+      for (unsigned int p = 0; p < points.size(); ++p)
+        v[coarse_of[p]] += fine[p];
+      return v;
+    }
+
+
+
+    Eigen::MatrixXd
+    ContactGrid::compliance(const Eigen::MatrixXd &coarse_static) const
+    {
+      Eigen::MatrixXd m = expand(coarse_static);
+      if (local.size() > 0)
+        m += local;
+      return m;
+    }
+
+
+
+    Eigen::VectorXd
+    ContactGrid::reporting_weights() const
+    {
+      // The overlap of each contact rectangle with the cell |x| <= coarse_dx
+      // / 2, |y| <= coarse_dy / 2.
+      const auto overlap = [](const double centre, const double width, const double half) {
+        return std::max(0., std::min(centre + 0.5 * width, half) -
+                              std::max(centre - 0.5 * width, -half));
+      };
+      Eigen::VectorXd w(points.size());
+      for (unsigned int p = 0; p < points.size(); ++p)
+        w[p] = overlap(points[p][0], dx, 0.5 * coarse_dx) *
+               overlap(points[p][1], dy, 0.5 * coarse_dy) / (coarse_dx * coarse_dy);
+      return w;
+    }
+
+
+
+    namespace
+    {
+      /// The convolution of the contact points of a grid with s > 1.
+      class GridConvolution : public PatchConvolution
+      {
+      public:
+        GridConvolution(std::unique_ptr<PatchConvolution> coarse_, const ContactGrid &grid_)
+          : PatchConvolution(grid_.n_points(), coarse_->time_step())
+          , coarse(std::move(coarse_))
+          , grid(grid_)
+          , coarse_load(coarse->n_points())
+        {
+          const PatchInfluence &c = coarse->influence();
+          for (unsigned int g = 0; g < 4; ++g)
+            {
+              psi.u[g] = grid.expand(c.u[g]);
+              psi.v[g] = grid.expand(c.v[g]);
+            }
+          // The local term acts on the force at the step's end, which is
+          // continuous (linear over the step from its start value): its rate
+          // is the change over the step.
+          psi.u[2] += grid.local;
+          psi.v[2] += grid.local / dt;
+          psi.v[1] -= grid.local / dt;
+          psi.instantaneous = true;
+        }
+
+        void
+        history(Eigen::VectorXd &u, Eigen::VectorXd &v) override
+        {
+          coarse->history(uc, vc);
+          u = grid.expand(uc);
+          v = grid.expand(vc);
+        }
+
+        void
+        advance(const PatchLoad &load) override
+        {
+          for (unsigned int g = 0; g < 4; ++g)
+            coarse_load.component[g] = grid.gather(load.component[g]);
+          coarse->advance(coarse_load);
+        }
+
+        void
+        preload(const Eigen::VectorXd &q0) override
+        {
+          coarse->preload(grid.gather(q0));
+        }
+
+        std::string
+        name() const override
+        {
+          return coarse->name() + " on " + std::to_string(grid.subdivisions) + " x " +
+                 std::to_string(grid.subdivisions) + " contact points per cell";
+        }
+
+      private:
+        std::unique_ptr<PatchConvolution> coarse;
+        const ContactGrid                &grid;
+        PatchLoad                         coarse_load;
+        Eigen::VectorXd                   uc, vc;
+      };
+    } // namespace
+
+
+
+    std::unique_ptr<PatchConvolution>
+    make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid)
+    {
+      if (grid.subdivisions == 1)
+        return coarse;
+      return std::make_unique<GridConvolution>(std::move(coarse), grid);
+    }
+  } // namespace contact
+} // namespace greentread
