@@ -162,9 +162,11 @@ namespace greentread
     {
       // The overlap of each contact rectangle with the cell |x| <= coarse_dx
       // / 2, |y| <= coarse_dy / 2.
+      // (A rectangle that only touches the cell, to round-off, gets none.)
       const auto overlap = [](const double centre, const double width, const double half) {
-        return std::max(0., std::min(centre + 0.5 * width, half) -
-                              std::max(centre - 0.5 * width, -half));
+        const double o =
+          std::min(centre + 0.5 * width, half) - std::max(centre - 0.5 * width, -half);
+        return o > 1e-9 * width ? o : 0.;
       };
       Eigen::VectorXd w(points.size());
       for (unsigned int p = 0; p < points.size(); ++p)

@@ -120,7 +120,12 @@ namespace greentread
     {
       const double x = k * layer.thickness;
       if (x < table_low)
-        return c0;
+        {
+          // C - C(0) grows as (kh)^2 (17 (kh)^2 relative for nu = 0.49):
+          // quadratic from C(0) to the table's first point.
+          const double first = s[0] * half_space_factor(layer) / (table_low / layer.thickness);
+          return c0 + (first - c0) * (x / table_low) * (x / table_low);
+        }
       if (x >= table_high)
         return half_space_factor(layer) / k;
       const double       r = (std::log(x) - log_x0) / dlog;

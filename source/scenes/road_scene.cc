@@ -15,8 +15,6 @@
 
 #include <deal.II/base/multithread_info.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -177,17 +175,6 @@ namespace greentread
       std::cout << "  the model's static compliance differs from the structure's by "
                 << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
       const Eigen::MatrixXd G0_grid = grid.compliance(G0);
-      if (grid.subdivisions > 1)
-        {
-          // The local term keeps the contact points' compliance positive
-          // definite (contact/contact_grid.h); say so with the figure.
-          const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(G0_grid, Eigen::EigenvaluesOnly);
-          std::cout << "  static compliance between the contact points: smallest eigenvalue over "
-                       "its largest "
-                    << format_printf("%.2g", eigen.eigenvalues().minCoeff() /
-                                               eigen.eigenvalues().maxCoeff())
-                    << "\n";
-        }
 
       // Stages road and contact: every road at every speed.
       std::vector<analysis::RunSpectrum> spectra;

@@ -66,8 +66,9 @@ namespace greentread
     /**
      * @brief C(k) tabulated once over kh, for the many evaluations of a
      * lattice: 20,000 points, log-spaced from kh = 1e-3 to 40, linear in log kh
-     * (relative error below 1e-6 against layer_compliance()); C(0) below the
-     * table and the half-space value above it (where they differ by e^-80).
+     * (relative error below 1e-6 against layer_compliance()); below the
+     * table quadratic in k from C(0), above it the half-space's value (the
+     * two differ there by e^-80).
      */
     class LayerComplianceTable
     {

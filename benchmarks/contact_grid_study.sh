@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# The contact grid's convergence study (README, "Contact at texture scale"):
+# road-A and road-B at 90 km/h over 1.2 m on the main job's saved stages, the
+# Green's functions' 10 x 12 rectangles split into s x s contact rectangles
+# ('Contact grid/Subdivisions'), and the paper's sub-grid rule 'point' beside
+# the default 'envelope' on the coarsest and a fine grid. For each grid: the
+# run time, the points in contact, the mean force, and the largest band-level
+# difference (100 Hz to 5 kHz) of the stress at the patch centre (the mean over
+# the reporting cell) and of the total force against the next finer grid and
+# the finest; then both spectra band by band on the two finest grids.
+#
+#   bash benchmarks/contact_grid_study.sh [main job's output] [program] [runs directory] [subdivisions...]
+#
+# defaults: output/, build/greentread, a temporary directory removed at the end,
+# and subdivisions 1 2 4 6. About 12 minutes on this 2-core machine (each run
+# also checks the reused modal model against the Green's functions, about
+# 40 s).
+set -euo pipefail
+
+saved=${1:-output}
+program=${2:-build/greentread}
+keep=${3:-}
+shift $(( $# < 3 ? $# : 3 ))
+grids=("$@")
+(( ${#grids[@]} > 0 )) || grids=(1 2 4 6)
+if [[ ! -f "$saved/green_functions.h5" ]]; then
+  echo "contact_grid_study.sh: '$saved' holds no green_functions.h5: run the main job first" \
+       "(build/greentread writes output/)" >&2
+  exit 1
+fi
+if [[ ! -x "$program" ]]; then
+  echo "contact_grid_study.sh: program '$program' not found or not executable" >&2
+  exit 1
+fi
+if [[ -n "$keep" ]]; then
+  work=$keep
+  mkdir -p "$work"
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
+
+# run NAME ARGS...: both roads on a fresh copy of the saved stages.
+run() {
+  local name=$1
+  shift
+  mkdir -p "$work/$name"
+  cp "$saved"/green_functions.h5 "$work/$name"/
+  cp "$saved"/*_model.h5 "$work/$name"/ 2>/dev/null || true
+  echo "  running $name ..." >&2
+  "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" \
+    --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
+    --set "Rolling/Distance=1.2" "$@" > "$work/$name.log" 2>&1 ||
+    { echo "run $name failed:"; tail -5 "$work/$name.log"; exit 1; }
+  if (( $(grep -c "Reusing" "$work/$name.log") < 2 )); then
+    echo "run $name did not reuse both saved stages:" >&2
+    exit 1
+  fi
+}
+
+# The figures of road $2 in run $1: seconds|ms per step|points in contact|mean force.
+figures() {
+  awk -v road="$2" '
+    /run road-/ { on = index($0, "run " road "_") > 0 }
+    on && /mean total force/ {
+      match($0, /mean total force [0-9.]+/); force = substr($0, RSTART + 17, RLENGTH - 17)
+      match($0, /points in contact [0-9]+% to [0-9]+%/); contact = substr($0, RSTART + 18, RLENGTH - 18)
+    }
+    on && / ms per step/ { seconds = $1; ms = $3 }
+    END { printf "%s|%s|%s|%s", seconds, ms, contact, force }' "$work/$1.log"
+}
+
+# Largest |level difference| [dB] between runs $1 and $2, road $3, spectrum
+# kind $4 (spectrum_ or spectrum_force_), and the band where it is.
+difference() {
+  awk -F, '
+    FNR == 1 { file++ }
+    /^[0-9]/ { if (file == 1) a[$1] = $6; else b[$1] = $6 }
+    END {
+      worst = 0; at = 0
+      for (f in a) if (f in b) {
+        d = a[f] - b[f]; if (d < 0) d = -d
+        if (d > worst) { worst = d; at = f }
+      }
+      printf "%.2f (%d Hz)", worst, at
+    }' "$work/$1/$4$3_90kmh.csv" "$work/$2/$4$3_90kmh.csv"
+}
+
+spacing() { awk -v s="$1" 'BEGIN { printf "%.2f x %.2f", 6 / s, 6.6667 / s }'; }
+
+for s in "${grids[@]}"; do
+  run "grid_$s" --set "Contact grid/Subdivisions=$s"
+done
+finest=${grids[-1]}
+fine_rule=${grids[-2]:-$finest}
+run point_1 --set "Contact grid/Subdivisions=1" --set "Road texture/Between points=point"
+run "point_$fine_rule" --set "Contact grid/Subdivisions=$fine_rule" --set "Road texture/Between points=point"
+
+echo "Contact grid: road-A and road-B at 90 km/h over 1.2 m (3125 steps of 15.36 us); levels 100 Hz to 5 kHz"
+echo "| grid (s) | contact rectangle [mm] | points | road | run time [s] | per step [ms] | points in contact | mean force [N] | stress: largest difference to the next finer grid [dB] | to the finest | force: to the next finer grid [dB] | to the finest |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+row() {
+  local label=$1 name=$2 s=$3 next=$4 road=$5
+  IFS='|' read -r seconds ms contact force <<< "$(figures "$name" "$road")"
+  local sn="" sf="" fn="" ff=""
+  if [[ -n "$next" ]]; then
+    sn=$(difference "$name" "$next" "$road" spectrum_)
+    fn=$(difference "$name" "$next" "$road" spectrum_force_)
+  fi
+  if [[ "$name" != "grid_$finest" ]]; then
+    sf=$(difference "$name" "grid_$finest" "$road" spectrum_)
+    ff=$(difference "$name" "grid_$finest" "$road" spectrum_force_)
+  fi
+  echo "| $label | $(spacing "$s") | $(( 120 * s * s )) | $road | $seconds | $ms | $contact | $force | $sn | $sf | $fn | $ff |"
+}
+for road in road-A road-B; do
+  for i in "${!grids[@]}"; do
+    s=${grids[$i]}
+    next=""
+    (( i + 1 < ${#grids[@]} )) && next="grid_${grids[$((i + 1))]}"
+    row "$s" "grid_$s" "$s" "$next" "$road"
+  done
+  row "1, point" point_1 1 "" "$road"
+  row "$fine_rule, point" "point_$fine_rule" "$fine_rule" "" "$road"
+done
+
+echo
+echo "Band levels on the two finest grids (s = $fine_rule and $finest): stress at the patch centre [dB re 100 Pa], total force [dB re 1 N]"
+echo "| band [Hz] | road-A stress s=$fine_rule | s=$finest | road-A force s=$fine_rule | s=$finest | road-B stress s=$fine_rule | s=$finest | road-B force s=$fine_rule | s=$finest |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+paste -d, \
+  <(grep -E '^[0-9]' "$work/grid_$fine_rule/spectrum_road-A_90kmh.csv" | cut -d, -f1,6) \
+  <(grep -E '^[0-9]' "$work/grid_$finest/spectrum_road-A_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$fine_rule/spectrum_force_road-A_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$finest/spectrum_force_road-A_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$fine_rule/spectrum_road-B_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$finest/spectrum_road-B_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$fine_rule/spectrum_force_road-B_90kmh.csv" | cut -d, -f6) \
+  <(grep -E '^[0-9]' "$work/grid_$finest/spectrum_force_road-B_90kmh.csv" | cut -d, -f6) |
+  awk -F, '{ printf "| %s |", $1; for (i = 2; i <= NF; ++i) printf " %.1f |", $i; printf "\n" }'
