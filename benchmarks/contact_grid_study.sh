@@ -58,7 +58,8 @@ run() {
   fi
 }
 
-# The figures of road $2 in run $1: seconds|ms per step|points in contact|mean force.
+# The figures of road $2 in run $1: seconds|ms per step|points in contact|mean
+# force|the stress's highest band and centroid|the force's highest band.
 figures() {
   awk -v road="$2" '
     /run road-/ { on = index($0, "run " road "_") > 0 }
@@ -67,7 +68,13 @@ figures() {
       match($0, /points in contact [0-9]+% to [0-9]+%/); contact = substr($0, RSTART + 18, RLENGTH - 18)
     }
     on && / ms per step/ { seconds = $1; ms = $3 }
-    END { printf "%s|%s|%s|%s", seconds, ms, contact, force }' "$work/$1.log"
+    index($0, "  " road " at 90 km/h: stress highest band") == 1 {
+      match($0, /stress highest band [0-9]+ Hz \([0-9.-]+ dB\), spectral centroid [0-9]+ Hz/)
+      stress = substr($0, RSTART + 20, RLENGTH - 20)
+      sub(/ Hz \(/, " Hz, ", stress); sub(/\), spectral centroid /, "; centroid ", stress)
+      match($0, /force highest band [0-9]+ Hz/); peak = substr($0, RSTART + 19, RLENGTH - 19)
+    }
+    END { printf "%s|%s|%s|%s|%s|%s", seconds, ms, contact, force, stress, peak }' "$work/$1.log"
 }
 
 # Largest |level difference| [dB] between runs $1 and $2, road $3, spectrum
@@ -97,11 +104,11 @@ run point_1 --set "Contact grid/Subdivisions=1" --set "Road texture/Between poin
 run "point_$fine_rule" --set "Contact grid/Subdivisions=$fine_rule" --set "Road texture/Between points=point"
 
 echo "Contact grid: road-A and road-B at 90 km/h over 1.2 m (3125 steps of 15.36 us); levels 100 Hz to 5 kHz"
-echo "| grid (s) | contact rectangle [mm] | points | road | run time [s] | per step [ms] | points in contact | mean force [N] | stress: largest difference to the next finer grid [dB] | to the finest | force: to the next finer grid [dB] | to the finest |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| grid (s) | contact rectangle [mm] | points | road | run time [s] | per step [ms] | points in contact | mean force [N] | stress: highest band, centroid | largest difference to the next finer grid [dB] | to the finest | force: highest band | to the next finer grid [dB] | to the finest |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 row() {
   local label=$1 name=$2 s=$3 next=$4 road=$5
-  IFS='|' read -r seconds ms contact force <<< "$(figures "$name" "$road")"
+  IFS='|' read -r seconds ms contact force stress peak <<< "$(figures "$name" "$road")"
   local sn="" sf="" fn="" ff=""
   if [[ -n "$next" ]]; then
     sn=$(difference "$name" "$next" "$road" spectrum_)
@@ -111,7 +118,7 @@ row() {
     sf=$(difference "$name" "grid_$finest" "$road" spectrum_)
     ff=$(difference "$name" "grid_$finest" "$road" spectrum_force_)
   fi
-  echo "| $label | $(spacing "$s") | $(( 120 * s * s )) | $road | $seconds | $ms | $contact | $force | $sn | $sf | $fn | $ff |"
+  echo "| $label | $(spacing "$s") | $(( 120 * s * s )) | $road | $seconds | $ms | $contact | $force | $stress | $sn | $sf | $peak | $fn | $ff |"
 }
 for road in road-A road-B; do
   for i in "${!grids[@]}"; do

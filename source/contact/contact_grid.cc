@@ -12,14 +12,16 @@ namespace greentread
     ContactGridParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact grid");
-      prm.declare_entry("Subdivisions", "1", dealii::Patterns::Integer(1, 16),
+      prm.declare_entry("Subdivisions", "4", dealii::Patterns::Integer(1, 16),
                         "Contact points per Green's-function rectangle along each direction: "
                         "s splits each rectangle ('Green's functions/Patch length' / 'Points "
                         "along' x 'Patch width' / 'Points across') into s x s contact "
                         "rectangles. The finite-element Green's functions carry the "
                         "compliance at the rectangles' scale, an elastic layer (the tread's "
                         "rubber and thickness on a rigid belt) what lies below it. 1: the "
-                        "Green's functions' points (the paper's grid).");
+                        "Green's functions' points (the paper's grid). The default 4 (1.5 x "
+                        "1.67 mm on the default patch) comes from the README's convergence "
+                        "study (benchmarks/contact_grid_study.sh).");
       prm.leave_subsection();
     }
 

@@ -104,8 +104,9 @@ namespace
     double   mean_force = 0.;
   };
 
-  /// The screen output of the last run_scene().
+  /// The screen output and the output directory of the last run_scene().
   std::string screen_text;
+  fs::path    last_directory;
 
   Run
   run_scene(const std::string &name, const std::string &road, const double speed_kmh,
@@ -129,7 +130,8 @@ namespace
     std::ifstream     screen(dir / "screen.txt");
     const std::string text((std::istreambuf_iterator<char>(screen)), std::istreambuf_iterator<char>());
     BOOST_TEST_REQUIRE(status == 0, name << ": the program failed:\n" << text);
-    screen_text = text;
+    screen_text    = text;
+    last_directory = dir;
     // The saved stages were reused: this checks the contact and analysis.
     if (!prepare)
       BOOST_TEST(text.find("Reusing") != std::string::npos, name << ":\n" << text);
@@ -228,6 +230,32 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
     BOOST_TEST(std::abs(mean / n - six) < 0.2);
     BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_finer_contact_grid_carries_the_load_and_stays_linear)
+{
+  // The sustained sinusoid of the case above on 2 x 2 contact points per
+  // Green's-function rectangle (480 points, the tread's layer below them):
+  // the road's band, +6.02 dB for twice the heights, the mean force the
+  // load, and the total force's spectrum written beside the stress's.
+  const std::vector<std::string> sinus = {"Rolling/Static load=3000",
+                                          "Road texture/Sinusoid amplitude=0.00002",
+                                          "Road texture/Sinusoid wavelength=0.04",
+                                          "Contact grid/Subdivisions=2"};
+  auto doubled = sinus;
+  doubled.push_back("Road texture/Height scale=2");
+  const auto a    = run_scene("grid-2-sinusoid-1", "sinusoid", 90., sinus);
+  BOOST_TEST(screen_text.find("Contact grid: 20 x 24 = 480 points") != std::string::npos, screen_text);
+  const auto force = read_csv(last_directory / "spectrum_force_sinusoid_90kmh.csv");
+  BOOST_TEST(force.size() == a.spectrum.level.size());
+  const auto b    = run_scene("grid-2-sinusoid-2", "sinusoid", 90., doubled);
+  const auto peak = std::max_element(a.spectrum.level.begin(), a.spectrum.level.end()) -
+                    a.spectrum.level.begin();
+  BOOST_TEST(a.spectrum.top_band() == band_of(25. / 0.04), boost::test_tools::tolerance(1e-9));
+  BOOST_TEST_MESSAGE("480 contact points, sinusoid, twice the heights: "
+                     << b.spectrum.level[peak] - a.spectrum.level[peak] << " dB more in its band");
+  BOOST_TEST(std::abs(b.spectrum.level[peak] - a.spectrum.level[peak] - 20. * std::log10(2.)) < 0.1);
+  BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
 }
 
 BOOST_AUTO_TEST_CASE(the_centroid_rises_with_speed_and_the_mean_force_is_the_load)

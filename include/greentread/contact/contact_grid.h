@@ -40,10 +40,12 @@
  * terms \f$P L_f (I - P)\f$; the coarse model cannot represent them, and
  * with them the local term \f$L_f - A^T L_c A\f$ is indefinite, measured:
  * the contact points' compliance then lost its positivity against the
- * patch model's instantaneous part G_r). The local term is instantaneous
- * (the tread layer's own resonances lie far above 5 kHz) and elastic (the
- * rubber's loss factor is left out of it). With s = 1 the grid is the
- * Green's functions' points and adds nothing.
+ * patch model's instantaneous part G_r). The local term is quasi-static and
+ * elastic: its inertia and the rubber's loss factor are left out (the
+ * variation it carries is shorter than a coarse cell, and the rubber's shear
+ * wavelength is longer than 6 mm up to about 5 kHz; the tread's inertia at
+ * the cells' scale is in G's modes). With s = 1 the grid is the Green's
+ * functions' points and adds nothing.
  */
 
 namespace greentread
@@ -54,7 +56,7 @@ namespace greentread
     struct ContactGridParameters
     {
       /// Contact rectangles per Green's-function rectangle along each direction.
-      unsigned int subdivisions = 1;
+      unsigned int subdivisions = 4;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
