@@ -187,7 +187,7 @@ BOOST_AUTO_TEST_CASE(a_sinusoidal_road_peaks_at_speed_over_wavelength)
 
 BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustained)
 {
-  // 3000 N keep 108 to 116 of the 120 points on the road: the contact is
+  // 3000 N keep 106 to 116 of the 120 points on the road: the contact is
   // linear, and twice the heights (+6.02 dB of texture, the spectrum's shape
   // kept) give +6.02 dB of stress.
   const double six = 20. * std::log10(2.);
@@ -209,12 +209,14 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
     BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
   }
   {
-    // Road-A at a tenth and a fifth of its heights: every band from 160 Hz
+    // Road-A at a twentieth and a tenth of its heights (a tenth and a fifth
+    // on the texture every contact grid now shares gave 4.6 dB at 2 kHz:
+    // there the contact is not sustained enough): every band from 160 Hz
     // to 5 kHz within 0.5 dB of +6.02 dB, and on average within 0.2 dB.
-    const auto a = run_scene("road-A-tenth", "road-A", 90.,
+    const auto a = run_scene("road-A-twentieth", "road-A", 90.,
+                             {"Rolling/Static load=3000", "Road texture/Height scale=0.05"});
+    const auto b = run_scene("road-A-tenth", "road-A", 90.,
                              {"Rolling/Static load=3000", "Road texture/Height scale=0.1"});
-    const auto b = run_scene("road-A-fifth", "road-A", 90.,
-                             {"Rolling/Static load=3000", "Road texture/Height scale=0.2"});
     double mean = 0.;
     int    n    = 0;
     for (std::size_t k = 0; k < a.spectrum.level.size(); ++k)
