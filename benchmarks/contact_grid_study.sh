@@ -23,15 +23,8 @@ keep=${3:-}
 shift $(( $# < 3 ? $# : 3 ))
 grids=("$@")
 (( ${#grids[@]} > 0 )) || grids=(1 2 4 6)
-if [[ ! -f "$saved/green_functions.h5" ]]; then
-  echo "contact_grid_study.sh: '$saved' holds no green_functions.h5: run the main job first" \
-       "(build/greentread writes output/)" >&2
-  exit 1
-fi
-if [[ ! -x "$program" ]]; then
-  echo "contact_grid_study.sh: program '$program' not found or not executable" >&2
-  exit 1
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+check_saved_stages contact_grid_study.sh
 if [[ -n "$keep" ]]; then
   work=$keep
   mkdir -p "$work"
@@ -40,22 +33,11 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 
-# run NAME ARGS...: both roads on a fresh copy of the saved stages.
+# run NAME ARGS...: both roads at 90 km/h over 1.2 m on a fresh copy of the saved stages.
 run() {
-  local name=$1
-  shift
-  mkdir -p "$work/$name"
-  cp "$saved"/green_functions.h5 "$work/$name"/
-  cp "$saved"/*_model.h5 "$work/$name"/ 2>/dev/null || true
-  echo "  running $name ..." >&2
-  "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" \
-    --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
-    --set "Rolling/Distance=1.2" "$@" > "$work/$name.log" 2>&1 ||
-    { echo "run $name failed:"; tail -5 "$work/$name.log"; exit 1; }
-  if (( $(grep -c "Reusing" "$work/$name.log") < 2 )); then
-    echo "run $name did not reuse both saved stages:" >&2
-    exit 1
-  fi
+  echo "  running $1 ..." >&2
+  run_saved "$1" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
+    --set "Rolling/Distance=1.2" "${@:2}"
 }
 
 # The figures of road $2 in run $1: seconds|ms per step|points in contact|mean

@@ -16,35 +16,13 @@ set -euo pipefail
 
 saved=${1:-output}
 program=${2:-build/greentread}
-if [[ ! -f "$saved/green_functions.h5" ]]; then
-  echo "contact_studies.sh: '$saved' holds no green_functions.h5: run the main job first" \
-       "(build/greentread writes output/)" >&2
-  exit 1
-fi
-if [[ ! -x "$program" ]]; then
-  echo "contact_studies.sh: program '$program' not found or not executable" >&2
-  exit 1
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+check_saved_stages contact_studies.sh
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# run NAME ARGS...: one rolling run on a fresh copy of the saved stages; its
-# screen output goes to $work/NAME.log and its outputs to $work/NAME/.
-run() {
-  local name=$1
-  shift
-  mkdir -p "$work/$name"
-  cp "$saved"/green_functions.h5 "$work/$name"/
-  cp "$saved"/*_model.h5 "$work/$name"/ 2>/dev/null || true
-  "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" "$@" \
-    > "$work/$name.log" 2>&1 || { echo "run $name failed:"; tail -5 "$work/$name.log"; exit 1; }
-  if (( $(grep -c "Reusing" "$work/$name.log") < 2 )); then
-    echo "run $name did not reuse both saved stages (the Green's functions and the patch model):" >&2
-    grep -i "reus\|stage" "$work/$name.log" >&2 || true
-    exit 1
-  fi
-}
+run() { run_saved "$@"; }
 
 # The numbers of one run: seconds, points in contact, mean force, steps not
 # converged, largest penetration.
