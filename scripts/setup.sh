@@ -31,6 +31,7 @@ packages=(
   gnuplot-nox           # PNG plots
   openmpi-bin           # mpirun: the tire-green scene and its MPI test
   libsuitesparse-dev    # UMFPACK headers: the full-ring reference solve
+  libfftw3-dev          # FFTW 3: the tread's layer on fine contact grids
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
   libsiconos-numerics-dev # Siconos' LCP solvers: the reference of tests/unit/test_lcp.cc
 )

@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_grid.h>
+#include <greentread/contact/projected_cg.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,14 @@ namespace greentread
                         "Green's functions' points (the paper's grid). The default 4 (1.5 x "
                         "1.67 mm on the default patch) comes from the README's convergence "
                         "study (benchmarks/contact_grid_study.sh).");
+      prm.declare_entry("Solver", "pivoting", dealii::Patterns::Selection("pivoting|projected CG"),
+                        "The contact's complementarity solve at each step: 'pivoting' forms "
+                        "the contact points' N x N compliances and solves by warm-started block "
+                        "principal pivoting (exact to round-off; 8 N^2 bytes per matrix, up to "
+                        "about 8,000 points); 'projected CG' forms no N x N matrix (the tread's "
+                        "layer by FFT) and solves the bound-constrained quadratic programme by "
+                        "MPRGP to a gap of 1e-10 of the road's demand (needs a reciprocal patch "
+                        "model: 'Patch model/Source' = fe modes).");
       prm.leave_subsection();
     }
 
@@ -32,14 +41,17 @@ namespace greentread
     {
       prm.enter_subsection("Contact grid");
       subdivisions = prm.get_integer("Subdivisions");
+      matrix_free  = prm.get("Solver") == "projected CG";
       prm.leave_subsection();
     }
 
 
 
     ContactGrid::ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
-                             const unsigned int subdivisions_, const ElasticLayer &layer)
+                             const unsigned int subdivisions_, const ElasticLayer &layer,
+                             const bool matrix_free_)
       : subdivisions(subdivisions_)
+      , matrix_free(matrix_free_)
       , n_coarse(coarse_points.size())
     {
       if (subdivisions == 0)
@@ -99,7 +111,11 @@ namespace greentread
       // returns the variation within the coarse cells: (I - P) L_f (I - P),
       // P the mean over each cell.
       const double margin = 4. * layer.thickness;
-      local = layer_patch_compliance(layer, dx, dy, nx, ny, margin);
+      layer_product       = std::make_shared<const LatticeConvolution>(
+        layer_lattice_kernel(layer, dx, dy, nx, ny, margin));
+      if (matrix_free)
+        return;
+      local = layer_product->dense();
       const auto remove_cell_means = [&](Eigen::MatrixXd &m) {
         const double    n_cell = static_cast<double>(s) * s;
         for (Eigen::Index j = 0; j < m.cols(); ++j)
@@ -159,6 +175,29 @@ namespace greentread
 
 
 
+    void
+    ContactGrid::add_local(const Eigen::VectorXd &x, Eigen::VectorXd &y) const
+    {
+      if (!layer_product)
+        return;
+      const double    n_cell = static_cast<double>(subdivisions) * subdivisions;
+      Eigen::VectorXd v      = x - expand(Eigen::VectorXd(gather(x) / n_cell));
+      layer_product->apply(v, v);
+      y += v - expand(Eigen::VectorXd(gather(v) / n_cell));
+    }
+
+
+
+    void
+    ContactGrid::apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x,
+                       Eigen::VectorXd &y) const
+    {
+      y = expand(Eigen::VectorXd(coarse * gather(x)));
+      add_local(x, y);
+    }
+
+
+
     Eigen::VectorXd
     ContactGrid::reporting_weights() const
     {
@@ -192,6 +231,32 @@ namespace greentread
           , coarse_load(coarse->n_points())
         {
           const PatchInfluence &c = coarse->influence();
+          psi.instantaneous       = true;
+          if (grid.matrix_free)
+            {
+              // The products through the coarse cells and the layer's FFT.
+              if (!c.instantaneous)
+                throw InputError("'Contact grid/Solver' = projected CG needs a patch model "
+                                 "with an instantaneous compliance; allowed with it: 'Patch "
+                                 "model/Source' = fe modes");
+              const double asymmetry = (c.u[2] - c.u[2].transpose()).cwiseAbs().maxCoeff() /
+                                       c.u[2].cwiseAbs().maxCoeff();
+              if (!(asymmetry < 1e-8))
+                throw InputError("'Contact grid/Solver' = projected CG needs a reciprocal "
+                                 "patch model; this one's instantaneous compliance is "
+                                 "asymmetric by " + format_short(asymmetry) +
+                                 " (relative); allowed: 'Patch model/Source' = fe modes, or "
+                                 "'Contact grid/Solver' = pivoting");
+              psi.add_u = [this](const unsigned int g, const Eigen::VectorXd &x,
+                                 Eigen::VectorXd &y) {
+                const Eigen::VectorXd xc = grid.gather(x);
+                if (xc.cwiseAbs().maxCoeff() > 0.)
+                  y += grid.expand(Eigen::VectorXd(coarse->influence().u[g] * xc));
+                if (g == 2)
+                  grid.add_local(x, y);
+              };
+              return;
+            }
           for (unsigned int g = 0; g < 4; ++g)
             {
               psi.u[g] = grid.expand(c.u[g]);
@@ -203,7 +268,6 @@ namespace greentread
           psi.u[2] += grid.local;
           psi.v[2] += grid.local / dt;
           psi.v[1] -= grid.local / dt;
-          psi.instantaneous = true;
         }
 
         void
@@ -248,9 +312,33 @@ namespace greentread
     std::unique_ptr<PatchConvolution>
     make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid)
     {
-      if (grid.subdivisions == 1)
+      if (grid.subdivisions == 1 && !grid.matrix_free)
         return coarse;
       return std::make_unique<GridConvolution>(std::move(coarse), grid);
+    }
+
+
+
+    StaticContact
+    start_grid_contact(const ContactGrid &grid, const Eigen::MatrixXd &coarse_static,
+                       const Eigen::VectorXd &tread, const PatchRoadHeights &road,
+                       const RollingSetup &setup)
+    {
+      if (!grid.matrix_free)
+        return start_contact(grid.compliance(coarse_static), tread, road, setup);
+      const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+        grid.apply(coarse_static, x, y);
+      };
+      ProjectedCgOptions options;
+      options.operator_norm = operator_norm(W, grid.n_points());
+      Eigen::VectorXd last; // each bisection's solve starts from the last one's forces
+      return start_contact(
+        [&](const Eigen::VectorXd &c) {
+          LcpResult r = solve_lcp_projected_cg(W, c, last, options);
+          last        = r.z;
+          return r;
+        },
+        tread, road, setup);
     }
   } // namespace contact
 } // namespace greentread

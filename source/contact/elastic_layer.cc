@@ -203,16 +203,25 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    layer_patch_compliance(const ElasticLayer &layer, const double a, const double b,
-                           const unsigned int nx, const unsigned int ny, const double margin)
+    layer_lattice_kernel(const ElasticLayer &layer, const double a, const double b,
+                         const unsigned int nx, const unsigned int ny, const double margin)
     {
       const LayerComplianceTable table(layer);
       const unsigned int         px =
         std::max(2 * nx, nx + 2 * static_cast<unsigned int>(std::ceil(margin / a)));
       const unsigned int py =
         std::max(2 * ny, ny + 2 * static_cast<unsigned int>(std::ceil(margin / b)));
-      const Eigen::MatrixXd T = rectangle_lattice_compliance(
-        [&](const double k) { return table(k); }, a, b, nx - 1, ny - 1, px, py);
+      return rectangle_lattice_compliance([&](const double k) { return table(k); }, a, b, nx - 1,
+                                          ny - 1, px, py);
+    }
+
+
+
+    Eigen::MatrixXd
+    layer_patch_compliance(const ElasticLayer &layer, const double a, const double b,
+                           const unsigned int nx, const unsigned int ny, const double margin)
+    {
+      const Eigen::MatrixXd T = layer_lattice_kernel(layer, a, b, nx, ny, margin);
       const unsigned int n = nx * ny;
       Eigen::MatrixXd    L(n, n);
       for (unsigned int p = 0; p < n; ++p)

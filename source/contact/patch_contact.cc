@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/patch_contact.h>
+#include <greentread/contact/projected_cg.h>
 
 #include <cmath>
 #include <utility>
@@ -41,11 +42,34 @@ namespace greentread
 
 
 
-    PatchKinematicContact::PatchKinematicContact(const PatchInfluence &psi_)
-      : psi(psi_)
+    void
+    add_influence(const PatchInfluence &psi, const unsigned int g, const Eigen::VectorXd &x,
+                  Eigen::VectorXd &y)
     {
-      const unsigned int n = psi.u[0].rows();
-      if (psi.instantaneous)
+      if (psi.add_u)
+        psi.add_u(g, x, y);
+      else
+        add_product(psi.u[g], x, y);
+    }
+
+
+
+    PatchKinematicContact::PatchKinematicContact(const PatchInfluence &psi_,
+                                                 const unsigned int    n)
+      : psi(psi_)
+      , matrix_free(static_cast<bool>(psi_.add_u))
+    {
+      if (matrix_free && !psi.instantaneous)
+        throw InputError("patch contact: a matrix-free influence needs an instantaneous "
+                         "compliance (a continuous contact force)");
+      if (matrix_free)
+        end_norm = operator_norm(
+          [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+            y.setZero(x.size());
+            psi.add_u(2, x, y);
+          },
+          n);
+      else if (psi.instantaneous)
         end_norm = lcp_matrix_norm(psi.u[2]);
       else
         for (unsigned int j = 0; j < n; ++j)
@@ -82,13 +106,28 @@ namespace greentread
       if (previous_end.size() != n)
         previous_end = Eigen::VectorXd::Zero(n);
       Eigen::VectorXd q = uh - d;
-      add_product(psi.u[1], previous_end, q);
+      add_influence(psi, 1, previous_end, q);
       if (!q.allFinite())
         throw NumericalError("patch contact: the force of the last step is not finite (largest "
                              "|q| " + format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
-      LcpOptions options;
-      options.matrix_norm   = end_norm;
-      const LcpResult lcp = solve_lcp(psi.u[2], q, active, options);
+      LcpResult lcp;
+      if (matrix_free)
+        {
+          ProjectedCgOptions options;
+          options.operator_norm = end_norm;
+          lcp                   = solve_lcp_projected_cg(
+            [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+              y.setZero(x.size());
+              psi.add_u(2, x, y);
+            },
+            q, previous_end, options);
+        }
+      else
+        {
+          LcpOptions options;
+          options.matrix_norm = end_norm;
+          lcp                 = solve_lcp(psi.u[2], q, active, options);
+        }
       if (!lcp.z.allFinite())
         throw NumericalError("patch contact: the complementarity solve returned a force that is "
                              "not finite (" + (lcp.converged ? std::string("converged") :
@@ -108,7 +147,7 @@ namespace greentread
         if (lcp.z[j] > 0.)
           ++report.n_contact;
       // Moved, not copied: no allocation per step for the record.
-      report.lcp_matrix = &psi.u[2];
+      report.lcp_matrix = matrix_free ? nullptr : &psi.u[2];
       report.lcp_q      = std::move(q);
       report.lcp_z      = std::move(lcp.z);
       return report;
@@ -257,7 +296,7 @@ namespace greentread
       if (start_force.size() != 0 && start_force.size() != n)
         throw InputError("roll: the start force has " + std::to_string(start_force.size()) +
                          " entries for " + std::to_string(n) + " points");
-      PatchKinematicContact solver(conv.influence());
+      PatchKinematicContact solver(conv.influence(), n);
       if (start_force.size() != 0)
         {
           conv.preload(start_force);
@@ -279,7 +318,7 @@ namespace greentread
           conv.advance(load);
           s.u = uh;
           for (unsigned int g = 0; g < 4; ++g)
-            add_product(conv.influence().u[g], load.component[g], s.u);
+            add_influence(conv.influence(), g, load.component[g], s.u);
           s.force = load.impulse(dt) / dt;
           if (!s.force.allFinite() || !s.u.allFinite())
             throw NumericalError("rolling contact: the contact forces or displacements are not "
@@ -313,16 +352,26 @@ namespace greentread
     solve_static_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &d0,
                          const double total_load, const double delta)
     {
-      const unsigned int n = d0.size();
-      std::vector<bool>  active(n, false);
+      std::vector<bool> active(d0.size(), false);
+      return solve_static_contact([&](const Eigen::VectorXd &c) { return solve_lcp(G0, c, active); },
+                                  d0, total_load, delta);
+    }
+
+
+
+    StaticContact
+    solve_static_contact(const StaticSolve &solve, const Eigen::VectorXd &d0,
+                         const double total_load, const double delta)
+    {
+      const unsigned int n        = d0.size();
       const auto         solve_at = [&](const double shift, StaticContact &result) {
         const Eigen::VectorXd q   = -(d0.array() + shift).matrix();
-        const LcpResult       lcp = solve_lcp(G0, q, active);
+        const LcpResult       lcp = solve(q);
         if (!lcp.converged)
           throw NumericalError("static contact: the complementarity solve failed at indentation " +
                                format_short(shift) + " m: " + lcp.message);
         result.q         = lcp.z;
-        result.u         = G0 * lcp.z;
+        result.u         = lcp.w - q;
         result.delta     = shift;
         result.n_contact = 0;
         for (unsigned int j = 0; j < n; ++j)

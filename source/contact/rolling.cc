@@ -34,6 +34,17 @@ namespace greentread
 
 
 
+    StaticContact
+    start_contact(const StaticSolve &solve, const Eigen::VectorXd &tread,
+                  const PatchRoadHeights &road, const RollingSetup &setup)
+    {
+      Eigen::VectorXd z(tread.size()), slope(tread.size());
+      road(0., z, slope);
+      return solve_static_contact(solve, z - tread, setup.static_load, setup.indentation);
+    }
+
+
+
     std::unique_ptr<PatchConvolution>
     make_patch_convolution(const convolution::Method method, const modal::PatchModel &model,
                            const double dt, const unsigned int n_steps,

@@ -159,7 +159,8 @@ namespace greentread
       // static start uses.
       const contact::ContactGrid grid(
         model.points, contact_grid.subdivisions,
-        {materials.tread_E, materials.tread_nu, geometry.tread_thickness});
+        {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
+        contact_grid.matrix_free);
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "
@@ -174,7 +175,6 @@ namespace greentread
         (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       std::cout << "  the model's static compliance differs from the structure's by "
                 << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
-      const Eigen::MatrixXd G0_grid = grid.compliance(G0);
 
       // Stages road and contact: every road at every speed.
       std::vector<analysis::RunSpectrum> spectra;
@@ -190,7 +190,7 @@ namespace greentread
           const road::PatchRoad patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
           for (const double speed_kmh : rolling.speeds)
-            spectra.push_back(roll(model, grid, G0_grid, tread, lattice, texture, patch_road,
+            spectra.push_back(roll(model, grid, G0, tread, lattice, texture, patch_road,
                                    road_name, speed_kmh, directory, record));
         }
 
@@ -312,7 +312,7 @@ namespace greentread
       setup.convolution   = rolling.convolution;
       setup.direct_kernel = rolling.direct_kernel;
       setup.threads       = dealii::MultithreadInfo::n_threads();
-      const auto equilibrium = contact::start_contact(G0, tread, road_heights, setup);
+      const auto equilibrium = contact::start_grid_contact(grid, G0, tread, road_heights, setup);
       std::cout << "    static contact: indentation "
                 << format_printf("%.4g", 1e3 * equilibrium.delta) << " mm, load "
                 << format_printf("%.4g", equilibrium.q.sum()) << " N, "

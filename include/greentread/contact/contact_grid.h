@@ -1,7 +1,9 @@
 #pragma once
 
 #include <greentread/contact/elastic_layer.h>
+#include <greentread/contact/lattice_convolution.h>
 #include <greentread/contact/patch_convolution.h>
+#include <greentread/contact/rolling.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -46,6 +48,20 @@
  * wavelength is longer than 6 mm up to about 5 kHz; the tread's inertia at
  * the cells' scale is in G's modes). With s = 1 the grid is the Green's
  * functions' points and adds nothing.
+ *
+ * **Two solvers of the contact** (`Contact grid/Solver`, the one selection
+ * point is the grid's ContactGrid::matrix_free):
+ * - `pivoting`: the N x N compliances are formed, and each step's LCP is
+ *   solved by block principal pivoting (greentread/contact/lcp.h), warm-
+ *   started from the last step's active set. Exact to round-off; memory
+ *   8 N^2 bytes per matrix (several are held), so up to about 8,000 points.
+ * - `projected CG`: no N x N matrix. The compliance is applied as
+ *   $A^T (G (A f)) + (I - P) L_f (I - P) f$, L_f by FFT on the lattice
+ *   (greentread/contact/lattice_convolution.h), and each step's LCP is the
+ *   bound-constrained quadratic programme solved by MPRGP
+ *   (greentread/contact/projected_cg.h), warm-started from the last step's
+ *   forces. O(N log N) per product; it needs a reciprocal (symmetric) patch
+ *   model, which the ring's own modes are.
  */
 
 namespace greentread
@@ -57,6 +73,8 @@ namespace greentread
     {
       /// Contact rectangles per Green's-function rectangle along each direction.
       unsigned int subdivisions = 4;
+      /// `projected CG` rather than `pivoting` (the file documentation).
+      bool matrix_free = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -77,10 +95,13 @@ namespace greentread
        *            is kept.
        * @param[in] subdivisions s >= 1.
        * @param[in] layer The tread as a layer (used when s > 1).
+       * @param[in] matrix_free The `projected CG` solver: the local term only
+       *            as its FFT product, ContactGrid::local stays empty.
        * @throws InputError if the points are not a lattice or s is 0.
        */
       ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
-                  unsigned int subdivisions, const ElasticLayer &layer);
+                  unsigned int subdivisions, const ElasticLayer &layer,
+                  bool matrix_free = false);
 
       unsigned int
       n_points() const
@@ -105,6 +126,14 @@ namespace greentread
       Eigen::MatrixXd
       compliance(const Eigen::MatrixXd &coarse_static) const;
 
+      /// y += the local term times x, \f$(I - P) L_f (I - P) x\f$, by FFT (0 when s = 1).
+      void
+      add_local(const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
+
+      /// y = \f$A^T M A x\f$ + the local term times x, without the N x N matrix.
+      void
+      apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
+
       /**
        * @brief The weights of the reporting cell: a coarse cell's size,
        * centred at the patch centre (x0 = 0, y0 = 0), whatever the grid. The
@@ -123,8 +152,12 @@ namespace greentread
       double dx = 0., dy = 0., coarse_dx = 0., coarse_dy = 0.;
       /// The coarse point (index into the constructor's points) of each contact point.
       std::vector<unsigned int> coarse_of;
-      /// \f$(I - P) L_f (I - P)\f$ [m/N]; empty when s = 1.
+      /// \f$(I - P) L_f (I - P)\f$ [m/N]; empty when s = 1 or matrix-free.
       Eigen::MatrixXd local;
+      /// The solver: `projected CG` (true) or `pivoting`.
+      bool matrix_free = false;
+      /// \f$L_f\f$ on the lattice, by FFT; empty when s = 1.
+      std::shared_ptr<const LatticeConvolution> layer_product;
 
     private:
       unsigned int n_coarse = 0;
@@ -138,5 +171,14 @@ namespace greentread
      */
     std::unique_ptr<PatchConvolution>
     make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid);
+
+    /**
+     * @brief contact::start_contact() on the grid: the static compliance
+     * \f$A^T G_0 A\f$ + the local term, by the grid's solver.
+     */
+    StaticContact
+    start_grid_contact(const ContactGrid &grid, const Eigen::MatrixXd &coarse_static,
+                       const Eigen::VectorXd &tread, const PatchRoadHeights &road,
+                       const RollingSetup &setup);
   } // namespace contact
 } // namespace greentread

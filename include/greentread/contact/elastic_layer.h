@@ -12,7 +12,7 @@
  * its surface response to a normal pressure of any wavenumber, and from it
  * the compliance between the rectangles of a contact lattice. The contact
  * grid finer than the Green's functions' (greentread/contact/
- * subdivided_patch.h) takes from it the part of the compliance below the
+ * contact_grid.h) takes from it the part of the compliance below the
  * Green's functions' rectangles. Implemented in source/contact/elastic_layer.cc.
  *
  * **The layer.** Isotropic, Young's modulus E, Poisson's ratio nu, thickness
@@ -101,6 +101,16 @@ namespace greentread
     rectangle_lattice_compliance(const std::function<double(double)> &compliance, double a,
                                  double b, unsigned int mx, unsigned int my, unsigned int nx,
                                  unsigned int ny, unsigned int harmonics = 24);
+
+    /**
+     * @brief The kernel of the compliance between the rectangles of an
+     * nx x ny patch of a x b rectangles of @p layer: T(m, n) of the file
+     * documentation for the offsets m < nx, n < ny, on a period that adds
+     * @p margin [m] on each side of the patch (at least the patch's own size).
+     */
+    Eigen::MatrixXd
+    layer_lattice_kernel(const ElasticLayer &layer, double a, double b, unsigned int nx,
+                         unsigned int ny, double margin);
 
     /**
      * @brief The compliance [m/N] between all rectangles of an nx x ny patch

@@ -72,7 +72,9 @@ namespace greentread
     class PatchKinematicContact
     {
     public:
-      explicit PatchKinematicContact(const PatchInfluence &psi);
+      /// @p n_points: the patch's (the influence's matrices may be empty,
+      /// PatchInfluence::add_u).
+      PatchKinematicContact(const PatchInfluence &psi, unsigned int n_points);
 
       /**
        * @param[in] uh, vh History terms at t_{n+1}.
@@ -103,6 +105,8 @@ namespace greentread
       double                               end_norm = 0.; // of psi.u[2], continuous path
       Eigen::MatrixXd                      lcp_matrix; // the last round's, iterative path
       const PatchInfluence                &psi;
+      /// The matrix-free form: MPRGP (projected_cg.h) on \f$\Psi^u_{end}\f$.
+      bool                                 matrix_free = false;
       std::vector<KinematicContact>        rules;
       std::vector<bool>                    active;
       std::vector<std::array<double, 4>>   shapes;
@@ -169,6 +173,15 @@ namespace greentread
 
     StaticContact
     solve_static_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &d0, double total_load,
+                         double delta);
+
+    /// The LCP \f$w = G_0 q + c\f$ of the static contact for a given c, by
+    /// some solver (the matrix-free one of the contact grid).
+    using StaticSolve = std::function<LcpResult(const Eigen::VectorXd &c)>;
+
+    /// solve_static_contact() with the static LCP solved by @p solve.
+    StaticContact
+    solve_static_contact(const StaticSolve &solve, const Eigen::VectorXd &d0, double total_load,
                          double delta);
   } // namespace contact
 } // namespace greentread

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -51,7 +52,16 @@ namespace greentread
       /// impulse would move a point infinitely far, the impulse columns are
       /// not to be used, and the contact force is continuous in time.
       bool instantaneous = false;
+      /// The matrix-free form (u and v then empty; only with an
+      /// instantaneous compliance): y += \f$\Psi^u_g\f$ x.
+      std::function<void(unsigned int g, const Eigen::VectorXd &x, Eigen::VectorXd &y)> add_u;
     };
+
+    /// y += \f$\Psi^u_g\f$ x, from the matrix's columns where x is not zero
+    /// (the loads of the points in contact) or by the matrix-free form.
+    void
+    add_influence(const PatchInfluence &psi, unsigned int g, const Eigen::VectorXd &x,
+                  Eigen::VectorXd &y);
 
     /**
      * @brief Step-by-step convolution of a patch's Green's functions; the

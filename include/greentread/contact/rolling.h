@@ -62,6 +62,11 @@ namespace greentread
     start_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
                   const PatchRoadHeights &road, const RollingSetup &setup);
 
+    /// start_contact() with the static LCP solved by @p solve.
+    StaticContact
+    start_contact(const StaticSolve &solve, const Eigen::VectorXd &tread,
+                  const PatchRoadHeights &road, const RollingSetup &setup);
+
     /**
      * @brief The convolution of @p method for @p model at @p dt over
      * @p n_steps steps.

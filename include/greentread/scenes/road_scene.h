@@ -56,8 +56,9 @@ namespace greentread
                   const base::ParameterRecord &record) const;
 
       /// One run: road @p road_name at @p speed_kmh on the contact points of
-      /// @p grid, from the static contact (compliance @p G0 between the
-      /// contact points), with its outputs; returns its spectrum.
+      /// @p grid, from the static contact (the structure's static
+      /// compliance @p G0 between the Green's functions' points, which the
+      /// grid splits), with its outputs; returns its spectrum.
       analysis::RunSpectrum
       roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
            const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,

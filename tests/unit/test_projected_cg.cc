@@ -1,0 +1,288 @@
+// The contact grid's matrix-free solver ('Contact grid/Solver' = projected
+// CG): the FFT product of the tread's layer against its dense matrix, the
+// grid's products against its dense compliance, MPRGP against the dense
+// block principal pivoting and Siconos' Lemke on the same LCPs (random SPD
+// ones, and a 480-point grid's), its failures, and a rolling run and its
+// static start by both solvers.
+#include <greentread/base/exceptions.h>
+#include <greentread/contact/contact_grid.h>
+#include <greentread/contact/lattice_convolution.h>
+#include <greentread/contact/lcp.h>
+#include <greentread/contact/projected_cg.h>
+#include <greentread/contact/rolling.h>
+#include <greentread/modal/mode_synthesis.h>
+#include <greentread/road/patch_road.h>
+#include <greentread/road/texture.h>
+
+#include <Eigen/Dense>
+
+#include <boost/test/unit_test.hpp>
+
+#include "siconos_reference.h"
+
+#include <cmath>
+#include <random>
+
+using namespace greentread;
+
+namespace
+{
+  const contact::ElasticLayer tread_layer{7e6, 0.49, 0.008};
+
+  std::vector<std::array<double, 3>>
+  coarse_points(const unsigned int nx, const unsigned int ny)
+  {
+    std::vector<std::array<double, 3>> p;
+    for (unsigned int i = 0; i < nx; ++i)
+      for (unsigned int j = 0; j < ny; ++j)
+        p.push_back({{(i + 0.5 - 0.5 * nx) * 6e-3, (j + 0.5 - 0.5 * ny) * (0.08 / 12), 0.27}});
+    return p;
+  }
+
+  /// A symmetric positive definite compliance of the coarse cells.
+  Eigen::MatrixXd
+  coarse_compliance(const std::vector<std::array<double, 3>> &points)
+  {
+    const unsigned int n = points.size();
+    Eigen::MatrixXd    G(n, n);
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = 0; b < n; ++b)
+        G(a, b) = 4e-6 * std::exp(-std::hypot(points[a][0] - points[b][0],
+                                              points[a][1] - points[b][1]) / 0.03);
+    return G + 6e-6 * Eigen::MatrixXd::Identity(n, n);
+  }
+
+  contact::SymmetricOperator
+  dense_operator(const Eigen::MatrixXd &W)
+  {
+    return [&W](const Eigen::VectorXd &x, Eigen::VectorXd &y) { y = W * x; };
+  }
+
+  Eigen::VectorXd
+  random_vector(const unsigned int n, const unsigned int seed)
+  {
+    std::mt19937                     rng(seed);
+    std::normal_distribution<double> z(0., 1.);
+    Eigen::VectorXd                  v(n);
+    for (auto &x : v)
+      x = z(rng);
+    return v;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(projected_cg)
+
+BOOST_AUTO_TEST_CASE(lattice_convolution_equals_the_dense_product)
+{
+  // The layer's kernel on 7 x 9 and on 1 x 5 rectangles (a lattice one
+  // rectangle wide), applied by FFT and as the dense matrix.
+  for (const auto &[nx, ny] : {std::pair<unsigned int, unsigned int>{7, 9}, {1, 5}, {12, 3}})
+    {
+      const contact::LatticeConvolution L(
+        contact::layer_lattice_kernel(tread_layer, 1.5e-3, 1.67e-3, nx, ny, 0.032));
+      const Eigen::VectorXd x = random_vector(nx * ny, nx + ny);
+      Eigen::VectorXd       y;
+      L.apply(x, y);
+      const Eigen::VectorXd reference = L.dense() * x;
+      BOOST_TEST_MESSAGE(nx << " x " << ny << ": FFT against dense "
+                            << (y - reference).cwiseAbs().maxCoeff() /
+                                 reference.cwiseAbs().maxCoeff());
+      BOOST_TEST((y - reference).cwiseAbs().maxCoeff() < 1e-13 * reference.cwiseAbs().maxCoeff());
+      Eigen::VectorXd in_place = x;
+      L.apply(in_place, in_place);
+      BOOST_TEST((in_place - y).cwiseAbs().maxCoeff() == 0.);
+    }
+  BOOST_CHECK_THROW(contact::LatticeConvolution(Eigen::MatrixXd::Constant(2, 2, NAN)), InputError);
+  const contact::LatticeConvolution L(Eigen::MatrixXd::Ones(2, 2));
+  Eigen::VectorXd                   y;
+  BOOST_CHECK_THROW(L.apply(Eigen::VectorXd::Ones(3), y), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(matrix_free_grid_equals_its_dense_compliance)
+{
+  const auto                 coarse = coarse_points(4, 3);
+  const Eigen::MatrixXd      G      = coarse_compliance(coarse);
+  const contact::ContactGrid dense(coarse, 3, tread_layer), free(coarse, 3, tread_layer, true);
+  BOOST_TEST(free.local.size() == 0);
+  const Eigen::VectorXd x = random_vector(dense.n_points(), 3);
+  Eigen::VectorXd       y = Eigen::VectorXd::Zero(x.size());
+  free.add_local(x, y);
+  const Eigen::VectorXd local = dense.local * x;
+  BOOST_TEST((y - local).cwiseAbs().maxCoeff() < 1e-12 * local.cwiseAbs().maxCoeff());
+  free.apply(G, x, y);
+  const Eigen::VectorXd all = dense.compliance(G) * x;
+  BOOST_TEST((y - all).cwiseAbs().maxCoeff() < 1e-12 * all.cwiseAbs().maxCoeff());
+}
+
+BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
+{
+  // Random SPD matrices (eigenvalues 1 to 1e3) and demands of every sign mix.
+  for (unsigned int seed = 0; seed < 20; ++seed)
+    {
+      const unsigned int    n = 60;
+      const Eigen::MatrixXd Q =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd(n, n).setRandom()).householderQ();
+      Eigen::VectorXd lambda(n);
+      for (unsigned int i = 0; i < n; ++i)
+        lambda[i] = std::pow(1e3, double(i) / (n - 1));
+      const Eigen::MatrixXd W = Q * lambda.asDiagonal() * Q.transpose();
+      const Eigen::VectorXd q = random_vector(n, seed) + Eigen::VectorXd::Constant(n, 0.1 * seed - 1.);
+      std::vector<bool>     active;
+      const auto            reference = contact::solve_lcp(W, q, active);
+      const auto            mprgp     = contact::solve_lcp_projected_cg(dense_operator(W), q, {});
+      BOOST_TEST(reference.converged);
+      BOOST_TEST(mprgp.converged);
+      BOOST_TEST(test::relative_difference(mprgp.z, reference.z, W, q) < 1e-8);
+      BOOST_TEST(mprgp.z.minCoeff() >= 0.);
+      BOOST_TEST(mprgp.residual < 1e-9);
+    }
+
+  // The LCP of a 480-point grid (10 x 12 cells, 2 x 2 points each) for a
+  // rough demand, cold and warm-started from a nearby demand's solution.
+  const auto                 coarse = coarse_points(10, 12);
+  const contact::ContactGrid grid(coarse, 2, tread_layer);
+  const Eigen::MatrixXd      G = coarse_compliance(coarse), W = grid.compliance(G);
+  const contact::ContactGrid free_grid(coarse, 2, tread_layer, true);
+  const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+    free_grid.apply(G, x, y);
+  };
+  const Eigen::VectorXd d  = 3e-5 * random_vector(grid.n_points(), 1) -
+                            Eigen::VectorXd::Constant(grid.n_points(), 2e-5);
+  const Eigen::VectorXd d2 = d + 2e-6 * random_vector(grid.n_points(), 2);
+  contact::ProjectedCgOptions options;
+  options.operator_norm = contact::operator_norm(product, grid.n_points());
+  const auto cold       = contact::solve_lcp_projected_cg(product, -d, {}, options);
+  const auto warm       = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
+  const auto again      = contact::solve_lcp_projected_cg(product, -d2, {}, options);
+  std::vector<bool> none;
+  const auto        pivoting  = contact::solve_lcp(W, -d2, none);
+  const auto        reference = test::siconos_lemke(W, -d2);
+  unsigned int      n_active  = 0;
+  for (unsigned int i = 0; i < grid.n_points(); ++i)
+    n_active += pivoting.z[i] > 0.;
+  BOOST_TEST_MESSAGE("480 points, " << n_active << " in contact: MPRGP cold " << cold.iterations
+                                    << " iterations, warm " << warm.iterations << " (from 0: "
+                                    << again.iterations << "); against pivoting "
+                                    << test::relative_difference(warm.z, pivoting.z, W, -d2)
+                                    << ", against Siconos "
+                                    << test::relative_difference(warm.z, reference.z, W, -d2));
+  BOOST_TEST(cold.converged);
+  BOOST_TEST(warm.converged);
+  BOOST_TEST(n_active > 20u);
+  BOOST_TEST(warm.iterations < again.iterations);
+  BOOST_TEST(test::relative_difference(warm.z, pivoting.z, W, -d2) < 1e-8);
+  BOOST_TEST(test::relative_difference(warm.z, reference.z, W, -d2) < 1e-8);
+  // Its gap where in contact, and no point inside the road, to tau |q|.
+  const Eigen::VectorXd w = W * warm.z - d2;
+  for (unsigned int i = 0; i < grid.n_points(); ++i)
+    BOOST_TEST(std::abs(std::min(warm.z[i] > 0. ? std::abs(w[i]) : w[i], 0.)) <=
+               1.01e-10 * d2.cwiseAbs().maxCoeff());
+}
+
+BOOST_AUTO_TEST_CASE(mprgp_edge_cases_and_failures)
+{
+  const Eigen::MatrixXd W = Eigen::MatrixXd::Identity(5, 5) * 2.;
+  // No contact: z = 0 at once; every point pushed: z = -q / 2.
+  const auto none = contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Ones(5), {});
+  BOOST_TEST(none.converged);
+  BOOST_TEST(none.iterations == 0u);
+  BOOST_TEST(none.z.cwiseAbs().maxCoeff() == 0.);
+  const auto all = contact::solve_lcp_projected_cg(dense_operator(W), -Eigen::VectorXd::Ones(5), {});
+  BOOST_TEST(all.converged);
+  BOOST_TEST((all.z - Eigen::VectorXd::Constant(5, 0.5)).cwiseAbs().maxCoeff() < 1e-12);
+  // q = 0: z = 0.
+  BOOST_TEST(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Zero(5), {}).converged);
+  // Not positive definite: reported, not a wrong answer.
+  const Eigen::MatrixXd indefinite = Eigen::Vector2d(1., -1.).asDiagonal();
+  contact::ProjectedCgOptions options;
+  options.operator_norm = 1.;
+  const auto failed =
+    contact::solve_lcp_projected_cg(dense_operator(indefinite), Eigen::Vector2d(1., -1.), {}, options);
+  BOOST_TEST(!failed.converged);
+  BOOST_TEST(failed.message.find("not positive") != std::string::npos);
+  BOOST_CHECK_THROW(contact::operator_norm(dense_operator(-W), 5), NumericalError);
+  BOOST_CHECK_THROW(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Constant(5, NAN), {}),
+                    NumericalError);
+  BOOST_CHECK_THROW(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Ones(5),
+                                                    Eigen::VectorXd::Ones(4)),
+                    InputError);
+  // The iteration limit, reported.
+  options.max_iterations = 1;
+  const Eigen::MatrixXd hard = Eigen::Vector3d(1., 10., 100.).asDiagonal();
+  const auto limited =
+    contact::solve_lcp_projected_cg(dense_operator(hard), -Eigen::Vector3d(1., 1., 1.), {}, options);
+  BOOST_TEST(!limited.converged);
+  BOOST_TEST(limited.message.find("iterations") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
+{
+  // A synthetic modal model on 4 x 3 coarse cells, rolled on road-A on a 3 x
+  // 3 grid from the static start: the matrix-free solver against pivoting.
+  const auto           coarse = coarse_points(4, 3);
+  const unsigned int   n_c    = coarse.size(), m = 12;
+  modal::ModeSynthesis s;
+  s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 200., 3000.);
+  s.damping_ratio = Eigen::VectorXd::Constant(m, 0.04);
+  s.shapes.resize(m, n_c);
+  for (unsigned int k = 0; k < m; ++k)
+    for (unsigned int c = 0; c < n_c; ++c)
+      s.shapes(k, c) = 0.3 * std::cos(0.7 * k + 1.3 * c) + 0.1;
+  s.instantaneous = coarse_compliance(coarse);
+  s.points        = coarse;
+  s.wavenumber.assign(m, 0);
+  s.dispersion.frequency_hz  = {Eigen::VectorXd::LinSpaced(2, 200., 3000.)};
+  s.dispersion.damping_ratio = {Eigen::VectorXd::Constant(2, 0.04)};
+  const modal::PatchModel model = modal::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+
+  const contact::ContactGrid pivoting(coarse, 3, tread_layer), free(coarse, 3, tread_layer, true);
+  std::vector<road::WavelengthBand> bands;
+  std::vector<double>               levels;
+  road::texture_preset("road-A", bands, levels);
+  const road::Texture   texture = road::synthetic_texture(bands, levels, 3.84e-4, 2048, 96, 11);
+  const road::PatchRoad road(texture, pivoting.points, road::RoadSampling::envelope, "test");
+  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
+    road.heights(x, z, slope);
+  };
+  contact::RollingSetup setup;
+  setup.speed       = 25.;
+  setup.time_step   = 3.84e-4 / 25.;
+  setup.n_steps     = 400;
+  setup.static_load = 150.;
+  const Eigen::VectorXd tread = contact::tread_heights(pivoting.points);
+  const Eigen::MatrixXd G0    = model.static_compliance();
+  const auto start = contact::start_grid_contact(pivoting, G0, tread, heights, setup);
+  const auto start_free = contact::start_grid_contact(free, G0, tread, heights, setup);
+  BOOST_TEST(start.n_contact > 0u);
+  BOOST_TEST(std::abs(start_free.delta / start.delta - 1.) < 1e-7);
+  BOOST_TEST((start_free.q - start.q).cwiseAbs().maxCoeff() < 1e-7 * start.q.maxCoeff());
+
+  std::vector<Eigen::VectorXd> forces[2];
+  contact::RollingSummary      summary[2];
+  const contact::ContactGrid  *grids[2] = {&pivoting, &free};
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      auto convolution = contact::make_grid_convolution(
+        contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0, 1),
+        *grids[k]);
+      summary[k] = contact::roll_patch(*convolution, tread, heights, start, setup,
+                                       [&](const contact::RollingStep &step) {
+                                         forces[k].push_back(step.force);
+                                       });
+    }
+  double peak = 0., worst = 0.;
+  for (std::size_t k = 0; k < forces[0].size(); ++k)
+    {
+      peak  = std::max(peak, forces[0][k].cwiseAbs().maxCoeff());
+      worst = std::max(worst, (forces[0][k] - forces[1][k]).cwiseAbs().maxCoeff());
+    }
+  BOOST_TEST_MESSAGE("rolling, projected CG against pivoting: largest force difference "
+                     << worst / peak << " of the peak " << peak << " N; largest penetration "
+                     << summary[1].max_penetration << " m against " << summary[0].max_penetration);
+  BOOST_TEST(summary[0].failed_steps == 0u);
+  BOOST_TEST(summary[1].failed_steps == 0u);
+  BOOST_TEST(summary[1].max_contact_fraction > summary[1].min_contact_fraction);
+  BOOST_TEST(worst < 1e-7 * peak);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
