@@ -9,6 +9,7 @@
 // The 52 lowest modes (wavenumbers n = 0 to 10) come also from the cell one
 // wavenumber at a time (the Bloch modes of the modal synthesis): they must
 // equal the full ring's to 1e-8, and CalculiX's to the bricks' difference.
+#include "calculix.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/abaqus_export.h>
@@ -34,36 +35,9 @@ using namespace dealii;
 
 namespace
 {
-  bool
-  calculix_available()
-  {
-    return std::system("command -v ccx > /dev/null 2>&1") == 0;
-  }
-
-  /// Run ccx on job.inp in @p dir; the contents of job.dat.
-  std::string
-  run_calculix(const std::filesystem::path &dir, const std::string &input)
-  {
-    std::ofstream(dir / "job.inp") << input;
-    const std::string command = "cd '" + dir.string() + "' && OMP_NUM_THREADS=2 ccx -i job > ccx.log 2>&1";
-    BOOST_REQUIRE_MESSAGE(std::system(command.c_str()) == 0,
-                          "CalculiX failed; see " << (dir / "ccx.log").string());
-    std::ifstream     in(dir / "job.dat");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  geometry::GeometryParameters
-  coarse_tyre()
-  {
-    geometry::GeometryParameters p;
-    p.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
-    p.mesh_size = 0.02;
-    p.n_cells   = 32;
-    return p;
-  }
-
+  using test::calculix_available;
+  using test::coarse_tyre;
+  using test::run_calculix;
 
   /// The coarse tyre as our periodic cell and as its ring exported to
   /// CalculiX, with one set of materials.
