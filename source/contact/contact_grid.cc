@@ -41,8 +41,20 @@ namespace greentread
     {
       prm.enter_subsection("Contact grid");
       subdivisions = prm.get_integer("Subdivisions");
-      matrix_free  = prm.get("Solver") == "projected CG";
+      solver       = prm.get("Solver");
       prm.leave_subsection();
+    }
+
+
+
+    bool
+    ContactGridParameters::matrix_free(const bool reciprocal) const
+    {
+      if (solver == "projected CG" && !reciprocal)
+        throw InputError("parameter 'Contact grid/Solver' = projected CG needs a reciprocal "
+                         "patch model; allowed with 'Patch model/Source' = identified: "
+                         "pivoting");
+      return solver == "projected CG";
     }
 
 

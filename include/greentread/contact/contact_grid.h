@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 /**
@@ -49,8 +50,8 @@
  * the cells' scale is in G's modes). With s = 1 the grid is the Green's
  * functions' points and adds nothing.
  *
- * **Two solvers of the contact** (`Contact grid/Solver`, the one selection
- * point is the grid's ContactGrid::matrix_free):
+ * **Two solvers of the contact** (`Contact grid/Solver`, chosen in one
+ * place, ContactGridParameters::matrix_free()):
  * - `pivoting`: the N x N compliances are formed, and each step's LCP is
  *   solved by block principal pivoting (greentread/contact/lcp.h), warm-
  *   started from the last step's active set. Exact to round-off; memory
@@ -73,8 +74,16 @@ namespace greentread
     {
       /// Contact rectangles per Green's-function rectangle along each direction.
       unsigned int subdivisions = 4;
-      /// `projected CG` rather than `pivoting` (the file documentation).
-      bool matrix_free = false;
+      /// `Solver`: `pivoting` or `projected CG` (the file documentation).
+      std::string solver = "pivoting";
+
+      /**
+       * @brief Whether the grid's solve is matrix-free (`projected CG`).
+       * @throws InputError for `projected CG` with a model that is not
+       * reciprocal, naming the parameters.
+       */
+      bool
+      matrix_free(bool reciprocal) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The contact grid's two solvers side by side ('Contact grid/Solver'):
+# warm-started block principal pivoting on the formed N x N compliances (the
+# reference, exact to round-off) against the matrix-free projected CG (MPRGP,
+# the tread's layer by FFT), on the main job's saved stages: road-A and road-B
+# at 90 km/h over 1.2 m on 4 x 4 and 8 x 8 subdivisions (1920 and 7680
+# points). For each run: the time per step and, for projected CG, the largest
+# band-level difference (100 Hz to 5 kHz) from pivoting, stress and force.
+#
+#   bash benchmarks/contact_solvers.sh [main job's output] [program] [subdivisions...]
+#
+# defaults: output/, build/greentread, subdivisions 4 8. About 12 minutes on
+# this 2-core machine (pivoting at 7680 points is most of it).
+set -euo pipefail
+
+saved=${1:-output}
+program=${2:-build/greentread}
+shift $(( $# < 2 ? $# : 2 ))
+grids=("$@")
+(( ${#grids[@]} > 0 )) || grids=(4 8)
+source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+check_saved_stages contact_solvers.sh
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# ms per step of road $2 in run $1.
+per_step() {
+  awk -v road="$2" '/run road-/ { on = index($0, "run " road "_") > 0 }
+                    on && / ms per step/ { print $3; exit }' "$work/$1.log"
+}
+
+# Largest |level difference| [dB] between runs $1 and $2, road $3, spectrum kind $4.
+difference() {
+  awk -F, 'FNR == 1 { file++ }
+    /^[0-9]/ { if (file == 1) a[$1] = $6; else b[$1] = $6 }
+    END { worst = 0; for (f in a) if (f in b) { d = a[f] - b[f]; if (d < 0) d = -d; if (d > worst) worst = d }
+          printf "%.2g", worst }' "$work/$1/$4$3_90kmh.csv" "$work/$2/$4$3_90kmh.csv"
+}
+
+for s in "${grids[@]}"; do
+  for solver in pivoting "projected CG"; do
+    name="s${s}_${solver// /_}"
+    echo "  running $name ..." >&2
+    run_saved "$name" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
+      --set "Rolling/Distance=1.2" --set "Contact grid/Subdivisions=$s" \
+      --set "Contact grid/Solver=$solver"
+  done
+done
+
+echo "Contact solvers: road-A and road-B at 90 km/h over 1.2 m (3125 steps), on the main job's saved stages"
+echo "| points | road | pivoting [ms per step] | projected CG [ms per step] | stress: largest band difference [dB] | force: largest band difference [dB] |"
+echo "| --- | --- | --- | --- | --- | --- |"
+for s in "${grids[@]}"; do
+  for road in road-A road-B; do
+    echo "| $(( 120 * s * s )) | $road | $(per_step "s${s}_pivoting" $road) | $(per_step "s${s}_projected_CG" $road) | $(difference "s${s}_pivoting" "s${s}_projected_CG" $road spectrum_) | $(difference "s${s}_pivoting" "s${s}_projected_CG" $road spectrum_force_) |"
+  done
+done
