@@ -63,7 +63,7 @@ namespace greentread
           throw NumericalError("projected CG: the product with the operator is not finite");
       };
       // phi: the free gradient; beta: the chopped one; the return: the
-      // squared norm of the projected gradient's largest entry (for the test).
+      // projected gradient's largest absolute entry (for the test).
       const auto split = [&] {
         double largest = 0.;
         for (Eigen::Index i = 0; i < n; ++i)
