@@ -18,6 +18,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "contact_grid_fixture.h"
 #include "siconos_reference.h"
 
 #include <cmath>
@@ -25,41 +26,9 @@
 
 using namespace greentread;
 
-namespace
-{
-  const contact::ElasticLayer tread_layer{7e6, 0.49, 0.008};
-
-  /// The Green's functions' points: nx x ny rectangles of 6 x 6.667 mm,
-  /// symmetric about the centre, listed across first (as the Green's stage
-  /// does) but in a shuffled order, which the grid must not depend on.
-  std::vector<std::array<double, 3>>
-  coarse_points(const unsigned int nx, const unsigned int ny)
-  {
-    std::vector<std::array<double, 3>> p;
-    for (unsigned int i = 0; i < nx; ++i)
-      for (unsigned int j = 0; j < ny; ++j)
-        p.push_back({{(i + 0.5 - 0.5 * nx) * 6e-3, (j + 0.5 - 0.5 * ny) * (0.08 / 12), 0.27}});
-    std::mt19937 rng(5);
-    std::shuffle(p.begin(), p.end(), rng);
-    return p;
-  }
-
-  /// A symmetric positive definite "Green's function" for the coarse cells:
-  /// the layer's own compliance between them plus a smooth global part.
-  Eigen::MatrixXd
-  coarse_compliance(const std::vector<std::array<double, 3>> &points)
-  {
-    const unsigned int n = points.size();
-    Eigen::MatrixXd    G(n, n);
-    for (unsigned int a = 0; a < n; ++a)
-      for (unsigned int b = 0; b < n; ++b)
-        {
-          const double r = std::hypot(points[a][0] - points[b][0], points[a][1] - points[b][1]);
-          G(a, b)        = 4e-6 * std::exp(-r / 0.03);
-        }
-    return G + 6e-6 * Eigen::MatrixXd::Identity(n, n);
-  }
-} // namespace
+using test::coarse_compliance;
+using test::coarse_points;
+using test::tread_layer;
 
 BOOST_AUTO_TEST_SUITE(contact_grid)
 
@@ -186,25 +155,14 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
   // 2 x 2 grid by the grid's convolution, against the same model written
   // out on every contact point (shapes repeated over each cell's points,
   // G_r replaced by the grid's compliance of G_r) with the plain recursion.
-  const auto           coarse = coarse_points(4, 3);
-  const unsigned int   n_c    = coarse.size(), m = 12;
-  modal::ModeSynthesis s;
-  s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 200., 3000.);
-  s.damping_ratio = Eigen::VectorXd::Constant(m, 0.04);
-  s.shapes.resize(m, n_c);
-  for (unsigned int k = 0; k < m; ++k)
-    for (unsigned int c = 0; c < n_c; ++c)
-      s.shapes(k, c) = 0.3 * std::cos(0.7 * k + 1.3 * c) + 0.1;
-  s.instantaneous = coarse_compliance(coarse);
-  s.points        = coarse;
-  s.wavenumber.assign(m, 0);
-  s.dispersion.frequency_hz  = {Eigen::VectorXd::LinSpaced(2, 200., 3000.)};
-  s.dispersion.damping_ratio = {Eigen::VectorXd::Constant(2, 0.04)};
+  const auto                 coarse = coarse_points(4, 3);
+  const unsigned int         n_c    = coarse.size();
+  const modal::ModeSynthesis s      = test::synthetic_modes(coarse);
   const modal::PatchModel coarse_model = modal::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid grid(coarse, 2, tread_layer);
   modal::ModeSynthesis       f = s;
-  f.shapes.resize(m, grid.n_points());
+  f.shapes.resize(s.shapes.rows(), grid.n_points());
   for (unsigned int p = 0; p < grid.n_points(); ++p)
     f.shapes.col(p) = s.shapes.col(grid.coarse_of[p]);
   f.instantaneous = grid.compliance(s.instantaneous);

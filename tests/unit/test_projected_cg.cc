@@ -18,6 +18,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "contact_grid_fixture.h"
 #include "siconos_reference.h"
 
 #include <cmath>
@@ -25,31 +26,15 @@
 
 using namespace greentread;
 
+using test::coarse_compliance;
+using test::tread_layer;
+
 namespace
 {
-  const contact::ElasticLayer tread_layer{7e6, 0.49, 0.008};
-
   std::vector<std::array<double, 3>>
   coarse_points(const unsigned int nx, const unsigned int ny)
   {
-    std::vector<std::array<double, 3>> p;
-    for (unsigned int i = 0; i < nx; ++i)
-      for (unsigned int j = 0; j < ny; ++j)
-        p.push_back({{(i + 0.5 - 0.5 * nx) * 6e-3, (j + 0.5 - 0.5 * ny) * (0.08 / 12), 0.27}});
-    return p;
-  }
-
-  /// A symmetric positive definite compliance of the coarse cells.
-  Eigen::MatrixXd
-  coarse_compliance(const std::vector<std::array<double, 3>> &points)
-  {
-    const unsigned int n = points.size();
-    Eigen::MatrixXd    G(n, n);
-    for (unsigned int a = 0; a < n; ++a)
-      for (unsigned int b = 0; b < n; ++b)
-        G(a, b) = 4e-6 * std::exp(-std::hypot(points[a][0] - points[b][0],
-                                              points[a][1] - points[b][1]) / 0.03);
-    return G + 6e-6 * Eigen::MatrixXd::Identity(n, n);
+    return test::coarse_points(nx, ny, false);
   }
 
   contact::SymmetricOperator
@@ -219,20 +204,9 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
 {
   // A synthetic modal model on 4 x 3 coarse cells, rolled on road-A on a 3 x
   // 3 grid from the static start: the matrix-free solver against pivoting.
-  const auto           coarse = coarse_points(4, 3);
-  const unsigned int   n_c    = coarse.size(), m = 12;
-  modal::ModeSynthesis s;
-  s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 200., 3000.);
-  s.damping_ratio = Eigen::VectorXd::Constant(m, 0.04);
-  s.shapes.resize(m, n_c);
-  for (unsigned int k = 0; k < m; ++k)
-    for (unsigned int c = 0; c < n_c; ++c)
-      s.shapes(k, c) = 0.3 * std::cos(0.7 * k + 1.3 * c) + 0.1;
-  s.instantaneous = coarse_compliance(coarse);
-  s.points        = coarse;
-  s.wavenumber.assign(m, 0);
-  s.dispersion.frequency_hz  = {Eigen::VectorXd::LinSpaced(2, 200., 3000.)};
-  s.dispersion.damping_ratio = {Eigen::VectorXd::Constant(2, 0.04)};
+  const auto                 coarse = coarse_points(4, 3);
+  const unsigned int         n_c    = coarse.size();
+  const modal::ModeSynthesis s      = test::synthetic_modes(coarse);
   const modal::PatchModel model = modal::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid pivoting(coarse, 3, tread_layer), free(coarse, 3, tread_layer, true);
