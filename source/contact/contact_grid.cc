@@ -13,21 +13,24 @@ namespace greentread
     ContactGridParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact grid");
-      prm.declare_entry("Subdivisions", "4", dealii::Patterns::Integer(1, 16),
+      prm.declare_entry("Subdivisions", "8", dealii::Patterns::Integer(1, 32),
                         "Contact points per Green's-function rectangle along each direction: "
                         "s splits each rectangle ('Green's functions/Patch length' / 'Points "
                         "along' x 'Patch width' / 'Points across') into s x s contact "
                         "rectangles. The finite-element Green's functions carry the "
                         "compliance at the rectangles' scale, an elastic layer (the tread's "
                         "rubber and thickness on a rigid belt) what lies below it. 1: the "
-                        "Green's functions' points (the paper's grid). The default 4 (1.5 x "
-                        "1.67 mm on the default patch) comes from the README's convergence "
-                        "study (benchmarks/contact_grid_study.sh).");
-      prm.declare_entry("Solver", "pivoting", dealii::Patterns::Selection("pivoting|projected CG"),
-                        "The contact's complementarity solve at each step: 'pivoting' forms "
+                        "Green's functions' points (the paper's grid). The default 8 (0.75 x "
+                        "0.83 mm on the default patch, 7680 points) comes from the README's "
+                        "convergence study (benchmarks/contact_grid_study.sh).");
+      prm.declare_entry("Solver", "auto",
+                        dealii::Patterns::Selection("auto|pivoting|projected CG"),
+                        "The contact's complementarity solve at each step: 'auto' is "
+                        "'projected CG' with a reciprocal patch model ('Patch model/Source' "
+                        "= fe modes) and 'pivoting' otherwise; 'pivoting' forms "
                         "the contact points' N x N compliances and solves by warm-started block "
                         "principal pivoting (exact to round-off; 8 N^2 bytes per matrix, up to "
-                        "about 8,000 points); 'projected CG' forms no N x N matrix (the tread's "
+                        "10,000 points); 'projected CG' forms no N x N matrix (the tread's "
                         "layer by FFT) and solves the bound-constrained quadratic programme by "
                         "MPRGP to a gap of 1e-10 of the road's demand (needs a reciprocal patch "
                         "model: 'Patch model/Source' = fe modes).");
@@ -48,13 +51,25 @@ namespace greentread
 
 
     bool
-    ContactGridParameters::matrix_free(const bool reciprocal) const
+    ContactGridParameters::matrix_free(const bool reciprocal, const unsigned int n_coarse) const
     {
       if (solver == "projected CG" && !reciprocal)
         throw InputError("parameter 'Contact grid/Solver' = projected CG needs a reciprocal "
                          "patch model; allowed with 'Patch model/Source' = identified: "
-                         "pivoting");
-      return solver == "projected CG";
+                         "auto or pivoting");
+      const bool free = solver == "projected CG" || (solver == "auto" && reciprocal);
+      // Pivoting holds several N x N matrices (8 N^2 bytes each).
+      const std::size_t n = std::size_t(n_coarse) * subdivisions * subdivisions;
+      if (!free && n > max_pivoting_points)
+        throw InputError("parameter 'Contact grid/Subdivisions' = " +
+                         std::to_string(subdivisions) + " gives " + std::to_string(n) +
+                         " contact points, too many for the solver 'pivoting' (N x N "
+                         "matrices of " + format_printf("%.1f", 8e-9 * double(n) * double(n)) +
+                         " GB each); allowed with it: up to " +
+                         std::to_string(max_pivoting_points) +
+                         " points, or 'Contact grid/Solver' = projected CG with 'Patch "
+                         "model/Source' = fe modes");
+      return free;
     }
 
 
@@ -67,7 +82,7 @@ namespace greentread
       , n_coarse(coarse_points.size())
     {
       if (subdivisions == 0)
-        throw InputError("parameter 'Contact grid/Subdivisions' = 0; allowed: 1 to 16");
+        throw InputError("parameter 'Contact grid/Subdivisions' = 0; allowed: 1 to 32");
       // The coarse lattice: its distinct x and y, increasing.
       std::vector<double> xs, ys;
       const auto          add = [](std::vector<double> &v, const double x) {

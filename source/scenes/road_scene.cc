@@ -68,7 +68,8 @@ namespace greentread
       contact_grid.parse_parameters(prm);
       // The solver against the patch model, refused now rather than after
       // the Green's functions.
-      contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes);
+      contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
+                               green.patch.points_along * green.patch.points_across);
 
       // A texture file is read now, not after the Green's functions (five
       // minutes): a malformed file, or one too narrow or too short for the
@@ -163,7 +164,8 @@ namespace greentread
       const contact::ContactGrid grid(
         model.points, contact_grid.subdivisions,
         {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
-        contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes));
+        contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
+                                 unsigned(model.points.size())));
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "

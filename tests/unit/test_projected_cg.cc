@@ -259,4 +259,32 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   BOOST_TEST(worst < 1e-7 * peak);
 }
 
+BOOST_AUTO_TEST_CASE(the_solver_is_chosen_in_one_place_from_the_model_and_the_grid)
+{
+  // 'auto' is projected CG with a reciprocal model (the ring's modes) and
+  // pivoting with the identified one; pivoting is refused above its size,
+  // projected CG without reciprocity, each with the parameter named.
+  contact::ContactGridParameters p;
+  const unsigned int             n_coarse = 120;
+  p.subdivisions                          = 8; // 7680 points
+  BOOST_TEST(p.solver == "auto");
+  BOOST_TEST(p.matrix_free(true, n_coarse));
+  BOOST_TEST(!p.matrix_free(false, n_coarse));
+  p.solver = "pivoting";
+  BOOST_TEST(!p.matrix_free(true, n_coarse));
+  p.subdivisions = 10; // 12,000 points
+  BOOST_CHECK_EXCEPTION(p.matrix_free(true, n_coarse), InputError, [](const InputError &e) {
+    return std::string(e.what()).find("'Contact grid/Subdivisions' = 10 gives 12000") !=
+           std::string::npos;
+  });
+  p.solver = "auto";
+  BOOST_CHECK_EXCEPTION(p.matrix_free(false, n_coarse), InputError, [](const InputError &e) {
+    return std::string(e.what()).find("too many for the solver 'pivoting'") != std::string::npos;
+  });
+  BOOST_TEST(p.matrix_free(true, n_coarse));
+  p.solver = "projected CG";
+  BOOST_TEST(p.matrix_free(true, n_coarse));
+  BOOST_CHECK_THROW(p.matrix_free(false, n_coarse), InputError);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

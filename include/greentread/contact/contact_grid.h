@@ -55,7 +55,8 @@
  * - `pivoting`: the N x N compliances are formed, and each step's LCP is
  *   solved by block principal pivoting (greentread/contact/lcp.h), warm-
  *   started from the last step's active set. Exact to round-off; memory
- *   8 N^2 bytes per matrix (several are held), so up to about 8,000 points.
+ *   8 N^2 bytes per matrix (several are held), so up to 10,000 points
+ *   (refused above).
  * - `projected CG`: no N x N matrix. The compliance is applied as
  *   $A^T (G (A f)) + (I - P) L_f (I - P) f$, L_f by FFT on the lattice
  *   (greentread/contact/lattice_convolution.h), and each step's LCP is the
@@ -63,6 +64,8 @@
  *   (greentread/contact/projected_cg.h), warm-started from the last step's
  *   forces. O(N log N) per product; it needs a reciprocal (symmetric) patch
  *   model, which the ring's own modes are.
+ * - `auto` (the default): `projected CG` with the ring's own modes,
+ *   `pivoting` with the identified (non-reciprocal) model.
  */
 
 namespace greentread
@@ -73,17 +76,26 @@ namespace greentread
     struct ContactGridParameters
     {
       /// Contact rectangles per Green's-function rectangle along each direction.
-      unsigned int subdivisions = 4;
-      /// `Solver`: `pivoting` or `projected CG` (the file documentation).
-      std::string solver = "pivoting";
+      unsigned int subdivisions = 8;
+      /// `Solver`: `auto`, `pivoting` or `projected CG` (the file
+      /// documentation).
+      std::string solver = "auto";
+
+      /// The most contact points `pivoting` takes (its N x N matrices: 0.8 GB
+      /// each at 10,000 points).
+      static constexpr std::size_t max_pivoting_points = 10000;
 
       /**
        * @brief Whether the grid's solve is matrix-free (`projected CG`).
+       * @param[in] reciprocal Whether the patch model is reciprocal (the
+       * ring's own modes).
+       * @param[in] n_coarse The Green's functions' points.
        * @throws InputError for `projected CG` with a model that is not
-       * reciprocal, naming the parameters.
+       * reciprocal, or `pivoting` on more than max_pivoting_points points,
+       * naming the parameters.
        */
       bool
-      matrix_free(bool reciprocal) const;
+      matrix_free(bool reciprocal, unsigned int n_coarse) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
