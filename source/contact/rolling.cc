@@ -9,6 +9,15 @@ namespace greentread
 {
   namespace contact
   {
+    unsigned int
+    steps_to_cover(const double distance, const double speed, const double dt)
+    {
+      const double steps = distance / (speed * dt);
+      return static_cast<unsigned int>(std::ceil(steps * (1. - 1e-9)));
+    }
+
+
+
     Eigen::VectorXd
     tread_heights(const std::vector<std::array<double, 3>> &points)
     {

@@ -287,8 +287,7 @@ namespace greentread
     {
       const double V  = speed_kmh / 3.6;
       const double dt = rolling.time_step > 0. ? rolling.time_step : texture.dx / V;
-      const unsigned int n_steps =
-        static_cast<unsigned int>(std::ceil(rolling.distance / (V * dt)));
+      const unsigned int n_steps = contact::steps_to_cover(rolling.distance, V, dt);
       if (rolling.distance > patch_road.usable_length())
         throw InputError("parameter 'Rolling/Distance' = " +
                          format_short(rolling.distance) + " m is longer than road '" +

@@ -180,6 +180,28 @@ namespace
 
 BOOST_AUTO_TEST_SUITE(patch_contact)
 
+BOOST_AUTO_TEST_CASE(a_whole_number_of_steps_is_not_rounded_up)
+{
+  // k steps of dt cover k V dt, for every k, speed and dt a multiple of the
+  // road's sampling (the time-step study's dt): plain ceil() of the
+  // floating-point ratio gives k + 1 in about 5% of these cases, a record one
+  // step longer and other Fourier lines. A ratio just above a whole number
+  // is still rounded up.
+  unsigned int wrong = 0, cases = 0;
+  for (const double kmh : {50., 70., 90., 130.})
+    for (const double f : {0.05, 0.2, 0.5, 1., 2., 5., 20.})
+      {
+        const double V = kmh / 3.6, dt = 0.000384 / V * f;
+        for (unsigned int k = 1; k < 4000; ++k, ++cases)
+          wrong += contact::steps_to_cover(k * 0.000384 * f, V, dt) != k;
+        BOOST_TEST(contact::steps_to_cover(1.000001 * 0.000384 * f, V, dt) == 2u);
+      }
+  BOOST_TEST(wrong == 0u, wrong << " of " << cases << " distances of k steps not k steps");
+  BOOST_TEST(contact::steps_to_cover(1.2, 25., 7.68e-6) == 6250u);
+  BOOST_TEST(contact::steps_to_cover(1.2, 25., 3.072e-5) == 1563u);
+  BOOST_TEST(contact::steps_to_cover(2., 25., 1.536e-5) == 5209u);
+}
+
 BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
 {
   // The 1-DoF problem of Section 3 on a sinusoid, run through the patch

@@ -47,6 +47,16 @@ namespace greentread
     using PatchRoadHeights =
       std::function<void(double s, Eigen::VectorXd &z, Eigen::VectorXd &slope)>;
 
+    /**
+     * @brief The steps of @p dt that cover @p distance at @p speed: the
+     * ratio rounded up, except that a ratio whole to 1e-9 (1.2 m at 7.68 us
+     * and 25 m/s: 6250.000000001 in floating point) is that whole number, so
+     * that a run's record, and with it the spectrum's Fourier lines, does
+     * not change with the rounding.
+     */
+    unsigned int
+    steps_to_cover(double distance, double speed, double dt);
+
     /// The tread's own height above the bottom of the tyre under each point,
     /// \f$r - \sqrt{r^2 - x^2}\f$ (its curvature along x) [m].
     Eigen::VectorXd
