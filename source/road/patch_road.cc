@@ -183,6 +183,21 @@ namespace greentread
               for (int j = j0; j <= j1; ++j)
                 for (unsigned int i = 0; i < texture.nx; ++i)
                   profile[i] = std::max(profile[i], texture(i, j));
+              // A strip narrower than the road's sampling (contact rectangles
+              // finer than it) holds one sample or none: the highest point of
+              // the road over it, linear between samples, is that sample or
+              // one of its edges.
+              if (dy_points < texture.dy)
+                for (const double edge : {y - 0.5 * dy_points, y + 0.5 * dy_points})
+                  {
+                    const double s = (edge + y_centre) / texture.dy;
+                    const unsigned int j =
+                      std::min<unsigned int>(texture.ny - 2, std::max(0., std::floor(s)));
+                    const double w = s - j;
+                    for (unsigned int i = 0; i < texture.nx; ++i)
+                      profile[i] =
+                        std::max(profile[i], (1. - w) * texture(i, j) + w * texture(i, j + 1));
+                  }
               // ... and along x over the tributary length (a sliding maximum).
               const int           half = std::max(0, int(std::floor(0.5 * dx_points / texture.dx)));
               std::vector<double> across = profile;

@@ -5,6 +5,7 @@
 
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
+#include <greentread/road/patch_road.h>
 #include <greentread/road/texture.h>
 
 #include <boost/test/unit_test.hpp>
@@ -14,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 using namespace greentread;
 
@@ -129,6 +131,55 @@ BOOST_AUTO_TEST_CASE(synthetic_textures_match_their_presets)
   std::vector<road::WavelengthBand> bands;
   std::vector<double>               levels;
   BOOST_CHECK_THROW(road::texture_preset("road-C", bands, levels), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(envelope_of_strips_narrower_than_the_sampling)
+{
+  // Contact rectangles 0.25 mm wide across a road sampled every 0.384 mm
+  // (grids with more than 17 x 17 points per Green's-function rectangle):
+  // some strips hold no sample. The envelope must be the highest point of the
+  // road, linear between samples, over each strip: against a brute-force
+  // maximum over 4001 positions across it. The profiles are constant along x,
+  // so that only the strip across y matters.
+  road::Texture t;
+  t.dx = t.dy = 0.384e-3;
+  t.nx        = 60;
+  t.ny        = 40;
+  t.z.resize(std::size_t(t.nx) * t.ny);
+  std::mt19937                           random(7);
+  std::uniform_real_distribution<double> height(0., 1e-3);
+  std::vector<double>                    f(t.ny);
+  for (auto &v : f)
+    v = height(random);
+  for (unsigned int j = 0; j < t.ny; ++j)
+    for (unsigned int i = 0; i < t.nx; ++i)
+      t.z[std::size_t(j) * t.nx + i] = f[j];
+
+  const double                       w = 0.25e-3;
+  std::vector<std::array<double, 3>> points;
+  for (int k = 0; k < 40; ++k)
+    points.push_back({{0., (k - 19.5) * w, 0.27}});
+  const road::PatchRoad road(t, points, road::RoadSampling::envelope, "strips");
+  const double          y_centre = 0.5 * (t.ny - 1) * t.dy;
+  const auto            linear   = [&](const double y) {
+    const double       s = (y + y_centre) / t.dy;
+    const unsigned int j = std::min<unsigned int>(t.ny - 2, std::floor(s));
+    return (1. - (s - j)) * f[j] + (s - j) * f[j + 1];
+  };
+  double worst = 0.;
+  for (unsigned int p = 0; p < points.size(); ++p)
+    {
+      double top = -1.;
+      for (int m = 0; m <= 4000; ++m)
+        top = std::max(top, linear(points[p][1] - 0.5 * w + w * m / 4000.));
+      double z, slope;
+      road.height(p, 10 * t.dx, z, slope);
+      BOOST_TEST(std::isfinite(z));
+      BOOST_TEST(z >= top - 1e-12, "strip " << p);
+      worst = std::max(worst, std::abs(z - top));
+    }
+  // The brute force's spacing (62.5 nm) times the steepest slope (2.6).
+  BOOST_TEST(worst < 2e-7, worst);
 }
 
 BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
