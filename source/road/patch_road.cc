@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 namespace greentread
 {
@@ -160,6 +161,13 @@ namespace greentread
 
       // One profile per row of points across the tread.
       const double y_centre = 0.5 * (texture.ny - 1) * texture.dy;
+      // The road at y across it, linear between its rows: the row j below y
+      // and the weight w of the row above.
+      const auto between_rows = [&](const double y) {
+        const double       s = (y + y_centre) / texture.dy;
+        const unsigned int j = std::min<unsigned int>(texture.ny - 2, std::max(0., std::floor(s)));
+        return std::make_pair(j, s - j);
+      };
       for (const double y : ys)
         {
           std::vector<double> profile(texture.nx, -INFINITY);
@@ -168,9 +176,7 @@ namespace greentread
               profile[i] = texture(i, 0);
           else if (sampling == RoadSampling::point)
             {
-              const double       s = (y + y_centre) / texture.dy;
-              const unsigned int j = std::min<unsigned int>(texture.ny - 2, std::floor(s));
-              const double       w = s - j;
+              const auto [j, w] = between_rows(y);
               for (unsigned int i = 0; i < texture.nx; ++i)
                 profile[i] = (1. - w) * texture(i, j) + w * texture(i, j + 1);
             }
@@ -190,10 +196,7 @@ namespace greentread
               if (dy_points < texture.dy)
                 for (const double edge : {y - 0.5 * dy_points, y + 0.5 * dy_points})
                   {
-                    const double s = (edge + y_centre) / texture.dy;
-                    const unsigned int j =
-                      std::min<unsigned int>(texture.ny - 2, std::max(0., std::floor(s)));
-                    const double w = s - j;
+                    const auto [j, w] = between_rows(edge);
                     for (unsigned int i = 0; i < texture.nx; ++i)
                       profile[i] =
                         std::max(profile[i], (1. - w) * texture(i, j) + w * texture(i, j + 1));
