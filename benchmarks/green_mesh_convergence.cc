@@ -6,9 +6,15 @@
 // frequency (Bloch, one core), and at 0, 1, 2 and 4 kHz the driving point at
 // the patch centre and its transfers to the next point along x and across y;
 // then each level's difference from the finest, and the observed order
-// p = log2(|g_1 - g_2| / |g_2 - g_3|) from the three levels.
+// p = log2(|g_1 - g_2| / |g_2 - g_3|) from the three levels (part 1).
 //
-//   green_mesh_convergence [--quick] [--output DIR]
+// Part 2, at 0 Hz: where the default mesh's error comes from (the section
+// and the circumference refined one at a time), then the same three levels
+// with the crown graded ('Crown refinement=2' of the shipped .geo: the
+// crown's elements across the tread and through the tread pattern half the
+// mesh size).
+//
+//   green_mesh_convergence [--quick] [--output DIR] [--part 1|2]
 
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
@@ -19,6 +25,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "benchmark_options.h"
@@ -31,6 +38,7 @@ namespace
   {
     double       mesh_size;
     unsigned int n_cells;
+    unsigned int crown_refinement = 1;
   };
 
   /// What one level gives: the three functions at each frequency.
@@ -49,6 +57,9 @@ namespace
     geometry.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
     geometry.mesh_size = level.mesh_size;
     geometry.n_cells   = level.n_cells;
+    if (level.crown_refinement > 1)
+      geometry.other_constants =
+        "Crown refinement=" + std::to_string(level.crown_refinement);
     periodic::PatchRequest request; // the default: 10 x 12 on 60 x 80 mm
     request.load = periodic::PointLoad::tributary_area;
     // The scenes' inflated tyre: mesh, K, M, C, the inflation and Kp.
@@ -73,6 +84,93 @@ namespace
       frequencies.size();
     return result;
   }
+
+  const char *names[3] = {"driving point", "transfer along x", "transfer across y"};
+
+  void
+  print_level(const Level &level, const Result &result)
+  {
+    std::printf("mesh %.3f m, N = %4u, crown refinement %u: %7u cell DoFs, %8.3g s per "
+                "frequency\n",
+                level.mesh_size, level.n_cells, level.crown_refinement, result.cell_dofs,
+                result.seconds);
+    std::fflush(stdout);
+  }
+
+  /// Three levels, each twice as fine as the one before: the functions, each
+  /// level's difference from the finest and the observed order; also to @p csv.
+  void
+  convergence_table(const std::vector<Level>  &levels,
+                    const std::vector<double> &frequencies,
+                    std::ofstream             &csv)
+  {
+    std::vector<Result> results;
+    for (const auto &level : levels)
+      {
+        results.push_back(run(level, frequencies));
+        print_level(level, results.back());
+      }
+    const Result &finest = results.back();
+    std::printf("\n%-18s %6s | %-26s | %-26s | %-26s | %s\n", "function", "f [Hz]",
+                "|g| [um/N], difference: 1", "2", "3 (finest)", "order");
+    for (unsigned int q = 0; q < 3; ++q)
+      for (std::size_t k = 0; k < frequencies.size(); ++k)
+        {
+          std::printf("%-18s %6.0f |", names[q], frequencies[k]);
+          for (std::size_t l = 0; l < levels.size(); ++l)
+            {
+              const auto   g    = results[l].g[k][q];
+              const double diff = std::abs(g - finest.g[k][q]) / std::abs(finest.g[k][q]);
+              if (l + 1 < levels.size())
+                std::printf(" %10.5g %13.2f%% |", 1e6 * std::abs(g), 100. * diff);
+              else
+                std::printf(" %10.5g %15s |", 1e6 * std::abs(g), "");
+              csv << levels[l].mesh_size << ',' << levels[l].n_cells << ','
+                  << levels[l].crown_refinement << ',' << results[l].cell_dofs << ','
+                  << results[l].seconds << ',' << frequencies[k] << ',' << names[q] << ','
+                  << 1e6 * g.real() << ',' << 1e6 * g.imag() << ',' << diff << '\n';
+            }
+          const double d12 = std::abs(results[0].g[k][q] - results[1].g[k][q]);
+          const double d23 = std::abs(results[1].g[k][q] - results[2].g[k][q]);
+          std::printf(" %5.2f\n", std::log2(d12 / d23));
+        }
+  }
+
+  /// The static functions with the section and the circumference refined one
+  /// at a time from @p base, as changes from it.
+  void
+  direction_table(const Level &base, std::ofstream &csv)
+  {
+    const std::vector<Level>       levels = {base,
+                                             {base.mesh_size / 2, base.n_cells},
+                                             {base.mesh_size, 2 * base.n_cells},
+                                             {base.mesh_size / 2, 2 * base.n_cells}};
+    const char                    *what[4] = {"base", "section halved", "N doubled", "both"};
+    std::vector<Result>            results;
+    const std::vector<double>      zero{0.};
+    for (const auto &level : levels)
+      {
+        results.push_back(run(level, zero));
+        print_level(level, results.back());
+      }
+    std::printf("\n%-18s | %-12s | %-22s | %-22s | %-22s\n", "0 Hz", "base [um/N]",
+                "section halved", "N doubled", "both");
+    for (unsigned int q = 0; q < 3; ++q)
+      {
+        const auto g0 = results[0].g[0][q];
+        std::printf("%-18s | %12.5g |", names[q], 1e6 * std::abs(g0));
+        for (std::size_t l = 1; l < levels.size(); ++l)
+          {
+            const auto g = results[l].g[0][q];
+            std::printf(" %10.5g (%+6.2f%%) |", 1e6 * std::abs(g),
+                        100. * (std::abs(g) - std::abs(g0)) / std::abs(g0));
+          }
+        std::printf("\n");
+        for (std::size_t l = 0; l < levels.size(); ++l)
+          csv << what[l] << ',' << levels[l].mesh_size << ',' << levels[l].n_cells << ','
+              << names[q] << ',' << 1e6 * std::abs(results[l].g[0][q]) << '\n';
+      }
+  }
 } // namespace
 
 int
@@ -85,46 +183,37 @@ main(int argc, char **argv)
                     std::vector<Level>{{0.016, 128}, {0.008, 256}, {0.004, 512}};
   const std::vector<double> frequencies =
     options.quick ? std::vector<double>{0., 1000.} : std::vector<double>{0., 1000., 2000., 4000.};
-  const char *names[3] = {"driving point", "transfer along x", "transfer across y"};
+  const std::string header = "mesh_size,n_cells,crown_refinement,cell_dofs,"
+                             "seconds_per_frequency,frequency_Hz,function,re_um_per_N,"
+                             "im_um_per_N,difference_from_finest\n";
 
-  std::printf("Green's functions of the default patch (10 x 12 tributary-area points on 60 x 80 "
-              "mm), Bloch on one core,\nat three mesh levels, each twice as fine in every "
-              "direction.\n\n");
-  std::vector<Result> results;
-  for (const auto &level : levels)
+  if (options.part == 0 || options.part == 1)
     {
-      results.push_back(run(level, frequencies));
-      std::printf("mesh %.3f m, N = %4u: %7u cell DoFs, %8.3g s per frequency\n", level.mesh_size,
-                  level.n_cells, results.back().cell_dofs, results.back().seconds);
-      std::fflush(stdout);
+      std::printf("Part 1. Green's functions of the default patch (10 x 12 tributary-area points "
+                  "on 60 x 80 mm), Bloch on one core,\nat three mesh levels, each twice as fine "
+                  "in every direction.\n\n");
+      std::ofstream csv(options.output / "green_mesh_convergence.csv");
+      csv << header;
+      convergence_table(levels, frequencies, csv);
+      std::printf("\nWrote %s\n\n",
+                  (options.output / "green_mesh_convergence.csv").string().c_str());
     }
-
-  std::ofstream csv(options.output / "green_mesh_convergence.csv");
-  csv << "mesh_size,n_cells,cell_dofs,seconds_per_frequency,frequency_Hz,function,re_um_per_N,"
-         "im_um_per_N,difference_from_finest\n";
-  const Result &finest = results.back();
-  std::printf("\n%-18s %6s | %-26s | %-26s | %-26s | %s\n", "function", "f [Hz]",
-              "|g| [um/N], difference: 1", "2", "3 (finest)", "order");
-  for (unsigned int q = 0; q < 3; ++q)
-    for (std::size_t k = 0; k < frequencies.size(); ++k)
-      {
-        std::printf("%-18s %6.0f |", names[q], frequencies[k]);
-        for (std::size_t l = 0; l < levels.size(); ++l)
-          {
-            const auto   g    = results[l].g[k][q];
-            const double diff = std::abs(g - finest.g[k][q]) / std::abs(finest.g[k][q]);
-            if (l + 1 < levels.size())
-              std::printf(" %10.5g %13.2f%% |", 1e6 * std::abs(g), 100. * diff);
-            else
-              std::printf(" %10.5g %15s |", 1e6 * std::abs(g), "");
-            csv << levels[l].mesh_size << ',' << levels[l].n_cells << ','
-                << results[l].cell_dofs << ',' << results[l].seconds << ',' << frequencies[k]
-                << ',' << names[q] << ',' << 1e6 * g.real() << ',' << 1e6 * g.imag() << ','
-                << diff << '\n';
-          }
-        const double d12 = std::abs(results[0].g[k][q] - results[1].g[k][q]);
-        const double d23 = std::abs(results[1].g[k][q] - results[2].g[k][q]);
-        std::printf(" %5.2f\n", std::log2(d12 / d23));
-      }
-  std::printf("\nWrote %s\n", (options.output / "green_mesh_convergence.csv").string().c_str());
+  if (options.part == 0 || options.part == 2)
+    {
+      std::printf("Part 2. At 0 Hz: the default mesh refined in one direction at a time, then "
+                  "the three levels of part 1 with the crown graded (Crown refinement = 2).\n\n");
+      std::ofstream split(options.output / "green_mesh_directions.csv");
+      split << "refined,mesh_size,n_cells,function,abs_um_per_N\n";
+      direction_table(levels[1], split);
+      std::printf("\n");
+      std::vector<Level> graded = levels;
+      for (auto &level : graded)
+        level.crown_refinement = 2;
+      std::ofstream csv(options.output / "green_mesh_graded.csv");
+      csv << header;
+      convergence_table(graded, {0.}, csv);
+      std::printf("\nWrote %s and %s\n",
+                  (options.output / "green_mesh_directions.csv").string().c_str(),
+                  (options.output / "green_mesh_graded.csv").string().c_str());
+    }
 }

@@ -40,9 +40,17 @@ DefineConstant[
   //   Geometry/Other constants = Crown drop=0.003
   // The tread surface becomes a circular arc that falls by this much from
   // the centre to the edge of the tread (0: flat).
-  crown_drop         = {0,       Name "Parameters/Crown drop"}
+  crown_drop         = {0,       Name "Parameters/Crown drop"},
+  // Also through 'Other constants' (Crown refinement=2): the crown's
+  // elements across the tread and through the tread pattern are this many
+  // times smaller than 'Mesh size'; the rest of the section keeps it, so
+  // halving 'Mesh size' still halves every element.
+  crown_refinement   = {1,       Name "Parameters/Crown refinement"}
 ];
 
+If (crown_refinement < 1 || crown_refinement > 8)
+  Error("parameter 'Parameters/Crown refinement' = %g is not allowed; allowed: [1, 8]", crown_refinement);
+EndIf
 If (crown_drop < 0 || crown_drop >= tread_thickness)
   Error("parameter 'Parameters/Crown drop' = %g is not allowed; allowed: [0, 'Tread thickness' = %g)", crown_drop, tread_thickness);
 EndIf
@@ -89,9 +97,9 @@ For s In {0:1}
 EndFor
 
 // Node counts: one per direction, shared by opposite edges of every block.
-n_center = Ceil(2 * z_s / mesh_size) + 1;
+n_center = Ceil(2 * z_s * crown_refinement / mesh_size) + 1;
 n_side   = Ceil(sidewall_thickness / mesh_size) + 1;
-n_tread  = Ceil(tread_thickness / mesh_size) + 1;
+n_tread  = Ceil(tread_thickness * crown_refinement / mesh_size) + 1;
 n_belt   = Ceil(belt_thickness / mesh_size) + 1;
 n_upper  = Ceil(Sqrt((R_in - R_mid)^2 + (z_in - z_s)^2) / mesh_size) + 1;
 n_lower  = Ceil(Sqrt((R_mid - R_bead)^2 + (z_r - bead_width - z_in)^2) / mesh_size) + 1;
