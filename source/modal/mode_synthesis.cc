@@ -99,22 +99,52 @@ namespace greentread
       // R = g - (modes) at each line; R (1 + j w beta) = G_r in the least-squares
       // sense over every pair and line, which is linear in beta:
       // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
-      double numerator = 0., denominator = 0.;
-      for (unsigned int l = 1; l < direct.n_lines; ++l)
-        {
-          const double           omega = 2. * M_PI * l * direct.df;
-          const Eigen::MatrixXcd modal = model.modes_at(omega);
-          for (unsigned int i = 0; i < P; ++i)
-            for (unsigned int j = 0; j < P; ++j)
+      // Line l on thread l mod n_threads, each thread's sums added in thread
+      // order (the same figure for the same number of threads), as compare().
+      const unsigned int L = direct.n_lines;
+      const unsigned int n_threads =
+        std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), L));
+      std::vector<double>       numerator(n_threads, 0.), denominator(n_threads, 0.);
+      std::atomic<unsigned int> done{1}, next_thread{0};
+      std::mutex                mutex;
+      std::string               failure;
+      const auto                work = [&]() {
+        const unsigned int t = next_thread++;
+        try
+          {
+            for (unsigned int l = 1 + t; l < L; l += n_threads, ++done)
               {
-                const std::complex<double> R =
-                  direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] - modal(i, j);
+                const double               omega = 2. * M_PI * l * direct.df;
+                const Eigen::MatrixXcd     modal = model.modes_at(omega);
                 const std::complex<double> A(0., omega);
-                numerator -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
-                denominator += std::norm(A * R);
+                for (unsigned int i = 0; i < P; ++i)
+                  for (unsigned int j = 0; j < P; ++j)
+                    {
+                      const std::complex<double> R =
+                        direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] -
+                        modal(i, j);
+                      numerator[t] -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
+                      denominator[t] += std::norm(A * R);
+                    }
               }
+          }
+        catch (const std::exception &e)
+          {
+            const std::lock_guard<std::mutex> lock(mutex);
+            if (failure.empty())
+              failure = e.what();
+          }
+      };
+      base::run_on_threads(n_threads, work, done, L, nullptr, [] { return false; });
+      if (!failure.empty())
+        throw NumericalError("fit_residual_relaxation: " + failure);
+      double sum_numerator = 0., sum_denominator = 0.;
+      for (unsigned int t = 0; t < n_threads; ++t)
+        {
+          sum_numerator += numerator[t];
+          sum_denominator += denominator[t];
         }
-      return denominator > 0. ? std::max(numerator / denominator, 0.) : 0.;
+      return sum_denominator > 0. ? std::max(sum_numerator / sum_denominator, 0.) : 0.;
     }
 
 

@@ -127,13 +127,23 @@ namespace greentread
               const Eigen::VectorXd &w1,
               const Eigen::VectorXd &w2)
     {
-      Eigen::MatrixXd sum = A.transpose() * (w1.asDiagonal() * A);
+      // The sum is symmetric: only its lower triangle is computed (Eigen's
+      // triangular product, half the work of a full one), then mirrored.
+      // With complex shapes it is A^T (W1 A + W2 B) + B^T (W2 A - W1 B), two
+      // such products instead of three full ones.
+      Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(A.cols(), A.cols());
       if (B.size() == 0)
-        return sum;
-      sum.noalias() -= B.transpose() * (w1.asDiagonal() * B);
-      const Eigen::MatrixXd cross = A.transpose() * (w2.asDiagonal() * B);
-      sum += cross + cross.transpose();
-      return sum;
+        sum.triangularView<Eigen::Lower>() = A.transpose() * (w1.asDiagonal() * A);
+      else
+        {
+          Eigen::MatrixXd X = w1.asDiagonal() * A;
+          X.noalias() += w2.asDiagonal() * B;
+          sum.triangularView<Eigen::Lower>() = A.transpose() * X;
+          X = w2.asDiagonal() * A;
+          X.noalias() -= w1.asDiagonal() * B;
+          sum.triangularView<Eigen::Lower>() += B.transpose() * X;
+        }
+      return sum.selfadjointView<Eigen::Lower>();
     }
 
 
