@@ -17,6 +17,52 @@ namespace greentread
 {
   namespace modal
   {
+    namespace
+    {
+      /// The worker threads for @p n_lines lines (at least one).
+      unsigned int
+      line_threads(const unsigned int n_lines)
+      {
+        return std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), n_lines));
+      }
+
+      /// line(l, t) for the lines @p first to @p n_lines - 1, line l on thread
+      /// t = (l - first) mod @p n_threads, so that per-thread sums added in
+      /// thread order give the same figures for the same number of threads.
+      /// A failure on any thread is thrown as "@p what: message".
+      template <typename Line>
+      void
+      for_each_line(const unsigned int first,
+                    const unsigned int n_lines,
+                    const unsigned int n_threads,
+                    const std::string &what,
+                    const Line        &line)
+      {
+        std::atomic<unsigned int> done{first}, next_thread{0};
+        std::mutex                mutex;
+        std::string               failure;
+        const auto                work = [&]() {
+          const unsigned int t = next_thread++;
+          try
+            {
+              for (unsigned int l = first + t; l < n_lines; l += n_threads, ++done)
+                line(l, t);
+            }
+          catch (const std::exception &e)
+            {
+              const std::lock_guard<std::mutex> lock(mutex);
+              if (failure.empty())
+                failure = e.what();
+            }
+        };
+        base::run_on_threads(n_threads, work, done, n_lines, nullptr, [] { return false; });
+        if (!failure.empty())
+          throw NumericalError(what + ": " + failure);
+      }
+    } // namespace
+
+
+
     Eigen::MatrixXcd
     ModeSynthesis::modes_at(const double omega) const
     {
@@ -99,45 +145,24 @@ namespace greentread
       // R = g - (modes) at each line; R (1 + j w beta) = G_r in the least-squares
       // sense over every pair and line, which is linear in beta:
       // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
-      // Line l on thread l mod n_threads, each thread's sums added in thread
-      // order (the same figure for the same number of threads), as compare().
-      const unsigned int L = direct.n_lines;
-      const unsigned int n_threads =
-        std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), L));
-      std::vector<double>       numerator(n_threads, 0.), denominator(n_threads, 0.);
-      std::atomic<unsigned int> done{1}, next_thread{0};
-      std::mutex                mutex;
-      std::string               failure;
-      const auto                work = [&]() {
-        const unsigned int t = next_thread++;
-        try
-          {
-            for (unsigned int l = 1 + t; l < L; l += n_threads, ++done)
-              {
-                const double               omega = 2. * M_PI * l * direct.df;
-                const Eigen::MatrixXcd     modal = model.modes_at(omega);
-                const std::complex<double> A(0., omega);
-                for (unsigned int i = 0; i < P; ++i)
-                  for (unsigned int j = 0; j < P; ++j)
-                    {
-                      const std::complex<double> R =
-                        direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] -
-                        modal(i, j);
-                      numerator[t] -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
-                      denominator[t] += std::norm(A * R);
-                    }
-              }
-          }
-        catch (const std::exception &e)
-          {
-            const std::lock_guard<std::mutex> lock(mutex);
-            if (failure.empty())
-              failure = e.what();
-          }
-      };
-      base::run_on_threads(n_threads, work, done, L, nullptr, [] { return false; });
-      if (!failure.empty())
-        throw NumericalError("fit_residual_relaxation: " + failure);
+      const unsigned int  n_threads = line_threads(direct.n_lines);
+      std::vector<double> numerator(n_threads, 0.), denominator(n_threads, 0.);
+      for_each_line(1, direct.n_lines, n_threads, "fit_residual_relaxation",
+                    [&](const unsigned int l, const unsigned int t) {
+                      const double               omega = 2. * M_PI * l * direct.df;
+                      const Eigen::MatrixXcd     modal = model.modes_at(omega);
+                      const std::complex<double> A(0., omega);
+                      for (unsigned int i = 0; i < P; ++i)
+                        for (unsigned int j = 0; j < P; ++j)
+                          {
+                            const std::complex<double> R =
+                              direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] -
+                              modal(i, j);
+                            numerator[t] -=
+                              std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
+                            denominator[t] += std::norm(A * R);
+                          }
+                    });
       double sum_numerator = 0., sum_denominator = 0.;
       for (unsigned int t = 0; t < n_threads; ++t)
         {
@@ -206,51 +231,29 @@ namespace greentread
       if (model.shapes.cols() != P)
         throw NumericalError("compare: the model has " + std::to_string(model.shapes.cols()) +
                              " points, the Green's functions " + std::to_string(P));
-      // Trapezoidal sums of |g - g_model| and |g| over the lines, line l on
-      // thread l mod n_threads, each thread's sums added in thread order (the
-      // same figures for the same number of threads). One line costs a few
+      // Trapezoidal sums of |g - g_model| and |g| over the lines, each
+      // thread's added in thread order (for_each_line). One line costs a few
       // GFLOP with tens of thousands of modes.
-      const unsigned int n_threads =
-        std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), L));
+      const unsigned int           n_threads = line_threads(L);
       std::vector<Eigen::MatrixXd> difference(n_threads, Eigen::MatrixXd::Zero(P, P)),
         size = difference;
-      std::vector<double>       passivity(n_threads, 1.);
-      std::atomic<unsigned int> done{0}, next_thread{0};
-      std::mutex                mutex;
-      std::string               failure;
-      const auto                work = [&]() {
-        const unsigned int t = next_thread++;
-        try
-          {
-            for (unsigned int l = t; l < L; l += n_threads, ++done)
-              {
-                const double           weight = (l == 0 || l + 1 == L) ? 0.5 : 1.;
-                const Eigen::MatrixXcd g_model = model.at(2. * M_PI * l * direct.df);
-                const Eigen::Map<const Eigen::Matrix<std::complex<double>, Eigen::Dynamic,
-                                                     Eigen::Dynamic, Eigen::RowMajor>>
-                  g(direct.values.data() + std::size_t(l) * P * P, P, P);
-                difference[t] += weight * (g - g_model).cwiseAbs();
-                size[t] += weight * g.cwiseAbs();
-                if (l == 0)
-                  continue;
-                const Eigen::MatrixXd loss = -0.5 * (g_model.imag() + g_model.imag().transpose());
-                const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(loss,
-                                                                           Eigen::EigenvaluesOnly);
-                const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
-                if (largest > 0.)
-                  passivity[t] = std::min(passivity[t], eigen.eigenvalues().minCoeff() / largest);
-              }
-          }
-        catch (const std::exception &e)
-          {
-            const std::lock_guard<std::mutex> lock(mutex);
-            if (failure.empty())
-              failure = e.what();
-          }
-      };
-      base::run_on_threads(n_threads, work, done, L, nullptr, [] { return false; });
-      if (!failure.empty())
-        throw NumericalError("compare: " + failure);
+      std::vector<double> passivity(n_threads, 1.);
+      for_each_line(0, L, n_threads, "compare", [&](const unsigned int l, const unsigned int t) {
+        const double           weight  = (l == 0 || l + 1 == L) ? 0.5 : 1.;
+        const Eigen::MatrixXcd g_model = model.at(2. * M_PI * l * direct.df);
+        const Eigen::Map<
+          const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+          g(direct.values.data() + std::size_t(l) * P * P, P, P);
+        difference[t] += weight * (g - g_model).cwiseAbs();
+        size[t] += weight * g.cwiseAbs();
+        if (l == 0)
+          return;
+        const Eigen::MatrixXd loss = -0.5 * (g_model.imag() + g_model.imag().transpose());
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(loss, Eigen::EigenvaluesOnly);
+        const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
+        if (largest > 0.)
+          passivity[t] = std::min(passivity[t], eigen.eigenvalues().minCoeff() / largest);
+      });
       for (unsigned int t = 1; t < n_threads; ++t)
         {
           difference[0] += difference[t];
