@@ -3,6 +3,7 @@
 #include <greentread/periodic/green_solvers.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
@@ -26,9 +27,17 @@ namespace greentread
       class Basis
       {
       public:
-        Basis(const SparseComplex &K_, const SparseComplex &M_, const Eigen::Index capacity)
+        /// A basis kept M-orthogonal to the columns of @p locked_ as well
+        /// (modes found already, with @p mass_locked_ = M locked_).
+        Basis(const SparseComplex &K_,
+              const SparseComplex &M_,
+              const Dense         &locked_,
+              const Dense         &mass_locked_,
+              const Eigen::Index   capacity)
           : K(K_)
           , M(M_)
+          , locked(locked_)
+          , mass_locked(mass_locked_)
           , V(M_.rows(), capacity)
           , MV(M_.rows(), capacity)
           , H(capacity, capacity)
@@ -108,8 +117,40 @@ namespace greentread
         void
         project_out(Dense &X) const
         {
+          if (locked.cols() > 0 && X.cols() > 0)
+            subtract_projection(locked, mass_locked, X);
           if (m > 0 && X.cols() > 0)
-            X -= vectors() * (mass_times_vectors().adjoint() * X);
+            subtract_projection(vectors(), mass_times_vectors(), X);
+        }
+
+        /**
+         * X -= Q (MQ^H X) for a tall Q of many columns and an X of a few.
+         * A general product would copy (pack) all of Q for a block of a few
+         * columns, which costs as much as the arithmetic; here Q and MQ
+         * stream from memory once each, in row chunks against which X's
+         * chunk stays in the first-level cache.
+         */
+        template <typename Tall>
+        static void
+        subtract_projection(const Tall &Q, const Tall &MQ, Dense &X)
+        {
+          constexpr Eigen::Index chunk = 64;
+          const Eigen::Index     n = X.rows(), q = Q.cols();
+          Dense                  W = Dense::Zero(q, X.cols());
+          for (Eigen::Index r = 0; r < n; r += chunk)
+            {
+              const Eigen::Index len = std::min(chunk, n - r);
+              const auto         Xc  = X.middleRows(r, len);
+              for (Eigen::Index j = 0; j < q; ++j)
+                W.row(j) += MQ.col(j).segment(r, len).adjoint() * Xc;
+            }
+          for (Eigen::Index r = 0; r < n; r += chunk)
+            {
+              const Eigen::Index len = std::min(chunk, n - r);
+              auto               Xc  = X.middleRows(r, len);
+              for (Eigen::Index j = 0; j < q; ++j)
+                Xc.noalias() -= Q.col(j).segment(r, len) * W.row(j);
+            }
         }
 
         /// Replace @p X by M-orthonormal columns spanning it, strongest
@@ -141,6 +182,7 @@ namespace greentread
         }
 
         const SparseComplex &K, &M;
+        const Dense         &locked, &mass_locked;
         Dense                V, MV, H;
         Eigen::Index         m = 0;
       };
@@ -154,6 +196,225 @@ namespace greentread
         v.cwiseAbs().maxCoeff(&largest);
         v *= std::polar(1., -std::arg(v(largest)));
       }
+
+      double
+      row_sum_norm(const SparseComplex &matrix)
+      {
+        Eigen::VectorXd sums = Eigen::VectorXd::Zero(matrix.rows());
+        for (Eigen::Index c = 0; c < matrix.outerSize(); ++c)
+          for (SparseComplex::InnerIterator it(matrix, c); it; ++it)
+            sums(it.row()) += std::abs(it.value());
+        return sums.maxCoeff();
+      }
+
+      /**
+       * The number of eigenvalues of (K, M) below @p sigma: by Sylvester's
+       * law of inertia, the number of negative pivots of K - sigma M =
+       * L D L^H (M semidefinite; with K positive definite a massless DoF
+       * adds a positive pivot only). Without pivoting the factorisation
+       * could meet a zero pivot where a leading block is singular at
+       * @p sigma; a shift moved by 1e-9 of itself then gives the same count
+       * unless an eigenvalue lies within that of @p sigma.
+       */
+      Eigen::Index
+      count_below(const SparseComplex &K, const SparseComplex &M, const double sigma,
+                  const std::string &which)
+      {
+        for (const double nudge : {0., 1e-9, -1e-9})
+          {
+            const SparseComplex A = K - (sigma * (1. + nudge)) * M;
+            Eigen::SimplicialLDLT<SparseComplex, Eigen::Lower> ldlt(A);
+            if (ldlt.info() != Eigen::Success)
+              continue;
+            const auto  &d        = ldlt.vectorD();
+            Eigen::Index negative = 0;
+            bool         zero     = false;
+            for (Eigen::Index i = 0; i < d.size(); ++i)
+              {
+                negative += d(i).real() < 0.;
+                zero = zero || !(std::abs(d(i).real()) > 0.);
+              }
+            if (!zero)
+              return negative;
+          }
+        throw NumericalError("the inertia of K - s M of " + which + " at s = " +
+                             format_short(sigma) +
+                             " rad^2/s^2 could not be computed: its LDL^H factorisation met a "
+                             "zero pivot at every try");
+      }
+
+      /// The problem of one wavenumber: K, C, M folded with its phase.
+      struct Problem
+      {
+        SparseComplex K, C, M;
+        double        norm_K, norm_M;
+        std::string   which;
+      };
+
+      /// The modes one slice found: w^2 ascending, shapes M-orthonormal.
+      struct Slice
+      {
+        std::vector<double> theta;
+        Dense               shapes;
+        unsigned int        n_solves = 0, dimension = 0;
+        double              worst    = 0.;
+      };
+
+      /**
+       * The @p expected modes with w^2 <= @p upper that are M-orthogonal
+       * to @p locked: the Krylov space of T = (K - shift M)^-1 M, grown
+       * until @p expected Ritz values are at or below @p upper and every
+       * one of them has converged. On the space M-orthogonal to the locked
+       * modes, Ritz values are upper bounds of the remaining eigenvalues in
+       * order, whatever the shift: once as many are below @p upper as
+       * there are eigenvalues there (the inertia), none is missing.
+       */
+      Slice
+      search_slice(const Problem    &problem,
+                   const Dense      &locked,
+                   const Dense      &mass_locked,
+                   const double      shift,
+                   const double      upper,
+                   const Eigen::Index expected,
+                   const ModeSearch &search,
+                   const unsigned    seed)
+      {
+        const SparseComplex &K = problem.K, &M = problem.M;
+        Slice                slice;
+        if (expected == 0)
+          {
+            slice.shapes.resize(K.rows(), 0);
+            return slice;
+          }
+        const SparseComplex A = K - shift * M;
+        Eigen::SparseLU<SparseComplex, Eigen::COLAMDOrdering<int>> lu;
+        lu.analyzePattern(A);
+        lu.factorize(A);
+        if (lu.info() != Eigen::Success)
+          throw NumericalError("the shifted stiffness K - s M of " + problem.which +
+                               " (s = " + format_short(shift) +
+                               " rad^2/s^2) could not be factorised: is the cell held "
+                               "against rigid motion?");
+        const Eigen::Index n = A.rows(), b = std::min<Eigen::Index>(search.block, n);
+        Basis              basis(K, M, locked, mass_locked, n - locked.cols());
+
+        std::mt19937                           random(seed);
+        std::uniform_real_distribution<double> uniform(-1., 1.);
+        Dense                                  X(n, b);
+        for (Eigen::Index j = 0; j < b; ++j)
+          for (Eigen::Index i = 0; i < n; ++i)
+            X(i, j) = Complex(uniform(random), uniform(random));
+
+        // The start is T X, not X: every vector of the Krylov space is then
+        // in the range of T, where the modes are. With a singular M (mass
+        // moved off the contact surface) a random start has components in
+        // M's null space that T never removes, and they swamp the
+        // Rayleigh-Ritz step.
+        X = lu.solve(Dense(M * X));
+        ++slice.n_solves;
+        // The residual against K x (as ARPACK judges T), unless it is at
+        // rounding level: against the size of K and M, a mode far below the
+        // stiffest layer cannot do better than eps ||K|| / w^2.
+        double     worst = 0.;
+        const auto judge = [&](const double theta, const auto &x, const auto &Kx,
+                               const auto &Mx) {
+          const double misfit   = (Kx - theta * Mx).norm();
+          const double residual = misfit / Kx.norm();
+          const double backward =
+            misfit / ((problem.norm_K + std::abs(theta) * problem.norm_M) * x.norm());
+          worst = std::max(worst, residual);
+          return std::make_pair(residual <= search.tolerance ||
+                                  backward <= 1e3 * std::numeric_limits<double>::epsilon(),
+                                residual);
+        };
+
+        Eigen::Index last_first = 0, last_added = basis.add(X), next_check = 8 * b;
+        // The highest wanted pair converges last, and geometrically in the
+        // basis size once it is there: its residual at the previous check
+        // places the next one where it should meet the tolerance.
+        double       previous_residual = 0.;
+        Eigen::Index previous_size     = 0;
+        while (true)
+          {
+            const bool full = basis.size() == basis.capacity() || last_added == 0;
+            if (basis.size() >= next_check || full)
+              {
+                // Rayleigh-Ritz on the M-orthonormal basis: the Ritz values
+                // alone until as many as expected are below the bound.
+                const Dense  H     = basis.projected_stiffness();
+                Eigen::Index below = 0;
+                {
+                  const Eigen::SelfAdjointEigenSolver<Dense> values(H, Eigen::EigenvaluesOnly);
+                  while (below < values.eigenvalues().size() &&
+                         values.eigenvalues()(below) <= upper)
+                    ++below;
+                }
+                if (below > expected)
+                  throw NumericalError(problem.which + " has " + std::to_string(below) +
+                                       " Ritz values up to " + format_short(upper) +
+                                       " rad^2/s^2 but only " + std::to_string(expected) +
+                                       " eigenvalues there by the inertia of K - s M");
+                double top = 0.;
+                worst      = 0.;
+                if (below == expected)
+                  {
+                    const Eigen::SelfAdjointEigenSolver<Dense> ritz(H);
+                    const Eigen::VectorXd                    &theta = ritz.eigenvalues();
+                    const Eigen::VectorXcd x = basis.vectors() * ritz.eigenvectors().col(below - 1);
+                    const Eigen::VectorXcd Kx = K * x,
+                                           Mx = basis.mass_times_vectors() *
+                                                ritz.eigenvectors().col(below - 1);
+                    const auto highest = judge(theta(below - 1), x, Kx, Mx);
+                    top                = highest.second;
+                    bool converged     = highest.first;
+                    if (converged)
+                      {
+                        const Dense Y  = ritz.eigenvectors().leftCols(below);
+                        const Dense VY = basis.vectors() * Y;
+                        const Dense KY = K * VY, MY = basis.mass_times_vectors() * Y;
+                        for (Eigen::Index j = 0; j < below && converged; ++j)
+                          converged = judge(theta(j), VY.col(j), KY.col(j), MY.col(j)).first;
+                        if (converged)
+                          {
+                            slice.theta.assign(theta.data(), theta.data() + below);
+                            slice.shapes = VY;
+                          }
+                      }
+                  }
+                if (below == expected && slice.shapes.cols() == below)
+                  {
+                    slice.dimension = static_cast<unsigned int>(basis.size());
+                    slice.worst     = worst;
+                    return slice;
+                  }
+                if (full)
+                  throw NumericalError("the mode search of " + problem.which +
+                                       " did not converge in " +
+                                       std::to_string(basis.size()) +
+                                       " vectors (worst relative residual " +
+                                       format_short(worst) + ")");
+                const Eigen::Index step = std::max<Eigen::Index>(4 * b, basis.size() / 10);
+                next_check              = basis.size() + step;
+                if (top > 0. && previous_residual > top)
+                  {
+                    const double per_vector =
+                      std::log(previous_residual / top) / double(basis.size() - previous_size);
+                    const double needed = std::log(top / search.tolerance) / per_vector;
+                    next_check = basis.size() + std::clamp<Eigen::Index>(
+                                                  static_cast<Eigen::Index>(std::ceil(needed)),
+                                                  b, step);
+                  }
+                previous_residual = top;
+                previous_size     = basis.size();
+              }
+            // The next block: T applied to the last block added.
+            const Dense Y =
+              lu.solve(Dense(basis.mass_times_vectors().middleCols(last_first, last_added)));
+            ++slice.n_solves;
+            last_first = basis.size();
+            last_added = basis.add(Y);
+          }
+      }
     } // namespace
 
 
@@ -162,140 +423,85 @@ namespace greentread
     bloch_modes(const PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
     {
       const std::string which = "Bloch wavenumber " + std::to_string(k);
-      if (!(search.cutoff > 0.) || search.block == 0)
-        throw NumericalError("bloch_modes: the cut-off must be positive and the block size at "
-                             "least 1 (" + which + ")");
+      if (!(search.cutoff > 0.) || search.block == 0 || search.slices == 0)
+        throw NumericalError("bloch_modes: the cut-off must be positive and the block size "
+                             "and the number of slices at least 1 (" + which + ")");
       const double phi = 2. * M_PI * k / cell.n_cells;
       BlochCell    bloch(cell);
       const auto   part = [&](const Complex a, const Complex c, const Complex m) {
         bloch.set_combination(a, c, m);
         return SparseComplex(bloch.assemble(phi));
       };
-      const SparseComplex K = part(1., 0., 0.), C = part(0., 1., 0.), M = part(0., 0., 1.);
-      const double        shift = -std::pow(search.cutoff / 20., 2);
-      const SparseComplex A     = part(1., 0., -shift);
+      Problem problem;
+      problem.K      = part(1., 0., 0.);
+      problem.C      = part(0., 1., 0.);
+      problem.M      = part(0., 0., 1.);
+      problem.norm_K = row_sum_norm(problem.K);
+      problem.norm_M = row_sum_norm(problem.M);
+      problem.which  = which;
 
-      Eigen::SparseLU<SparseComplex, Eigen::COLAMDOrdering<int>> lu;
-      lu.analyzePattern(A);
-      lu.factorize(A);
-      if (lu.info() != Eigen::Success)
-        throw NumericalError("the shifted stiffness K - s M of " + which +
-                             " could not be factorised: is the cell held against rigid motion?");
-
-      const auto row_sum_norm = [](const SparseComplex &matrix) {
-        Eigen::VectorXd sums = Eigen::VectorXd::Zero(matrix.rows());
-        for (Eigen::Index c = 0; c < matrix.outerSize(); ++c)
-          for (SparseComplex::InnerIterator it(matrix, c); it; ++it)
-            sums(it.row()) += std::abs(it.value());
-        return sums.maxCoeff();
-      };
-      const double       norm_K = row_sum_norm(K), norm_M = row_sum_norm(M);
-      const Eigen::Index n = A.rows(), b = std::min<Eigen::Index>(search.block, n);
-      Basis              basis(K, M, n);
-      BlochModes         modes;
+      // Slice s holds w^2 in (c^2 s / S, c^2 (s + 1) / S], c the cut-off:
+      // about as many modes each, as their number grows about as w^2. The
+      // first is shifted below zero (K - s M positive definite, even for an
+      // unheld cell), the others at their lower end, with the modes below
+      // it locked (deflated): the Krylov space then converges from the
+      // slice's lower end up, as the first does from zero, and each basis
+      // holds only its slice's modes, so the Gram-Schmidt work, which grows
+      // with the square of the basis, shrinks.
+      const double cut2 = search.cutoff * search.cutoff;
+      Dense        locked(problem.M.rows(), 0), mass_locked(problem.M.rows(), 0);
+      std::vector<double> theta;
+      BlochModes          modes;
       modes.wavenumber = k;
-
-      std::mt19937                           random(12345u + k);
-      std::uniform_real_distribution<double> uniform(-1., 1.);
-      Dense                                  X(n, b);
-      for (Eigen::Index j = 0; j < b; ++j)
-        for (Eigen::Index i = 0; i < n; ++i)
-          X(i, j) = Complex(uniform(random), uniform(random));
-
-      // The start is T X, not X: every vector of the Krylov space is then in
-      // the range of T, where the modes are. With a singular M (mass moved
-      // off the contact surface) a random start has components in M's null
-      // space that T never removes, and they swamp the Rayleigh-Ritz step.
-      X = lu.solve(Dense(M * X));
-      ++modes.n_solves;
-      const double wanted = std::pow(1.1 * search.cutoff, 2), kept = std::pow(search.cutoff, 2);
-      Eigen::Index last_first = 0, last_added = basis.add(X), next_check = 8 * b;
-      while (true)
+      for (unsigned int s = 0; s < search.slices; ++s)
         {
-          const bool full = basis.size() == basis.capacity() || last_added == 0;
-          if (basis.size() >= next_check || full)
+          const double lower = cut2 * s / search.slices, upper = cut2 * (s + 1) / search.slices;
+          const double shift = s == 0 ? -cut2 / 400. : lower;
+          const Eigen::Index expected =
+            count_below(problem.K, problem.M, upper, which) - locked.cols();
+          const Slice slice = search_slice(problem, locked, mass_locked, shift, upper, expected,
+                                           search, 12345u + k + 7919u * s);
+          modes.n_solves += slice.n_solves;
+          modes.krylov_dimension += slice.dimension;
+          modes.max_residual = std::max(modes.max_residual, slice.worst);
+          const Eigen::Index had = locked.cols(), added = slice.shapes.cols();
+          locked.conservativeResize(Eigen::NoChange, had + added);
+          locked.rightCols(added) = slice.shapes;
+          if (s + 1 < search.slices)
             {
-              // Rayleigh-Ritz on the M-orthonormal basis.
-              const Dense H = basis.projected_stiffness();
-              const Eigen::SelfAdjointEigenSolver<Dense> ritz(H);
-              const Eigen::VectorXd &theta = ritz.eigenvalues();
-              Eigen::Index           below = 0;
-              while (below < theta.size() && theta(below) <= wanted)
-                ++below;
-              bool   converged = below < theta.size() || full;
-              double worst     = 0.;
-              // The residual against K x (as ARPACK judges T = (K - sM)^-1 M), unless
-              // it is at rounding level: against the size of K and M, a mode far
-              // below the stiffest layer cannot do better than eps ||K|| / w^2.
-              const auto judge = [&](const Eigen::Index j, const auto &x, const auto &Kx,
-                                     const auto &Mx) {
-                const double misfit   = (Kx - theta(j) * Mx).norm();
-                const double residual = misfit / Kx.norm();
-                const double backward =
-                  misfit / ((norm_K + std::abs(theta(j)) * norm_M) * x.norm());
-                worst = std::max(worst, residual);
-                return residual <= search.tolerance ||
-                       backward <= 1e3 * std::numeric_limits<double>::epsilon();
-              };
-              // The highest wanted pair converges last: judge it alone first,
-              // and the others (block products) only once it has converged.
-              if (converged && below > 0)
-                {
-                  const Eigen::VectorXcd x = basis.vectors() * ritz.eigenvectors().col(below - 1);
-                  const Eigen::VectorXcd Kx = K * x,
-                                         Mx = basis.mass_times_vectors() *
-                                              ritz.eigenvectors().col(below - 1);
-                  converged = judge(below - 1, x, Kx, Mx);
-                }
-              Dense VY;
-              if (converged)
-                {
-                  const Dense Y = ritz.eigenvectors().leftCols(below);
-                  VY            = basis.vectors() * Y;
-                  const Dense KY = K * VY, MY = basis.mass_times_vectors() * Y;
-                  for (Eigen::Index j = 0; j < below && converged; ++j)
-                    converged = judge(j, VY.col(j), KY.col(j), MY.col(j));
-                }
-              if (converged)
-                {
-                  Eigen::Index count = 0;
-                  while (count < below && theta(count) <= kept)
-                    ++count;
-                  modes.omega.resize(count);
-                  modes.damping_ratio.resize(count);
-                  modes.shapes = VY.leftCols(count);
-                  for (Eigen::Index j = 0; j < count; ++j)
-                    {
-                      if (!(theta(j) > 0.))
-                        throw NumericalError(which + " has a mode of zero or negative stiffness "
-                                             "(w^2 = " + format_short(theta(j)) +
-                                             "): the cell is not held against rigid motion, or "
-                                             "the prestress makes it unstable");
-                      modes.omega(j) = std::sqrt(theta(j));
-                      fix_phase(modes.shapes.col(j));
-                    }
-                  modes.modal_damping = modes.shapes.adjoint() * (C * modes.shapes);
-                  for (Eigen::Index j = 0; j < count; ++j)
-                    modes.damping_ratio(j) =
-                      modes.modal_damping(j, j).real() / (2. * modes.omega(j));
-                  modes.krylov_dimension = static_cast<unsigned int>(basis.size());
-                  modes.max_residual     = worst;
-                  return modes;
-                }
-              if (full)
-                throw NumericalError("the mode search of " + which + " did not converge in " +
-                                     std::to_string(basis.size()) +
-                                     " vectors (worst relative residual " +
-                                     format_short(worst) + ")");
-              next_check = basis.size() + std::max<Eigen::Index>(4 * b, basis.size() / 10);
+              mass_locked.conservativeResize(Eigen::NoChange, had + added);
+              mass_locked.rightCols(added) = problem.M * slice.shapes;
             }
-          // The next block: T applied to the last block added.
-          const Dense Y =
-            lu.solve(Dense(basis.mass_times_vectors().middleCols(last_first, last_added)));
-          ++modes.n_solves;
-          last_first = basis.size();
-          last_added = basis.add(Y);
+          theta.insert(theta.end(), slice.theta.begin(), slice.theta.end());
         }
+
+      // In order of frequency (a mode a slice missed below its lower end
+      // would be found by the next one, out of order).
+      std::vector<Eigen::Index> order(theta.size());
+      for (std::size_t j = 0; j < order.size(); ++j)
+        order[j] = static_cast<Eigen::Index>(j);
+      std::stable_sort(order.begin(), order.end(),
+                       [&](const Eigen::Index a, const Eigen::Index b) { return theta[a] < theta[b]; });
+      const Eigen::Index count = static_cast<Eigen::Index>(order.size());
+      modes.omega.resize(count);
+      modes.damping_ratio.resize(count);
+      modes.shapes.resize(problem.M.rows(), count);
+      for (Eigen::Index j = 0; j < count; ++j)
+        {
+          const double t = theta[order[j]];
+          if (!(t > 0.))
+            throw NumericalError(which + " has a mode of zero or negative stiffness (w^2 = " +
+                                 format_short(t) +
+                                 "): the cell is not held against rigid motion, or the "
+                                 "prestress makes it unstable");
+          modes.omega(j)      = std::sqrt(t);
+          modes.shapes.col(j) = locked.col(order[j]);
+          fix_phase(modes.shapes.col(j));
+        }
+      modes.modal_damping = modes.shapes.adjoint() * (problem.C * modes.shapes);
+      for (Eigen::Index j = 0; j < count; ++j)
+        modes.damping_ratio(j) = modes.modal_damping(j, j).real() / (2. * modes.omega(j));
+      return modes;
     }
   } // namespace periodic
 } // namespace greentread

@@ -50,37 +50,54 @@ namespace greentread
       /// is below this, or when it is at rounding level (backward error
       /// ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||) below 1e3 eps).
       double tolerance = 1e-9;
-      /// Vectors added per step: a mode repeated more often than this
-      /// could be missed (the cell's modes are distinct, and k, N - k are
-      /// separate problems).
+      /// Vectors added per step: a block Krylov space holds at most this
+      /// many copies of a repeated mode, so one repeated more often would
+      /// leave the count short of the inertia's and the search would fail
+      /// rather than miss it (the cell's modes are distinct, and k, N - k
+      /// are separate problems).
       unsigned int block = 4;
+      /// Slices of [0, cutoff^2] searched one after the other, each with
+      /// its own factorisation and with the modes of those below it locked.
+      unsigned int slices = 3;
     };
 
     /**
      * @brief The modes of wavenumber @p k of @p cell up to the cut-off.
      *
-     * Shift-invert block Krylov with Rayleigh-Ritz: the Krylov space of
-     * T = (K_phi - s M_phi)^{-1} M_phi from the block T X, X fixed
-     * pseudo-random vectors (so that the space lies in T's range, where the
-     * modes are, also when M is singular: mass moved off the contact
-     * surface leaves its DoFs massless), s = -(cutoff / 20)^2
-     * (K_phi - s M_phi is positive definite, even for an unheld cell),
-     * kept M-orthonormal by block Gram-Schmidt (two passes, a third where
-     * they cancel), is grown until every Ritz pair up to 1.1 times the
-     * cut-off (and at least one beyond it) has converged: Ritz values are
-     * upper bounds of the eigenvalues in order, and shift-invert converges
-     * the modes nearest the shift first, so a mode below the cut-off cannot
-     * be missing once those above it have converged (the margin covers a
-     * pair straddling the cut-off). V^H K V grows with the basis, and the
-     * convergence is judged every 10% of growth, on the highest wanted Ritz
-     * pair first (it converges last), then on all of them. The sparse
-     * factorisation is the Bloch solver's (supernodal LU with COLAMD), one
-     * per wavenumber. Spectra and ARPACK's symmetric drivers are real only,
-     * and the real form of twice the size repeats every eigenvalue, so this
-     * small driver is written here and tested against dense solves.
+     * Shift-invert block Krylov with Rayleigh-Ritz, over slices of
+     * [0, cutoff^2] (ModeSearch::slices, equal in w^2) taken in turn:
+     * - How many modes a slice holds is known before the search: by
+     *   Sylvester's law of inertia, the number of eigenvalues below s is
+     *   the number of negative pivots of K_phi - s M_phi = L D L^H (sparse,
+     *   AMD ordering). A slice's search stops once that many Ritz values
+     *   lie in it and every one has converged. Ritz values are upper
+     *   bounds of the eigenvalues in order, so none can then be missing.
+     * - The first slice is searched with the shift s = -(cutoff / 20)^2
+     *   (K_phi - s M_phi positive definite, even for an unheld cell), each
+     *   other one with the shift at its lower end, and with the modes
+     *   found below it locked: its basis is kept M-orthogonal to them, so
+     *   its Krylov space converges from its lower end up, as the first
+     *   does from zero. Each basis then holds about a third of the modes,
+     *   and the Gram-Schmidt work, which grows with the square of the
+     *   basis, falls.
+     * - The Krylov space of T = (K_phi - s M_phi)^{-1} M_phi starts from
+     *   the block T X, X fixed pseudo-random vectors (so that it lies in
+     *   T's range, where the modes are, also when M is singular: mass
+     *   moved off the contact surface leaves its DoFs massless). It is kept
+     *   M-orthonormal by block classical Gram-Schmidt (two passes, a third
+     *   where they cancel), with V^H K V grown with it.
+     * - The Ritz values are computed every 10% of growth; once enough lie
+     *   in the slice, the highest is judged first (it converges last), and
+     *   its residual's geometric fall places the next check.
+     * The sparse factorisation is the Bloch solver's (supernodal LU with
+     * COLAMD), one per slice. Spectra and ARPACK's symmetric drivers are
+     * real only, and the real form of twice the size repeats every
+     * eigenvalue, so this small driver is written here and tested against
+     * dense solves.
      *
-     * @throws NumericalError if the factorisation fails or the search does
-     * not converge within the size of the cell, naming the wavenumber.
+     * @throws NumericalError if a factorisation fails, the inertia cannot
+     * be computed, or the search does not converge within the size of the
+     * cell, naming the wavenumber.
      */
     BlochModes
     bloch_modes(const PeriodicCell &cell, unsigned int k, const ModeSearch &search);
