@@ -100,12 +100,19 @@ namespace greentread
     ModeSynthesis::at(const double omega) const
     {
       // G_r / (1 + j w beta_r) and the modes.
+      return with_residual(omega, modes_at(omega));
+    }
+
+
+
+    Eigen::MatrixXcd
+    ModeSynthesis::with_residual(const double omega, Eigen::MatrixXcd modal) const
+    {
       const std::complex<double> relaxed =
         1. / std::complex<double>(1., omega * residual_relaxation);
-      Eigen::MatrixXcd g = modes_at(omega);
-      g.real() += relaxed.real() * instantaneous;
-      g.imag() += relaxed.imag() * instantaneous;
-      return g;
+      modal.real() += relaxed.real() * instantaneous;
+      modal.imag() += relaxed.imag() * instantaneous;
+      return modal;
     }
 
 
@@ -135,8 +142,11 @@ namespace greentread
 
 
     double
-    fit_residual_relaxation(const ModeSynthesis &model, const FrequencyResponseMatrix &direct)
+    fit_residual_relaxation(const ModeSynthesis           &model,
+                            const FrequencyResponseMatrix &direct,
+                            const ModalLines              *lines)
     {
+      const bool kept = lines != nullptr && lines->matches(direct);
       const unsigned int P = direct.n_points();
       if (model.shapes.cols() != P || model.instantaneous.rows() != P)
         throw NumericalError("fit_residual_relaxation: the model has " +
@@ -150,7 +160,8 @@ namespace greentread
       for_each_line(1, direct.n_lines, n_threads, "fit_residual_relaxation",
                     [&](const unsigned int l, const unsigned int t) {
                       const double               omega = 2. * M_PI * l * direct.df;
-                      const Eigen::MatrixXcd     modal = model.modes_at(omega);
+                      const Eigen::MatrixXcd     modal =
+                        kept ? lines->g[l] : model.modes_at(omega);
                       const std::complex<double> A(0., omega);
                       for (unsigned int i = 0; i < P; ++i)
                         for (unsigned int j = 0; j < P; ++j)
@@ -214,19 +225,35 @@ namespace greentread
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
                const Eigen::MatrixXd         &shapes_imag,
-               const FrequencyResponseMatrix &direct)
+               const FrequencyResponseMatrix &direct,
+               ModalLines                    *lines)
     {
       ModeSynthesis model =
         synthesise(omega, damping_ratio, shapes, shapes_imag, static_line(direct), direct.points);
-      model.residual_relaxation = fit_residual_relaxation(model, direct);
+      const double bytes = 16. * direct.n_lines * double(direct.n_points()) * direct.n_points();
+      if (lines == nullptr || bytes > 1e9)
+        {
+          model.residual_relaxation = fit_residual_relaxation(model, direct);
+          return model;
+        }
+      lines->df = direct.df;
+      lines->g.assign(direct.n_lines, Eigen::MatrixXcd());
+      for_each_line(0, direct.n_lines, line_threads(direct.n_lines), "synthesise",
+                    [&](const unsigned int l, const unsigned int) {
+                      lines->g[l] = model.modes_at(2. * M_PI * l * direct.df);
+                    });
+      model.residual_relaxation = fit_residual_relaxation(model, direct, lines);
       return model;
     }
 
 
 
     SynthesisErrors
-    compare(const ModeSynthesis &model, const FrequencyResponseMatrix &direct)
+    compare(const ModeSynthesis           &model,
+            const FrequencyResponseMatrix &direct,
+            const ModalLines              *lines)
     {
+      const bool kept = lines != nullptr && lines->matches(direct);
       const unsigned int P = direct.n_points(), L = direct.n_lines;
       if (model.shapes.cols() != P)
         throw NumericalError("compare: the model has " + std::to_string(model.shapes.cols()) +
@@ -240,7 +267,9 @@ namespace greentread
       std::vector<double> passivity(n_threads, 1.);
       for_each_line(0, L, n_threads, "compare", [&](const unsigned int l, const unsigned int t) {
         const double           weight  = (l == 0 || l + 1 == L) ? 0.5 : 1.;
-        const Eigen::MatrixXcd g_model = model.at(2. * M_PI * l * direct.df);
+        const double           omega   = 2. * M_PI * l * direct.df;
+        const Eigen::MatrixXcd g_model =
+          kept ? model.with_residual(omega, lines->g[l]) : model.at(omega);
         const Eigen::Map<
           const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
           g(direct.values.data() + std::size_t(l) * P * P, P, P);

@@ -36,7 +36,8 @@ namespace greentread
                    const base::ParameterRecord          &record,
                    const bool                            reuse,
                    const bool                            print_timings,
-                   const MPI_Comm                        comm)
+                   const MPI_Comm                        comm,
+                   modal::ModalLines                    *lines)
     {
       modal::ModeSynthesis synthesis;
       if (reuse && modal::read_modal_model_key(file.string()) == key &&
@@ -69,7 +70,7 @@ namespace greentread
       // G_r from the static line (the direct solve at 0 Hz), its relaxation
       // from the others.
       synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                    modes.shapes_imag, green);
+                                    modes.shapes_imag, green, lines);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
         {

@@ -256,11 +256,14 @@ namespace greentread
                                         global.reuse, global.print_timings);
       const periodic::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
                                              patch_model.mode_cutoff};
+      // The modes' part at every line, when the stage computes it (not
+      // when it is reused): compare() then only adds the residual.
+      modal::ModalLines          lines;
       const modal::ModeSynthesis synthesis = periodic::run_mode_stage(
         inputs, G, directory / "modal_model.h5", periodic::mode_stage_key(prm, green_key),
-        record, global.reuse, global.print_timings, MPI_COMM_WORLD);
+        record, global.reuse, global.print_timings, MPI_COMM_WORLD, &lines);
       analysis::write_dispersion(directory, synthesis.dispersion, patch_model.mode_cutoff, record);
-      const modal::SynthesisErrors errors = modal::compare(synthesis, G);
+      const modal::SynthesisErrors errors = modal::compare(synthesis, G, &lines);
       analysis::report_synthesis(directory, synthesis, errors, record);
       const unsigned int n_p = G.n_points();
       Eigen::MatrixXd    E(n_p, n_p);

@@ -314,6 +314,19 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   BOOST_TEST(std::abs(model.residual_relaxation / b - 1.) < 0.05);
   BOOST_TEST(relaxed.worst < errors.worst / 3.);
   BOOST_TEST(relaxed.passivity > -1e-12);
+
+  // The modal stage's path: synthesise() keeps the modes' part at every
+  // line, and the fit and compare() reuse it. The same beta_r and E as
+  // each computing the sum itself, above.
+  modal::ModalLines kept;
+  const auto        staged = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                               modes.shapes_imag, direct_lines, &kept);
+  BOOST_TEST_REQUIRE(kept.matches(direct_lines));
+  const auto reused = modal::compare(staged, direct_lines, &kept);
+  BOOST_TEST(std::abs(staged.residual_relaxation / model.residual_relaxation - 1.) < 1e-12);
+  BOOST_TEST(std::abs(reused.worst / relaxed.worst - 1.) < 1e-12);
+  BOOST_TEST(std::abs(reused.median / relaxed.median - 1.) < 1e-12);
+  BOOST_TEST(std::abs(reused.passivity - relaxed.passivity) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)

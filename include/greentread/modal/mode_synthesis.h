@@ -89,6 +89,11 @@ namespace greentread
       Eigen::MatrixXcd
       modes_at(double omega) const;
 
+      /// @p modal, the modes' part at @p omega, with the residual
+      /// G_r / (1 + j w beta_r) added: at() = with_residual(w, modes_at(w)).
+      Eigen::MatrixXcd
+      with_residual(double omega, Eigen::MatrixXcd modal) const;
+
       /// The smallest eigenvalue of G_r over its largest: >= -1e-12 for a
       /// positive semidefinite residual (round-off).
       double
@@ -116,16 +121,38 @@ namespace greentread
                const std::vector<std::array<double, 3>> &points);
 
     /**
+     * The modes' part of the synthesis, ModeSynthesis::modes_at(), at every
+     * line of a set of Green's functions: the β_r fit and compare() both
+     * need it, and it is most of their work (the sum over every mode at
+     * every line), so the modal stage computes it once for both.
+     */
+    struct ModalLines
+    {
+      /// g[l] at l df, l = 0 .. n_lines - 1; empty when not kept.
+      std::vector<Eigen::MatrixXcd> g;
+      double                        df = 0.;
+
+      bool
+      matches(const FrequencyResponseMatrix &direct) const
+      {
+        return g.size() == direct.n_lines && df == direct.df;
+      }
+    };
+
+    /**
      * @brief The synthesis with G_r from the 0 Hz line of @p direct and its
      * relaxation fitted to every line (fit_residual_relaxation()): what the
-     * modal stage and the contact use.
+     * modal stage and the contact use. If @p lines is given, the modes' part
+     * at every line is left there for compare() (unless it would take more
+     * than 1 GB: 1920 points and more at the default 257 lines).
      */
     ModeSynthesis
     synthesise(const Eigen::VectorXd         &omega,
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
                const Eigen::MatrixXd         &shapes_imag,
-               const FrequencyResponseMatrix &direct);
+               const FrequencyResponseMatrix &direct,
+               ModalLines                    *lines = nullptr);
 
     /**
      * @brief The residual's relaxation time beta_r [s] that makes
@@ -133,11 +160,14 @@ namespace greentread
      * functions @p direct, R(w) = g(w) - sum_k phi_k phi_k^T / (...), in the
      * least squares over every pair and line above 0 Hz: it minimises
      * sum |R (1 + j w beta) - G_r|^2, linear in beta. At least 0; the
-     * relaxation of @p model itself is ignored.
+     * relaxation of @p model itself is ignored. @p lines, if it matches
+     * @p direct, holds the modes' part at every line already.
      * @throws NumericalError if the model and @p direct differ in points.
      */
     double
-    fit_residual_relaxation(const ModeSynthesis &model, const FrequencyResponseMatrix &direct);
+    fit_residual_relaxation(const ModeSynthesis           &model,
+                            const FrequencyResponseMatrix &direct,
+                            const ModalLines              *lines = nullptr);
 
     /**
      * @brief The synthesis as a PatchModel in rank-one form, for the
@@ -206,9 +236,13 @@ namespace greentread
 
     /**
      * @brief E of Eq. (50) of @p model against @p direct over all its lines
-     * and pairs, and the model's passivity on the same lines.
+     * and pairs, and the model's passivity on the same lines. @p lines, if it
+     * matches @p direct, holds the modes' part at every line already (the
+     * modal stage's, left by synthesise()).
      */
     SynthesisErrors
-    compare(const ModeSynthesis &model, const FrequencyResponseMatrix &direct);
+    compare(const ModeSynthesis           &model,
+            const FrequencyResponseMatrix &direct,
+            const ModalLines              *lines = nullptr);
   } // namespace modal
 } // namespace greentread

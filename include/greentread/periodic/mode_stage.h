@@ -49,7 +49,9 @@ namespace greentread
      * @brief The modal synthesis at the points of @p green: reused from
      * @p file if @p reuse and its key is @p key, computed (the inflated tyre,
      * its ring modes over the ranks of @p comm, G_r from the 0 Hz line of
-     * @p green) and written by rank 0 otherwise. Prints what it did.
+     * @p green) and written by rank 0 otherwise. Prints what it did. When
+     * it computes, the modes' part at every line of @p green is left in
+     * @p lines (if given) for compare().
      * @throws NumericalError if the points of the tyre built here are not
      * those of @p green (a Green's file from other parameters).
      */
@@ -61,6 +63,7 @@ namespace greentread
                    const base::ParameterRecord          &record,
                    bool                                  reuse,
                    bool                                  print_timings,
-                   MPI_Comm                              comm);
+                   MPI_Comm                              comm,
+                   modal::ModalLines                    *lines = nullptr);
   } // namespace periodic
 } // namespace greentread
