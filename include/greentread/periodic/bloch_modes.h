@@ -58,6 +58,9 @@ namespace greentread
       unsigned int block = 4;
       /// Slices of [0, cutoff^2] searched one after the other, each with
       /// its own factorisation and with the modes of those below it locked.
+      /// Chosen by the modal stage's time on the default tyre's 129
+      /// wavenumbers, measured once (two threads): 79 s with one slice,
+      /// 75 s with two, 71 s with three, 75 s with four.
       unsigned int slices = 3;
     };
 
