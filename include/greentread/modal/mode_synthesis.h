@@ -144,7 +144,7 @@ namespace greentread
      * relaxation fitted to every line (fit_residual_relaxation()): what the
      * modal stage and the contact use. If @p lines is given, the modes' part
      * at every line is left there for compare() (unless it would take more
-     * than 1 GB: 1920 points and more at the default 257 lines).
+     * than 1 GB: about 490 points and more at the default 257 lines).
      */
     ModeSynthesis
     synthesise(const Eigen::VectorXd         &omega,
