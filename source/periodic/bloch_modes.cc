@@ -334,21 +334,22 @@ namespace greentread
         // places the next one where it should meet the tolerance.
         double       previous_residual = 0.;
         Eigen::Index previous_size     = 0;
+        bool         counted           = false;
         while (true)
           {
             const bool full = basis.size() == basis.capacity() || last_added == 0;
             if (basis.size() >= next_check || full)
               {
                 // Rayleigh-Ritz on the M-orthonormal basis: the Ritz values
-                // alone until as many as expected are below the bound.
-                const Dense  H     = basis.projected_stiffness();
+                // alone until as many as expected are below the bound, the
+                // vectors too from then on (by interlacing, their number
+                // below it never falls as the basis grows).
+                const Dense                          H = basis.projected_stiffness();
+                Eigen::SelfAdjointEigenSolver<Dense> ritz(H, counted ? Eigen::ComputeEigenvectors :
+                                                                       Eigen::EigenvaluesOnly);
                 Eigen::Index below = 0;
-                {
-                  const Eigen::SelfAdjointEigenSolver<Dense> values(H, Eigen::EigenvaluesOnly);
-                  while (below < values.eigenvalues().size() &&
-                         values.eigenvalues()(below) <= upper)
-                    ++below;
-                }
+                while (below < ritz.eigenvalues().size() && ritz.eigenvalues()(below) <= upper)
+                  ++below;
                 if (below > expected)
                   throw NumericalError(problem.which + " has " + std::to_string(below) +
                                        " Ritz values up to " + format_short(upper) +
@@ -358,8 +359,10 @@ namespace greentread
                 worst      = 0.;
                 if (below == expected)
                   {
-                    const Eigen::SelfAdjointEigenSolver<Dense> ritz(H);
-                    const Eigen::VectorXd                    &theta = ritz.eigenvalues();
+                    if (!counted)
+                      ritz.compute(H);
+                    counted                      = true;
+                    const Eigen::VectorXd &theta = ritz.eigenvalues();
                     const Eigen::VectorXcd x = basis.vectors() * ritz.eigenvectors().col(below - 1);
                     const Eigen::VectorXcd Kx = K * x,
                                            Mx = basis.mass_times_vectors() *
