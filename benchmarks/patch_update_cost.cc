@@ -1,16 +1,23 @@
 // The per-step cost of a patch's convolution update (history and advance,
 // no contact solve) against the number of points N_p, for the rank-one model
 // of the ring's own modes (Patch model/Source = fe modes: O(N_p N_m) per
-// step) and, where it fits in memory, the full form of the same model (a
+// step) with its shapes in double and in single precision (Convolution/Shape
+// precision) and, where it fits in memory, the full form of the same model (a
 // dense N_p x N_p residue per mode, O(N_p^2 N_m), the identified model's
 // form), side by side in one run, with the largest difference of their
-// displacement histories over the run.
+// displacement histories over the run. The update runs as in a rolling run
+// with a static residual: the displacement alone (history_u), the start
+// load the last step's end.
 //
 // The models are synthetic: N_m modes from 60 Hz to 8 kHz with 3% damping,
 // shapes of a ring's tread (cosines along and across), a small static
 // residual, on a 60 x 80 mm patch of N_p points.
 //
-//   patch_update_cost [--quick] [--output DIR]
+// With --model DIR/modal_model.h5 (the saved stage of a run with
+// 'Patch model/Source = fe modes', e.g. the main job's) the tyre's own model
+// is timed too, in both precisions (its full form would not fit in memory).
+//
+//   patch_update_cost [--quick] [--output DIR] [--model DIR/modal_model.h5]
 
 #include "benchmark_options.h"
 
@@ -20,7 +27,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <thread>
@@ -70,7 +76,10 @@ namespace
     const auto         start = std::chrono::steady_clock::now();
     for (unsigned int n = 0; n < steps; ++n)
       {
-        c.history(u, v);
+        if (c.influence().instantaneous)
+          c.history_u(u);
+        else
+          c.history(u, v);
         if (keep)
           t.u.push_back(u);
         for (unsigned int p = 0; p < P; ++p)
@@ -89,6 +98,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
       const auto         options = benchmark::parse(argc, argv, "patch_update_cost");
@@ -96,60 +106,102 @@ main(int argc, char **argv)
       const unsigned int n_modes = options.quick ? 200 : 3000;
       const unsigned int steps   = options.quick ? 50 : 300;
       const double       dt      = 15.36e-6; // one road sample of 384 um at 90 km/h
-      std::cout << "Patch convolution update per step (history + advance, no contact), " << n_modes
-                << " modes, dt = 15.36 us, " << threads << " threads, " << steps << " steps\n"
-                << "  N_p    form       ms/step   MB read/step  GFLOP/step  GFLOP/s  % of peak"
-                   "  max |u - u_full| / max |u_full|\n";
-      std::ofstream csv(options.output / "patch_update_cost.csv");
-      csv << "points,form,modes,ms_per_step,mb_per_step,gflop_per_step,gflops,peak_fraction,"
+      std::cout << "Patch convolution update per step (history + advance, no contact), dt = "
+                   "15.36 us, "
+                << threads << " threads, " << steps << " steps; synthetic models of " << n_modes
+                << " modes\n"
+                << "  N_p  shape rows  form       ms/step   MB read/step  GFLOP/step  GFLOP/s  "
+                   "% of peak  max |u - u_ref| / max |u_ref|\n";
+      base::AtomicFile csv_file(options.output / "patch_update_cost.csv");
+      auto            &csv = csv_file.stream();
+      csv << "points,shape_rows,form,ms_per_step,mb_per_step,gflop_per_step,gflops,peak_fraction,"
              "difference\n";
+
+      struct Case
+      {
+        std::string       name;
+        modal::PatchModel model;
+        bool              full; // build the full form as the reference
+      };
+      std::vector<Case> cases;
       const std::vector<std::array<unsigned int, 2>> grids =
         options.quick ? std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}} :
                         std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}, {{40, 48}}};
       for (const auto &[nx, ny] : grids)
+        cases.push_back({"synthetic", synthetic_modes(nx, ny, n_modes), nx * ny == 120});
+      if (!options.model.empty())
         {
-          const unsigned int P     = nx * ny;
-          const auto         model = synthetic_modes(nx, ny, n_modes);
-          auto fast = contact::make_modal_patch_convolution(model, dt, threads);
-          const Timing rank_one = time_update(*fast, steps, P == 120);
-          // Per step: one pass over the N_m x N_p shapes (the modal forces of
-          // four load components, then the displacement and velocity histories).
-          const double bytes = 8. * n_modes * P, flops = 2. * n_modes * P * (4. + 2.);
+          const auto synthesis = modal::read_modal_model(options.model.string());
+          cases.push_back({"tyre", modal::to_patch_model(synthesis, Eigen::MatrixXd(), 4000.), false});
+          std::cout << "  (tyre: " << options.model.string() << ", " << synthesis.n_modes()
+                    << " modes)\n";
+        }
+
+      for (const auto &c : cases)
+        {
+          const unsigned int P    = c.model.n_points();
+          const double       rows = double(c.model.shapes.rows()) * (c.model.shapes_imag.size() ? 2 : 1);
+          auto fast   = contact::make_modal_patch_convolution(c.model, dt, threads);
+          auto single = contact::make_modal_patch_convolution(
+            c.model, dt, threads, contact::ShapePrecision::single_precision);
+          const Timing rank_one = time_update(*fast, steps, true);
+          const Timing rounded  = time_update(*single, steps, true);
+          const auto   difference = [&](const Timing &a, const Timing &b) {
+            double diff = 0., size = 0.;
+            for (unsigned int n = 0; n < steps; ++n)
+              {
+                diff = std::max(diff, (a.u[n] - b.u[n]).cwiseAbs().maxCoeff());
+                size = std::max(size, b.u[n].cwiseAbs().maxCoeff());
+              }
+            return diff / size;
+          };
+          // Per step: one pass over the shape rows (the modal forces of the
+          // end load, one dot product per row, then the displacement
+          // history, one multiply-add per value). Single precision reads
+          // half the bytes and its peak is twice double's.
+          const double bytes = 8. * rows * P, flops = 2. * rows * P * 2.;
           const auto   row   = [&](const char *form, const Timing &t, const double b,
-                               const double f, const std::string &difference) {
+                               const double f, const double peak, const std::string &difference) {
             const double rate = f / (1e-3 * t.ms_per_step);
-            std::cout << format_printf("%5.0f", P) << "    " << form
+            std::cout << format_printf("%5.0f", P) << format_printf("%12.0f", rows) << "  " << form
                       << format_printf("%10.3f", t.ms_per_step) << format_printf("%14.1f", b / 1e6)
                       << format_printf("%12.4f", f / 1e9) << format_printf("%9.2f", rate / 1e9)
-                      << format_printf("%10.1f", 100. * rate / benchmark::peak_flops(threads)) << "   "
-                      << difference << '\n';
-            csv << P << ',' << form << ',' << n_modes << ',' << t.ms_per_step << ',' << b / 1e6
-                << ',' << f / 1e9 << ',' << rate / 1e9 << ',' << rate / benchmark::peak_flops(threads) << ','
-                << difference << '\n';
+                      << format_printf("%10.1f", 100. * rate / peak) << "   " << difference << '\n';
+            csv << P << ',' << rows << ',' << form << ',' << t.ms_per_step << ',' << b / 1e6 << ','
+                << f / 1e9 << ',' << rate / 1e9 << ',' << rate / peak << ',' << difference << '\n';
           };
-          if (P != 120)
+          const double peak        = benchmark::peak_flops(threads);
+          const double single_diff = difference(rounded, rank_one);
+          if (!(single_diff <= 1e-5))
             {
-              row("rank-one", rank_one, bytes, flops, "(full form not built: N_m N_p^2 residues)");
+              std::cerr << "patch_update_cost: single-precision shapes differ from double by "
+                        << single_diff << '\n';
+              return 1;
+            }
+          if (!c.full)
+            {
+              row("double  ", rank_one, bytes, flops, peak,
+                  "(reference; full form not built: N_m N_p^2 residues)");
+              row("single  ", rounded, bytes / 2., flops, 2. * peak, format_printf("%.2e", single_diff));
               continue;
             }
-          auto         dense = contact::make_modal_patch_convolution(modal::full_form(model), dt, threads);
-          const Timing full  = time_update(*dense, steps, true);
-          double       diff = 0., size = 0.;
-          for (unsigned int n = 0; n < steps; ++n)
+          auto dense = contact::make_modal_patch_convolution(modal::full_form(c.model), dt, threads);
+          const Timing full = time_update(*dense, steps, true);
+          const double diff = difference(rank_one, full);
+          row("double  ", rank_one, bytes, flops, peak, format_printf("%.2e", diff));
+          row("single  ", rounded, bytes / 2., flops, 2. * peak,
+              format_printf("%.2e", difference(rounded, full)));
+          row("full    ", full, 2. * 2. * 8. * rows * double(P) * P, 2. * 2. * 2. * rows * double(P) * P,
+              peak, "(reference)");
+          if (!(diff <= 1e-9))
             {
-              diff = std::max(diff, (rank_one.u[n] - full.u[n]).cwiseAbs().maxCoeff());
-              size = std::max(size, full.u[n].cwiseAbs().maxCoeff());
-            }
-          row("rank-one", rank_one, bytes, flops, format_printf("%.2e", diff / size));
-          row("full    ", full, 2. * 2. * 8. * n_modes * double(P) * P,
-              2. * 2. * 2. * n_modes * double(P) * P, "(reference)");
-          if (!(diff <= 1e-9 * size))
-            {
-              std::cerr << "patch_update_cost: the rank-one and full forms differ by "
-                        << diff / size << '\n';
+              std::cerr << "patch_update_cost: the rank-one and full forms differ by " << diff
+                        << '\n';
               return 1;
             }
         }
+      csv_file.commit();
+      std::cout << "Wrote " << (options.output / "patch_update_cost.csv").string() << '\n';
       return 0;
     }
   catch (const std::exception &e)

@@ -306,6 +306,13 @@ namespace greentread
         }
 
         void
+        history_u(Eigen::VectorXd &u) override
+        {
+          coarse->history_u(uc);
+          u = grid.expand(uc);
+        }
+
+        void
         advance(const PatchLoad &load) override
         {
           for (unsigned int g = 0; g < 4; ++g)

@@ -3,6 +3,7 @@
 #include <greentread/contact/projected_cg.h>
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace greentread
@@ -312,7 +313,16 @@ namespace greentread
         {
           s.step = k;
           s.time = (k + 1) * dt;
-          conv.history(uh, vh);
+          // A continuous force (an instantaneous compliance) is solved on the
+          // displacement alone: the history's velocity is not formed, and
+          // vh stays NaN so that any use of it would show.
+          if (conv.influence().instantaneous)
+            {
+              conv.history_u(uh);
+              vh.setConstant(std::numeric_limits<double>::quiet_NaN());
+            }
+          else
+            conv.history(uh, vh);
           demand(s.time, s.d, dd);
           s.report = solver.solve(uh, vh, s.d, dd, load);
           conv.advance(load);

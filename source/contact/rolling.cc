@@ -57,10 +57,11 @@ namespace greentread
     std::unique_ptr<PatchConvolution>
     make_patch_convolution(const convolution::Method method, const modal::PatchModel &model,
                            const double dt, const unsigned int n_steps,
-                           const unsigned int direct_kernel, const unsigned int threads)
+                           const unsigned int direct_kernel, const unsigned int threads,
+                           const ShapePrecision precision)
     {
       if (method == convolution::Method::modal_recursive)
-        return make_modal_patch_convolution(model, dt, threads);
+        return make_modal_patch_convolution(model, dt, threads, precision);
       if (method != convolution::Method::direct)
         throw InputError("parameter 'Convolution/Method' = " + convolution::to_string(method) +
                          " is not allowed for a contact patch; allowed: direct, modal-recursive");
@@ -85,7 +86,8 @@ namespace greentread
                const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
     {
       const auto conv = make_patch_convolution(setup.convolution, model, setup.time_step,
-                                               setup.n_steps, setup.direct_kernel, setup.threads);
+                                               setup.n_steps, setup.direct_kernel, setup.threads,
+                                               setup.shape_precision);
       return roll_patch(*conv, tread, road, start, setup, observe);
     }
 

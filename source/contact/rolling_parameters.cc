@@ -66,6 +66,8 @@ namespace greentread
       convolution = convolution::parse_method(
         prm.get("Method"), {convolution::Method::direct, convolution::Method::modal_recursive},
         "in scene tire-road-contact (the paper's modal form overflows over a rolling run)");
+      shape_precision = prm.get("Shape precision") == "single" ? ShapePrecision::single_precision :
+                                                                 ShapePrecision::double_precision;
       prm.leave_subsection();
     }
   } // namespace contact

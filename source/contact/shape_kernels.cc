@@ -1,5 +1,10 @@
 #include <greentread/contact/shape_kernels.h>
 
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
 // Compiled with -fopenmp-simd (CMakeLists.txt): the pragmas below let the
 // compiler reorder the sums of the dot products to vectorise them; no
 // OpenMP run time is involved.
@@ -10,60 +15,182 @@ namespace greentread
   {
     namespace
     {
+      // The products run in the shapes' precision: for float shapes the
+      // loads and weights are rounded to float once per call, each dot
+      // product (one row, P terms) and each call's sum (at most 128 rows)
+      // is formed in float, and the call's sum is added in double.
+      template <unsigned int N, typename T>
       [[gnu::always_inline]] inline void
-      forces_loop(const double *shapes, const std::size_t rows, const std::size_t P,
-                  const double *loads, double *forces)
+      forces_loop(const T *shapes, const std::size_t rows, const std::size_t P, const T *loads,
+                  double *forces)
       {
-        const double *l0 = loads, *l1 = loads + P, *l2 = loads + 2 * P, *l3 = loads + 3 * P;
+        const T *l0 = loads, *l1 = loads + (N > 1 ? P : 0), *l2 = loads + (N > 2 ? 2 * P : 0),
+                *l3 = loads + (N > 3 ? 3 * P : 0);
         for (std::size_t r = 0; r < rows; ++r)
           {
-            const double *s  = shapes + r * P;
-            double        a0 = 0., a1 = 0., a2 = 0., a3 = 0.;
+            const T *s  = shapes + r * P;
+            T        a0 = 0, a1 = 0, a2 = 0, a3 = 0;
 #pragma omp simd reduction(+ : a0, a1, a2, a3)
             for (std::size_t p = 0; p < P; ++p)
               {
                 a0 += s[p] * l0[p];
-                a1 += s[p] * l1[p];
-                a2 += s[p] * l2[p];
-                a3 += s[p] * l3[p];
+                if constexpr (N > 1)
+                  a1 += s[p] * l1[p];
+                if constexpr (N > 2)
+                  a2 += s[p] * l2[p];
+                if constexpr (N > 3)
+                  a3 += s[p] * l3[p];
               }
-            forces[4 * r]     = a0;
-            forces[4 * r + 1] = a1;
-            forces[4 * r + 2] = a2;
-            forces[4 * r + 3] = a3;
+            double *f = forces + N * r;
+            f[0]      = a0;
+            if constexpr (N > 1)
+              f[1] = a1;
+            if constexpr (N > 2)
+              f[2] = a2;
+            if constexpr (N > 3)
+              f[3] = a3;
           }
       }
 
-      [[gnu::always_inline]] inline void
-      add_loop(const double *shapes, const std::size_t rows, const std::size_t P,
-               const double *weights, double *out)
+      // One load vector: four rows at a time, so that four independent sums
+      // hide the latency of the additions (one row's sum alone is a chain of
+      // P / width dependent FMAs). Returns the rows done.
+      template <typename T>
+      [[gnu::always_inline]] inline std::size_t
+      forces_four_rows(const T *shapes, const std::size_t rows, const std::size_t P,
+                       const T *l0, double *forces)
       {
-        double *u = out, *v = out + P;
-        for (std::size_t r = 0; r < rows; ++r)
+        std::size_t r = 0;
+        for (; r + 4 <= rows; r += 4)
           {
-            const double *s = shapes + r * P;
-            const double  w0 = weights[2 * r], w1 = weights[2 * r + 1];
+            const T *s0 = shapes + r * P, *s1 = s0 + P, *s2 = s1 + P, *s3 = s2 + P;
+            T        a0 = 0, a1 = 0, a2 = 0, a3 = 0;
+#pragma omp simd reduction(+ : a0, a1, a2, a3)
+            for (std::size_t p = 0; p < P; ++p)
+              {
+                a0 += s0[p] * l0[p];
+                a1 += s1[p] * l0[p];
+                a2 += s2[p] * l0[p];
+                a3 += s3[p] * l0[p];
+              }
+            forces[r]     = a0;
+            forces[r + 1] = a1;
+            forces[r + 2] = a2;
+            forces[r + 3] = a3;
+          }
+        return r;
+      }
+
+      template <typename T>
+      [[gnu::always_inline]] inline void
+      forces_any(const T *shapes, const std::size_t rows, const std::size_t P,
+                 const double *loads, const unsigned int n_loads, double *forces)
+      {
+        const T                        *l = nullptr;
+        thread_local std::vector<float> rounded;
+        if constexpr (std::is_same_v<T, double>)
+          l = loads;
+        else
+          {
+            rounded.assign(loads, loads + n_loads * P);
+            l = rounded.data();
+          }
+        switch (n_loads)
+          {
+            case 1:
+              {
+                const std::size_t done = forces_four_rows(shapes, rows, P, l, forces);
+                return forces_loop<1>(shapes + done * P, rows - done, P, l, forces + done);
+              }
+            case 2:
+              return forces_loop<2>(shapes, rows, P, l, forces);
+            case 3:
+              return forces_loop<3>(shapes, rows, P, l, forces);
+            case 4:
+              return forces_loop<4>(shapes, rows, P, l, forces);
+            default:
+              throw std::logic_error("modal_forces: " + std::to_string(n_loads) +
+                                     " load vectors; allowed: 1 to 4");
+          }
+      }
+
+      // C = 1: u alone; C = 2: u and v. Four rows at a time: u and v are
+      // read and written once per four rows.
+      template <unsigned int C, typename T>
+      [[gnu::always_inline]] inline void
+      add_rows(const T *shapes, const std::size_t rows, const std::size_t P,
+               const double *weights, T *u, T *v)
+      {
+        std::size_t r = 0;
+        for (; r + 4 <= rows; r += 4)
+          {
+            const T *s0 = shapes + r * P, *s1 = s0 + P, *s2 = s1 + P, *s3 = s2 + P;
+            const T  x0 = T(weights[2 * r]), x1 = T(weights[2 * r + 2]),
+                    x2 = T(weights[2 * r + 4]), x3 = T(weights[2 * r + 6]);
+            const T y0 = T(weights[2 * r + 1]), y1 = T(weights[2 * r + 3]),
+                    y2 = T(weights[2 * r + 5]), y3 = T(weights[2 * r + 7]);
+#pragma omp simd
+            for (std::size_t p = 0; p < P; ++p)
+              {
+                const T a = s0[p], b = s1[p], c = s2[p], d = s3[p];
+                u[p] += x0 * a + x1 * b + x2 * c + x3 * d;
+                if constexpr (C > 1)
+                  v[p] += y0 * a + y1 * b + y2 * c + y3 * d;
+              }
+          }
+        for (; r < rows; ++r)
+          {
+            const T *s  = shapes + r * P;
+            const T  w0 = T(weights[2 * r]), w1 = T(weights[2 * r + 1]);
 #pragma omp simd
             for (std::size_t p = 0; p < P; ++p)
               {
                 u[p] += w0 * s[p];
-                v[p] += w1 * s[p];
+                if constexpr (C > 1)
+                  v[p] += w1 * s[p];
               }
           }
       }
 
-      __attribute__((target("avx2,fma"))) void
-      forces_avx2(const double *shapes, const std::size_t rows, const std::size_t P,
-                  const double *loads, double *forces)
+      template <typename T>
+      [[gnu::always_inline]] inline void
+      add_loop(const T *shapes, const std::size_t rows, const std::size_t P,
+               const double *weights, const unsigned int n_out, double *out)
       {
-        forces_loop(shapes, rows, P, loads, forces);
+        if constexpr (std::is_same_v<T, double>)
+          {
+            if (n_out == 1)
+              add_rows<1>(shapes, rows, P, weights, out, out);
+            else
+              add_rows<2>(shapes, rows, P, weights, out, out + P);
+          }
+        else
+          {
+            thread_local std::vector<float> sum;
+            sum.assign(2 * P, 0.f);
+            if (n_out == 1)
+              add_rows<1>(shapes, rows, P, weights, sum.data(), sum.data());
+            else
+              add_rows<2>(shapes, rows, P, weights, sum.data(), sum.data() + P);
+            for (std::size_t i = 0; i < n_out * P; ++i)
+              out[i] += sum[i];
+          }
       }
 
+      template <typename T>
       __attribute__((target("avx2,fma"))) void
-      add_avx2(const double *shapes, const std::size_t rows, const std::size_t P,
-               const double *weights, double *out)
+      forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
+                  const double *loads, const unsigned int n_loads, double *forces)
       {
-        add_loop(shapes, rows, P, weights, out);
+        forces_any(shapes, rows, P, loads, n_loads, forces);
+      }
+
+      template <typename T>
+      __attribute__((target("avx2,fma"))) void
+      add_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
+               const double *weights, const unsigned int n_out, double *out)
+      {
+        add_loop(shapes, rows, P, weights, n_out, out);
       }
 
       bool
@@ -76,26 +203,45 @@ namespace greentread
 
 
 
+    template <typename Shape>
     void
-    modal_forces(const double *shapes, const std::size_t rows, const std::size_t P,
-                 const double *loads, double *forces)
+    modal_forces(const Shape *shapes, const std::size_t rows, const std::size_t P,
+                 const double *loads, const unsigned int n_loads, double *forces)
     {
       if (has_avx2())
-        forces_avx2(shapes, rows, P, loads, forces);
+        forces_avx2(shapes, rows, P, loads, n_loads, forces);
       else
-        forces_loop(shapes, rows, P, loads, forces);
+        forces_any(shapes, rows, P, loads, n_loads, forces);
     }
 
 
 
+    template <typename Shape>
     void
-    add_weighted_shapes(const double *shapes, const std::size_t rows, const std::size_t P,
-                        const double *weights, double *out)
+    add_weighted_shapes(const Shape *shapes, const std::size_t rows, const std::size_t P,
+                        const double *weights, const unsigned int n_out, double *out)
     {
+      if (n_out != 1 && n_out != 2)
+        throw std::logic_error("add_weighted_shapes: " + std::to_string(n_out) +
+                               " outputs; allowed: 1 or 2");
       if (has_avx2())
-        add_avx2(shapes, rows, P, weights, out);
+        add_avx2(shapes, rows, P, weights, n_out, out);
       else
-        add_loop(shapes, rows, P, weights, out);
+        add_loop(shapes, rows, P, weights, n_out, out);
     }
+
+
+
+    template void
+    modal_forces(const double *, std::size_t, std::size_t, const double *, unsigned int,
+                 double *);
+    template void
+    modal_forces(const float *, std::size_t, std::size_t, const double *, unsigned int, double *);
+    template void
+    add_weighted_shapes(const double *, std::size_t, std::size_t, const double *, unsigned int,
+                        double *);
+    template void
+    add_weighted_shapes(const float *, std::size_t, std::size_t, const double *, unsigned int,
+                        double *);
   } // namespace contact
 } // namespace greentread

@@ -58,6 +58,14 @@ namespace greentread
           "'direct' (the sum over every past step with the patch model's kernels, the "
           "reference) or 'modal-recursive'.");
         prm.declare_entry(
+          "Shape precision", "single", dealii::Patterns::Selection("double|single"),
+          "Scene tire-road-contact with 'Patch model/Source' = fe modes and 'Method' = "
+          "modal-recursive: the precision in which the rolling update keeps the mode shapes at "
+          "the points. The update reads every shape once per step and is limited by memory "
+          "bandwidth; 'single' halves the bytes (each value rounded to 6e-8 of itself, the "
+          "products formed in float). The states and the history stay in double precision. "
+          "'double' keeps the shapes as the modal stage computed them.");
+        prm.declare_entry(
           "Truncation threshold", "0.01", base::RangePattern::closed(0., 1., ""),
           "Scene sdof, direct method only: the Green's function is cut after N_g steps, where its "
           "amplitude stays below this fraction of its maximum (the paper's rule: 0.01). "

@@ -319,6 +319,7 @@ namespace greentread
       setup.convolution   = rolling.convolution;
       setup.direct_kernel = rolling.direct_kernel;
       setup.threads       = dealii::MultithreadInfo::n_threads();
+      setup.shape_precision = rolling.shape_precision;
       const auto equilibrium = contact::start_grid_contact(grid, G0, tread, road_heights, setup);
       std::cout << "    static contact: indentation "
                 << format_printf("%.4g", 1e3 * equilibrium.delta) << " mm, load "
@@ -345,7 +346,8 @@ namespace greentread
       };
       const auto convolution = contact::make_grid_convolution(
         contact::make_patch_convolution(setup.convolution, model, dt, n_steps,
-                                        setup.direct_kernel, setup.threads),
+                                        setup.direct_kernel, setup.threads,
+                                        setup.shape_precision),
         grid);
       const auto summary =
         contact::roll_patch(*convolution, tread, road_heights, equilibrium, setup, observe);

@@ -89,7 +89,10 @@ namespace greentread
     subsections_read(const std::string &scene)
     {
       if (scene == "sdof")
-        return {"Oscillator", "Road", "Contact", "Time stepping", "Convolution", "Identification"};
+        return {"Oscillator",         "Road",
+                "Contact",            "Time stepping",
+                "Convolution/Method", "Convolution/Truncation threshold",
+                "Identification"};
       if (scene == "identify")
         return {"Identification"};
       if (scene == "geometry-study" || scene == "tire-cell")
@@ -98,7 +101,8 @@ namespace greentread
         return {"Geometry", "Materials", "Inflation", "Green's functions"};
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
               "Identification", "Patch model", "Road texture", "Rolling",
-              "Contact grid", "Time stepping/Time step", "Convolution/Method"};
+              "Contact grid", "Time stepping/Time step", "Convolution/Method",
+              "Convolution/Shape precision"};
     }
 
 

@@ -123,18 +123,25 @@ BOOST_AUTO_TEST_CASE(negative_damping_and_zero_frequency_are_refused)
 
 namespace
 {
-  /// The rank-one recursion of @p model against its full form (every
-  /// residue a dense matrix) and the direct convolution sum over 400 steps
-  /// of loads linear over each step, some with impulses: the largest
-  /// differences of the displacement histories over their size, and the
-  /// one-step influences' against each other.
-  std::array<double, 3>
-  recursion_differences(const modal::PatchModel &model)
+  /// The rank-one recursion of @p model (shapes kept in @p precision)
+  /// against its full form (every residue a dense matrix) and the direct
+  /// convolution sum over 400 steps of loads linear over each step, some
+  /// with impulses and some whose start is not the last step's end: the
+  /// largest differences of the displacement histories over their size,
+  /// and the one-step influences' against each other. Fourth: a second
+  /// rank-one recursion asked for the displacement alone (history_u, which
+  /// drops the velocity from its steps), its u against the first's, and its
+  /// velocity at the end, summed again from its states, against the first's.
+  std::array<double, 4>
+  recursion_differences(const modal::PatchModel &model,
+                        const contact::ShapePrecision precision =
+                          contact::ShapePrecision::double_precision)
   {
     const auto         full = modal::full_form(model);
     const double       dt   = 2e-5;
     const unsigned int n = 400, P = model.n_points();
-    auto fast   = contact::make_modal_patch_convolution(model, dt, 2);
+    auto fast   = contact::make_modal_patch_convolution(model, dt, 2, precision);
+    auto fast_u = contact::make_modal_patch_convolution(model, dt, 2, precision);
     auto dense  = contact::make_modal_patch_convolution(full, dt, 1);
     auto direct = contact::make_direct_patch_convolution(model, dt, n + 1);
     // The one-step influences, each against its own size. Without G_r the
@@ -161,32 +168,41 @@ namespace
     Eigen::VectorXd                        q0(P);
     for (unsigned int p = 0; p < P; ++p)
       q0(p) = u(random);
-    for (auto *c : {fast.get(), dense.get(), direct.get()})
+    for (auto *c : {fast.get(), fast_u.get(), dense.get(), direct.get()})
       c->preload(q0);
-    double          worst_dense = 0., worst_direct = 0., size = 0.;
-    Eigen::VectorXd previous = q0;
+    double          worst_dense = 0., worst_direct = 0., worst_u = 0., size = 0.;
+    Eigen::VectorXd previous = q0, u1(P), v1(P);
     for (unsigned int step = 0; step < n; ++step)
       {
-        Eigen::VectorXd u1(P), v1(P), u2(P), v2(P), u3(P), v3(P);
+        Eigen::VectorXd u2(P), v2(P), u3(P), v3(P), u4(P);
         fast->history(u1, v1);
         dense->history(u2, v2);
         direct->history(u3, v3);
+        fast_u->history_u(u4);
         size         = std::max(size, u2.cwiseAbs().maxCoeff());
         worst_dense  = std::max(worst_dense, (u1 - u2).cwiseAbs().maxCoeff());
         worst_direct = std::max(worst_direct, (u1 - u3).cwiseAbs().maxCoeff());
+        worst_u      = std::max(worst_u, (u1 - u4).cwiseAbs().maxCoeff());
         contact::PatchLoad load(P);
         Eigen::VectorXd    next(P);
         for (unsigned int p = 0; p < P; ++p)
           next(p) = u(random);
-        load.component[1] = previous;
-        load.component[2] = next;
+        // The start is the last end (its modal forces reused), except every
+        // 53rd step, and a load at rest (every 41st step) is zero.
+        load.component[1] = step % 53 == 7 ? Eigen::VectorXd(0.5 * previous) : previous;
+        load.component[2] = step % 41 == 11 ? Eigen::VectorXd::Zero(P) : next;
         if (step % 37 == 0)
-          load.component[0] = 1e-4 * next;
-        previous = next;
-        for (auto *c : {fast.get(), dense.get(), direct.get()})
+          load.component[0] = 1e-4 * load.component[2];
+        previous = load.component[2];
+        for (auto *c : {fast.get(), fast_u.get(), dense.get(), direct.get()})
           c->advance(load);
       }
-    return {{worst_dense / size, worst_direct / size, influence}};
+    Eigen::VectorXd u4(P), v4(P);
+    fast->history(u1, v1);
+    fast_u->history(u4, v4);
+    const double velocity = (v1 - v4).cwiseAbs().maxCoeff() / v1.cwiseAbs().maxCoeff();
+    return {{worst_dense / size, worst_direct / size, influence,
+             std::max(worst_u / size, velocity)}};
   }
 } // namespace
 
@@ -197,10 +213,33 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   s.damping_ratio(3) = 0.01;
   const auto d       = recursion_differences(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.));
   BOOST_TEST_MESSAGE("rank-one recursion against the full form " << d[0]
-                     << ", against the direct sum " << d[1] << "; influences " << d[2]);
+                     << ", against the direct sum " << d[1] << "; influences " << d[2]
+                     << "; displacement alone, then the velocity " << d[3]);
   BOOST_TEST(d[0] < 1e-11);
   BOOST_TEST(d[1] < 1e-9);
   BOOST_TEST(d[2] < 1e-12);
+  BOOST_TEST(d[3] < 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_rounding)
+{
+  // Convolution/Shape precision = single: the shapes rounded to float (6e-8
+  // of each value) and the products formed in float over 7 points. The
+  // history then differs from the full form (double) by about that rounding
+  // times the modes' sum: bounded here by 1e-6, twenty times float's
+  // epsilon, and far below the synthesis' own error (E of 1e-3).
+  auto s             = known_synthesis();
+  s.damping_ratio(3) = 0.01;
+  const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto d       = recursion_differences(model, contact::ShapePrecision::single_precision);
+  BOOST_TEST_MESSAGE("single-precision shapes: against the full form " << d[0]
+                     << ", against the direct sum " << d[1] << "; displacement alone, then the "
+                     << "velocity " << d[3]);
+  BOOST_TEST(d[0] < 1e-6);
+  BOOST_TEST(d[1] < 1e-6);
+  BOOST_TEST(d[0] > 1e-12); // the shapes are rounded: not the double path
+  BOOST_TEST(d[2] < 1e-12); // the one-step influences stay those of the double model
+  BOOST_TEST(d[3] < 1e-6);
 }
 
 BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
@@ -252,10 +291,16 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
              1e-12 * s.at(0.).cwiseAbs().maxCoeff());
   const auto d = recursion_differences(model);
   BOOST_TEST_MESSAGE("complex shapes: rank-one recursion against the full form "
-                     << d[0] << ", against the direct sum " << d[1] << "; influences " << d[2]);
+                     << d[0] << ", against the direct sum " << d[1] << "; influences " << d[2]
+                     << "; displacement alone, then the velocity " << d[3]);
   BOOST_TEST(d[0] < 1e-11);
   BOOST_TEST(d[1] < 1e-9);
   BOOST_TEST(d[2] < 1e-12);
+  BOOST_TEST(d[3] < 1e-12);
+  const auto single = recursion_differences(model, contact::ShapePrecision::single_precision);
+  BOOST_TEST_MESSAGE("complex shapes in single precision: against the full form " << single[0]);
+  BOOST_TEST(single[0] < 1e-6);
+  BOOST_TEST(single[3] < 1e-6);
   // A complex shape on an over-critical mode has no pole pair: refused.
   s.damping_ratio(2) = 1.5;
   BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);

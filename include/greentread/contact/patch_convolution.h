@@ -81,6 +81,16 @@ namespace greentread
       virtual void
       history(Eigen::VectorXd &u, Eigen::VectorXd &v) = 0;
 
+      /// The history's displacement alone: all a contact with a continuous
+      /// force needs (influence().instantaneous). A convolution may then
+      /// leave the velocity out of its later steps; history() still gives it.
+      virtual void
+      history_u(Eigen::VectorXd &u)
+      {
+        Eigen::VectorXd v(n_p);
+        history(u, v);
+      }
+
       /// Record the loads of the current step and move to the next.
       virtual void
       advance(const PatchLoad &load) = 0;
@@ -117,6 +127,21 @@ namespace greentread
     };
 
     /**
+     * @brief The precision in which the rank-one update (a model of the
+     * ring's own modes) keeps the mode shapes: the update reads every shape
+     * once per step and is limited by memory bandwidth, so single precision
+     * (each value rounded to 6e-8 of itself) halves its bytes. The states,
+     * the loads and the history stay in double precision; with single
+     * precision the products run in float (greentread/contact/
+     * shape_kernels.h).
+     */
+    enum class ShapePrecision
+    {
+      double_precision,
+      single_precision
+    };
+
+    /**
      * @brief The exact modal recursion of greentread/convolution/
      * modal_recursive_convolution.h for every pair at once: one complex state
      * per (pole, loaded point), \f$N_m N_p\f$ of them, and the history
@@ -126,7 +151,8 @@ namespace greentread
      */
     std::unique_ptr<PatchConvolution>
     make_modal_patch_convolution(const modal::PatchModel &model, double dt,
-                                 unsigned int n_threads = 1);
+                                 unsigned int   n_threads = 1,
+                                 ShapePrecision precision = ShapePrecision::double_precision);
 
     /**
      * @brief The reference: the convolution sum of Eq. (39)-(40) over every

@@ -38,6 +38,8 @@ namespace greentread
       convolution::Method    convolution   = convolution::Method::modal_recursive;
       unsigned int           direct_kernel = 0; ///< steps kept by `direct`; 0: the whole run
       unsigned int           threads       = 1; ///< of the modal recursion
+      /// of the rank-one modal recursion's shapes
+      ShapePrecision shape_precision = ShapePrecision::double_precision;
     };
 
     /**
@@ -86,7 +88,8 @@ namespace greentread
     std::unique_ptr<PatchConvolution>
     make_patch_convolution(convolution::Method method, const modal::PatchModel &model,
                            double dt, unsigned int n_steps, unsigned int direct_kernel,
-                           unsigned int threads);
+                           unsigned int   threads,
+                           ShapePrecision precision = ShapePrecision::double_precision);
 
     /**
      * @brief Roll @p model over @p road from @p start (start_contact()): the

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/contact/patch_convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -10,7 +11,8 @@ namespace greentread
 {
   namespace contact
   {
-    /// Subsection "Rolling", with 'Time stepping/Time step' and 'Convolution/Method'.
+    /// Subsection "Rolling", with 'Time stepping/Time step', 'Convolution/Method' and
+    /// 'Convolution/Shape precision'.
     struct RollingParameters
     {
       std::vector<double> speeds = {50., 70., 90.}; // km/h
@@ -20,6 +22,7 @@ namespace greentread
       double              indentation = 0.;
       bool                static_start = true;
       convolution::Method convolution = convolution::Method::modal_recursive;
+      ShapePrecision      shape_precision = ShapePrecision::single_precision; // Convolution/Shape precision
       unsigned int        direct_kernel = 0;
       unsigned int        frames = 40;
       double              stress_reference = 100.;

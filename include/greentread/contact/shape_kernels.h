@@ -12,8 +12,13 @@
  * two or four right-hand sides. These loops read each row once from cache and
  * are vectorised by the compiler (OpenMP SIMD reductions); where the CPU has
  * AVX2 and FMA they run in a copy built for them, chosen once at run time.
- * On the default tyre's 70,578 shape rows x 120 points (AVX2): 11.7 ms per
- * step with Eigen, 4.4 ms with these loops on one core, 2.2 ms on two.
+ *
+ * The shapes are double or float (ShapePrecision in
+ * greentread/contact/patch_convolution.h): the update is memory bound, and
+ * single precision halves the bytes read per step. The products run in the
+ * shapes' precision: for float shapes each dot product (P terms) and each
+ * call's sum over its rows are formed in float, and added to the results in
+ * double.
  */
 
 namespace greentread
@@ -21,25 +26,30 @@ namespace greentread
   namespace contact
   {
     /**
-     * @brief forces[4 r + g] = sum_p shapes[r P + p] loads[g P + p], for the
-     * @p rows rows of the row-major @p shapes (P values each) and the four
-     * load vectors @p loads (g = 0 .. 3, P values each).
+     * @brief forces[n_loads r + g] = sum_p shapes[r P + p] loads[g P + p], for
+     * the @p rows rows of the row-major @p shapes (P values each) and the
+     * @p n_loads (1 to 4) load vectors @p loads (P values each).
      */
+    template <typename Shape>
     void
-    modal_forces(const double *shapes,
+    modal_forces(const Shape  *shapes,
                  std::size_t   rows,
                  std::size_t   P,
                  const double *loads,
+                 unsigned int  n_loads,
                  double       *forces);
 
     /**
-     * @brief out[c P + p] += sum_r weights[2 r + c] shapes[r P + p], c = 0, 1.
+     * @brief out[c P + p] += sum_r weights[2 r + c] shapes[r P + p], for
+     * c = 0 .. @p n_out - 1 (1: the first sum alone, 2: both).
      */
+    template <typename Shape>
     void
-    add_weighted_shapes(const double *shapes,
+    add_weighted_shapes(const Shape  *shapes,
                         std::size_t   rows,
                         std::size_t   P,
                         const double *weights,
+                        unsigned int  n_out,
                         double       *out);
   } // namespace contact
 } // namespace greentread
