@@ -4,8 +4,9 @@
 
 /**
  * @file
- * The two products of the rank-one modal update (contact/patch_convolution.cc,
- * ModePatchConvolution) on one block of shape rows, as plain loops.
+ * The two products of the rank-one modal update
+ * (greentread/contact/mode_patch_convolution.h) on one block of shape rows, as
+ * plain loops.
  *
  * Eigen's general products, built here for SSE2 only (no -march=native: see
  * CMakeLists.txt), spent most of a step packing the block for products with
