@@ -15,7 +15,7 @@
 # and subdivisions 1 2 4 8 12 16. Every run uses the matrix-free solver
 # ('Contact grid/Solver' = projected CG; SOLVER=pivoting in the environment
 # for the dense one, up to s = 8), which gives the same levels as pivoting to
-# 1e-9 dB (README). About 25 minutes on this 2-core machine (each run also
+# 2e-5 dB (README). About 20 minutes on this 2-core machine (each run also
 # checks the reused modal model against the Green's functions, about 40 s).
 set -euo pipefail
 

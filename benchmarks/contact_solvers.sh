@@ -9,7 +9,7 @@
 #
 #   bash benchmarks/contact_solvers.sh [main job's output] [program] [subdivisions...]
 #
-# defaults: output/, build/greentread, subdivisions 4 8. About 12 minutes on
+# defaults: output/, build/greentread, subdivisions 4 8. About 6 minutes on
 # this 2-core machine (pivoting at 7680 points is most of it).
 set -euo pipefail
 
