@@ -103,7 +103,7 @@ namespace greentread
               if ((g == 1 && reuse) || (load.component[g].array() == 0.).all())
                 continue;
               slot[g]                = n_loads;
-              loads_t.row(n_loads++) = load.component[g].transpose();
+              loads_t.row(n_loads++) = load.component[g].transpose().template cast<Shape>();
             }
           end_load = load.component[2];
           have_end = true;
@@ -130,7 +130,8 @@ namespace greentread
           // start load is q0: its modal forces are kept.
           const Eigen::Index m = hr.size();
           Eigen::VectorXd    f(stride * m);
-          modal_forces(shapes.data(), stride * m, n_p, q0.data(), 1, f.data());
+          const Eigen::Matrix<Shape, Eigen::Dynamic, 1> q = q0.template cast<Shape>();
+          modal_forces(shapes.data(), stride * m, n_p, q.data(), 1, f.data());
           for (Eigen::Index k = 0; k < m; ++k)
             {
               const std::complex<double> fk(f(stride * k), stride == 2 ? f(2 * k + 1) : 0.);
@@ -241,10 +242,10 @@ namespace greentread
         // The states of the next history, h = e^{lambda dt} s, and its u, v.
         Eigen::VectorXd hr, hi;
         Eigen::MatrixXd uv;
-        // The step's load vectors to project, one row each, as
-        // modal_forces() reads them, and where each component is among them
+        // The step's load vectors to project, one row each, in the shapes'
+        // precision, as modal_forces() reads them, and where each component is among them
         // (-1: zero, or reused).
-        Eigen::Matrix<double, 4, Eigen::Dynamic, Eigen::RowMajor> loads_t;
+        Eigen::Matrix<Shape, 4, Eigen::Dynamic, Eigen::RowMajor> loads_t;
         unsigned int                                              n_loads = 0;
         std::array<int, 4>                                        slot{{-1, -1, -1, -1}};
         // The last end load and its modal forces.

@@ -16,7 +16,8 @@ namespace greentread
     namespace
     {
       // The products run in the shapes' precision: for float shapes the
-      // loads and weights are rounded to float once per call, each dot
+      // loads come rounded to float (by the caller, once per step), the
+      // weights are rounded once per call, each dot
       // product (one row, P terms) and each call's sum (at most 128 rows)
       // is formed in float, and the call's sum is added in double.
       template <unsigned int N, typename T>
@@ -83,18 +84,9 @@ namespace greentread
 
       template <typename T>
       [[gnu::always_inline]] inline void
-      forces_any(const T *shapes, const std::size_t rows, const std::size_t P,
-                 const double *loads, const unsigned int n_loads, double *forces)
+      forces_any(const T *shapes, const std::size_t rows, const std::size_t P, const T *l,
+                 const unsigned int n_loads, double *forces)
       {
-        const T                        *l = nullptr;
-        thread_local std::vector<float> rounded;
-        if constexpr (std::is_same_v<T, double>)
-          l = loads;
-        else
-          {
-            rounded.assign(loads, loads + n_loads * P);
-            l = rounded.data();
-          }
         switch (n_loads)
           {
             case 1:
@@ -179,8 +171,8 @@ namespace greentread
 
       template <typename T>
       __attribute__((target("avx2,fma"))) void
-      forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
-                  const double *loads, const unsigned int n_loads, double *forces)
+      forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P, const T *loads,
+                  const unsigned int n_loads, double *forces)
       {
         forces_any(shapes, rows, P, loads, n_loads, forces);
       }
@@ -206,7 +198,7 @@ namespace greentread
     template <typename Shape>
     void
     modal_forces(const Shape *shapes, const std::size_t rows, const std::size_t P,
-                 const double *loads, const unsigned int n_loads, double *forces)
+                 const Shape *loads, const unsigned int n_loads, double *forces)
     {
       if (has_avx2())
         forces_avx2(shapes, rows, P, loads, n_loads, forces);
@@ -236,7 +228,7 @@ namespace greentread
     modal_forces(const double *, std::size_t, std::size_t, const double *, unsigned int,
                  double *);
     template void
-    modal_forces(const float *, std::size_t, std::size_t, const double *, unsigned int, double *);
+    modal_forces(const float *, std::size_t, std::size_t, const float *, unsigned int, double *);
     template void
     add_weighted_shapes(const double *, std::size_t, std::size_t, const double *, unsigned int,
                         double *);

@@ -29,14 +29,15 @@ namespace greentread
     /**
      * @brief forces[n_loads r + g] = sum_p shapes[r P + p] loads[g P + p], for
      * the @p rows rows of the row-major @p shapes (P values each) and the
-     * @p n_loads (1 to 4) load vectors @p loads (P values each).
+     * @p n_loads (1 to 4) load vectors @p loads (P values each, in the
+     * shapes' precision).
      */
     template <typename Shape>
     void
     modal_forces(const Shape  *shapes,
                  std::size_t   rows,
                  std::size_t   P,
-                 const double *loads,
+                 const Shape  *loads,
                  unsigned int  n_loads,
                  double       *forces);
 
