@@ -58,9 +58,11 @@ namespace greentread
       unsigned int block = 4;
       /// Slices of [0, cutoff^2] searched one after the other, each with
       /// its own factorisation and with the modes of those below it locked.
-      /// Chosen by the modal stage's time on the default tyre's 129
-      /// wavenumbers, measured once (two threads): 79 s with one slice,
-      /// 75 s with two, 71 s with three, 75 s with four.
+      /// Chosen by `benchmarks/mode_search_cost` (one thread, the default
+      /// tyre's wavenumbers 0, 1, 16, 64 and 128, search and coupling):
+      /// 8.0 s with one slice, 7.2 s with two, 6.7 s with three, 7.4 s with
+      /// four (before the shift moved to a slice's middle: 71 to 79 s for
+      /// the whole modal stage, three slices the fastest).
       unsigned int slices = 3;
     };
 
@@ -77,12 +79,12 @@ namespace greentread
      *   bounds of the eigenvalues in order, so none can then be missing.
      * - The first slice is searched with the shift s = -(cutoff / 20)^2
      *   (K_phi - s M_phi positive definite, even for an unheld cell), each
-     *   other one with the shift at its lower end, and with the modes
-     *   found below it locked: its basis is kept M-orthogonal to them, so
-     *   its Krylov space converges from its lower end up, as the first
-     *   does from zero. Each basis then holds about a third of the modes,
-     *   and the Gram-Schmidt work, which grows with the square of the
-     *   basis, falls.
+     *   other one with the shift at its middle, and with the modes found
+     *   below it locked: its basis is kept M-orthogonal to them, and the
+     *   Ritz values on that space are still upper bounds of the remaining
+     *   eigenvalues in order, whatever the shift. Each basis then holds
+     *   about a third of the modes, and the Gram-Schmidt work, which grows
+     *   with the square of the basis, falls.
      * - The Krylov space of T = (K_phi - s M_phi)^{-1} M_phi starts from
      *   the block T X, X fixed pseudo-random vectors (so that it lies in
      *   T's range, where the modes are, also when M is singular: mass
