@@ -88,9 +88,10 @@ namespace greentread
           re2(k) = d2.real();
           im2(k) = d2.imag();
         }
+      const auto       sums = shape_sums(shapes, shapes_imag, {{re1, re2}, {im1, im2}});
       Eigen::MatrixXcd g(shapes.cols(), shapes.cols());
-      g.real() = shape_sum(shapes, shapes_imag, re1, re2);
-      g.imag() = shape_sum(shapes, shapes_imag, im1, im2);
+      g.real() = sums[0];
+      g.imag() = sums[1];
       return g;
     }
 

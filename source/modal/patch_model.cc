@@ -121,29 +121,62 @@ namespace greentread
 
 
 
+    std::vector<Eigen::MatrixXd>
+    shape_sums(const Eigen::MatrixXd                                          &A,
+               const Eigen::MatrixXd                                          &B,
+               const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> &weights)
+    {
+      // Each sum is symmetric: only its lower triangle is computed (Eigen's
+      // triangular product, half the work of a full one), then mirrored.
+      // With complex shapes it is A^T (W1 A + W2 B) + B^T (W2 A - W1 B), two
+      // such products instead of three full ones. The shapes are taken a
+      // chunk of rows at a time, every sum from the same chunk while it is
+      // in cache, and the weighted shapes formed in a buffer of a chunk:
+      // formed whole they were tens of megabytes per sum, allocated,
+      // written and read again at every line of the synthesis.
+      constexpr Eigen::Index       chunk = 512;
+      const Eigen::Index           m = A.rows(), n = A.cols();
+      std::vector<Eigen::MatrixXd> sums(weights.size(), Eigen::MatrixXd::Zero(n, n));
+      Eigen::MatrixXd              X(std::min(chunk, m), n);
+      for (Eigen::Index r = 0; r < m; r += chunk)
+        {
+          const Eigen::Index len = std::min(chunk, m - r);
+          auto               Xc  = X.topRows(len);
+          const auto         Ac  = A.middleRows(r, len);
+          for (std::size_t s = 0; s < weights.size(); ++s)
+            {
+              auto      &sum = sums[s];
+              const auto v1  = weights[s].first.segment(r, len).asDiagonal();
+              if (B.size() == 0)
+                {
+                  Xc.noalias()                        = v1 * Ac;
+                  sum.triangularView<Eigen::Lower>() += Ac.transpose() * Xc;
+                  continue;
+                }
+              const auto Bc = B.middleRows(r, len);
+              const auto v2 = weights[s].second.segment(r, len).asDiagonal();
+              Xc.noalias()  = v1 * Ac;
+              Xc.noalias() += v2 * Bc;
+              sum.triangularView<Eigen::Lower>() += Ac.transpose() * Xc;
+              Xc.noalias() = v2 * Ac;
+              Xc.noalias() -= v1 * Bc;
+              sum.triangularView<Eigen::Lower>() += Bc.transpose() * Xc;
+            }
+        }
+      for (auto &sum : sums)
+        sum = sum.selfadjointView<Eigen::Lower>();
+      return sums;
+    }
+
+
+
     Eigen::MatrixXd
     shape_sum(const Eigen::MatrixXd &A,
               const Eigen::MatrixXd &B,
               const Eigen::VectorXd &w1,
               const Eigen::VectorXd &w2)
     {
-      // The sum is symmetric: only its lower triangle is computed (Eigen's
-      // triangular product, half the work of a full one), then mirrored.
-      // With complex shapes it is A^T (W1 A + W2 B) + B^T (W2 A - W1 B), two
-      // such products instead of three full ones.
-      Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(A.cols(), A.cols());
-      if (B.size() == 0)
-        sum.triangularView<Eigen::Lower>() = A.transpose() * (w1.asDiagonal() * A);
-      else
-        {
-          Eigen::MatrixXd X = w1.asDiagonal() * A;
-          X.noalias() += w2.asDiagonal() * B;
-          sum.triangularView<Eigen::Lower>() = A.transpose() * X;
-          X = w2.asDiagonal() * A;
-          X.noalias() -= w1.asDiagonal() * B;
-          sum.triangularView<Eigen::Lower>() += B.transpose() * X;
-        }
-      return sum.selfadjointView<Eigen::Lower>();
+      return shape_sums(A, B, {{w1, w2}}).front();
     }
 
 

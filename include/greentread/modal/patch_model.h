@@ -12,6 +12,7 @@
 #include <complex>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -71,6 +72,13 @@ namespace greentread
               const Eigen::MatrixXd &B,
               const Eigen::VectorXd &w1,
               const Eigen::VectorXd &w2);
+
+    /// shape_sum() for several pairs of weights (w1, w2) at once, in one
+    /// pass over the shapes: the real and imaginary parts of one sum.
+    std::vector<Eigen::MatrixXd>
+    shape_sums(const Eigen::MatrixXd                                          &A,
+               const Eigen::MatrixXd                                          &B,
+               const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> &weights);
 
     /// Where the patch model comes from.
     enum class PatchModelSource
