@@ -129,7 +129,7 @@ namespace greentread
          * Q's chunk, packed by the product, stays in the second-level cache.
          * (One vector product per column of Q and chunk of 64 rows, as it
          * was, spent more time in the calls than in the arithmetic: the
-         * default tyre's search took 20% longer.)
+         * default tyre's search took about a quarter longer.)
          */
         template <typename Tall>
         static void
@@ -447,9 +447,9 @@ namespace greentread
       // them locked (deflated), so each basis holds only its slice's modes
       // and the Gram-Schmidt work, which grows with the square of the
       // basis, shrinks. At the middle no wanted mode is further from the
-      // shift than half the slice, and the slice's modes converged in 20 to
-      // 25% fewer solves than with the shift at the lower end (the default
-      // tyre, wavenumbers 0, 1, 16, 64, 128: 98 to 113 against 116 to 134).
+      // shift than half the slice, and the modes converged in 16% fewer
+      // solves than with the shift at the lower end (the default tyre,
+      // wavenumbers 0, 1, 16, 64, 128: 95 to 113 against 116 to 134).
       // The first slice stays shifted at its bottom: in the middle the
       // lowest modes, far below the shift in relative terms, stopped at
       // relative residuals of 1e-5 to 1e-4 (accepted on their backward

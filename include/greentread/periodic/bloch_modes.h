@@ -60,8 +60,8 @@ namespace greentread
       /// its own factorisation and with the modes of those below it locked.
       /// Chosen by `benchmarks/mode_search_cost` (one thread, the default
       /// tyre's wavenumbers 0, 1, 16, 64 and 128, search and coupling):
-      /// 8.0 s with one slice, 7.2 s with two, 6.7 s with three, 7.4 s with
-      /// four (before the shift moved to a slice's middle: 71 to 79 s for
+      /// 8.35 s with one slice, 7.15 s with two, 6.77 s with three, 7.70 s
+      /// with four (before the shift moved to a slice's middle: 71 to 79 s for
       /// the whole modal stage, three slices the fastest).
       unsigned int slices = 3;
     };
