@@ -7,7 +7,12 @@
 // form), side by side in one run, with the largest difference of their
 // displacement histories over the run. The update runs as in a rolling run
 // with a static residual: the displacement alone (history_u), the start
-// load the last step's end.
+// load the last step's end. The rank-one update runs step by step (one pass
+// over the shapes per step, the reference) and, where the update chooses
+// them (at least 128 shape rows per point), in time blocks of 4, 8 and 16
+// steps (one pass per block, contact/mode_patch_convolution.h); the set-up
+// (the blocks' lag kernels, formed on the first step) is printed apart from
+// the time per step.
 //
 // The models are synthetic: N_m modes from 60 Hz to 8 kHz with 3% damping,
 // shapes of a ring's tread (cosines along and across), a small static
@@ -22,6 +27,7 @@
 #include "benchmark_options.h"
 
 #include <greentread/base/exceptions.h>
+#include <greentread/contact/mode_patch_convolution.h>
 #include <greentread/contact/patch_convolution.h>
 #include <greentread/modal/mode_synthesis.h>
 
@@ -61,7 +67,7 @@ namespace
 
   struct Timing
   {
-    double                       ms_per_step = 0.;
+    double                       ms_per_step = 0., setup_ms = 0.;
     std::vector<Eigen::VectorXd> u;
   };
 
@@ -73,9 +79,16 @@ namespace
     Eigen::VectorXd    u(P), v(P);
     contact::PatchLoad load(P);
     Timing             t;
-    const auto         start = std::chrono::steady_clock::now();
+    auto               start = std::chrono::steady_clock::now();
     for (unsigned int n = 0; n < steps; ++n)
       {
+        if (n == 1)
+          {
+            // The first step holds the set-up: timed apart.
+            const auto now = std::chrono::steady_clock::now();
+            t.setup_ms     = 1e3 * std::chrono::duration<double>(now - start).count();
+            start          = now;
+          }
         if (c.influence().instantaneous)
           c.history_u(u);
         else
@@ -90,8 +103,9 @@ namespace
           load.component[2](p) = 1. + std::sin(1e-2 * (n + 1) + p);
         c.advance(load);
       }
-    t.ms_per_step =
-      1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    t.ms_per_step = 1e3 *
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                    (steps - 1);
     return t;
   }
 } // namespace
@@ -112,12 +126,12 @@ main(int argc, char **argv)
                    "15.36 us, "
                 << threads << " threads, " << steps << " steps; synthetic models of " << n_modes
                 << " modes\n"
-                << "  N_p  shape rows  form       ms/step   MB read/step  GFLOP/step  GFLOP/s  "
-                   "% of peak  max |u - u_ref| / max |u_ref|\n";
+                << "  N_p  shape rows  form (shapes, steps per block)  set-up ms  ms/step  MB "
+                   "read/step  GFLOP/step  GFLOP/s  % of peak  max |u - u_ref| / max |u_ref|\n";
       base::AtomicFile csv_file(options.output / "patch_update_cost.csv");
       auto            &csv = csv_file.stream();
-      csv << "points,shape_rows,form,ms_per_step,mb_per_step,gflop_per_step,gflops,peak_fraction,"
-             "difference\n";
+      csv << "points,shape_rows,form,block_steps,setup_ms,ms_per_step,mb_per_step,gflop_per_step,"
+             "gflops,peak_fraction,difference\n";
 
       struct Case
       {
@@ -143,12 +157,15 @@ main(int argc, char **argv)
         {
           const unsigned int P    = c.model.n_points();
           const double       rows = double(c.model.shapes.rows()) * (c.model.shapes_imag.size() ? 2 : 1);
-          auto fast   = contact::make_modal_patch_convolution(c.model, dt, threads);
-          auto single = contact::make_modal_patch_convolution(
-            c.model, dt, threads, contact::ShapePrecision::single_precision);
-          const Timing rank_one = time_update(*fast, steps, true);
-          const Timing rounded  = time_update(*single, steps, true);
-          const auto   difference = [&](const Timing &a, const Timing &b) {
+          const auto   make     = [&](const contact::ShapePrecision precision,
+                                 const unsigned int           block) {
+            return contact::make_rank_one_patch_convolution(c.model, dt, threads, precision, block);
+          };
+          using contact::ShapePrecision;
+          // The reference: double shapes, step by step.
+          auto         reference_conv = make(ShapePrecision::double_precision, 1);
+          const Timing reference      = time_update(*reference_conv, steps, true);
+          const auto   difference     = [&](const Timing &a, const Timing &b) {
             double diff = 0., size = 0.;
             for (unsigned int n = 0; n < steps; ++n)
               {
@@ -157,44 +174,58 @@ main(int argc, char **argv)
               }
             return diff / size;
           };
-          // Per step: one pass over the shape rows (the modal forces of the
-          // end load, one dot product per row, then the displacement
-          // history, one multiply-add per value). Single precision reads
-          // half the bytes and its peak is twice double's.
+          // Per step: the modal forces of the end load (one multiply-add per
+          // shape value) and the displacement history (one more), step by
+          // step or in blocks; the shapes read once per pass, that is once
+          // per step or once per block. Single precision reads half the
+          // bytes and its peak is twice double's.
           const double bytes = 8. * rows * P, flops = 2. * rows * P * 2.;
-          const auto   row   = [&](const char *form, const Timing &t, const double b,
-                               const double f, const double peak, const std::string &difference) {
+          const double peak  = benchmark::peak_flops(threads);
+          const auto   row   = [&](const std::string &form, const unsigned int block,
+                               const Timing &t, const double b, const double f, const double pk,
+                               const std::string &diff) {
             const double rate = f / (1e-3 * t.ms_per_step);
-            std::cout << format_printf("%5.0f", P) << format_printf("%12.0f", rows) << "  " << form
-                      << format_printf("%10.3f", t.ms_per_step) << format_printf("%14.1f", b / 1e6)
-                      << format_printf("%12.4f", f / 1e9) << format_printf("%9.2f", rate / 1e9)
-                      << format_printf("%10.1f", 100. * rate / peak) << "   " << difference << '\n';
-            csv << P << ',' << rows << ',' << form << ',' << t.ms_per_step << ',' << b / 1e6 << ','
-                << f / 1e9 << ',' << rate / 1e9 << ',' << rate / peak << ',' << difference << '\n';
+            std::cout << format_printf("%5.0f", P) << format_printf("%12.0f", rows) << "  "
+                      << form << std::string(8 - form.size(), ' ') << format_printf("%5.0f", block)
+                      << format_printf("%28.1f", t.setup_ms) << format_printf("%9.3f", t.ms_per_step)
+                      << format_printf("%14.1f", b / 1e6) << format_printf("%12.4f", f / 1e9)
+                      << format_printf("%9.2f", rate / 1e9) << format_printf("%10.1f", 100. * rate / pk)
+                      << "   " << diff << '\n';
+            csv << P << ',' << rows << ',' << form << ',' << block << ',' << t.setup_ms << ','
+                << t.ms_per_step << ',' << b / 1e6 << ',' << f / 1e9 << ',' << rate / 1e9 << ','
+                << rate / pk << ',' << diff << '\n';
           };
-          const double peak        = benchmark::peak_flops(threads);
-          const double single_diff = difference(rounded, rank_one);
-          if (!(single_diff <= 1e-5))
-            {
-              std::cerr << "patch_update_cost: single-precision shapes differ from double by "
-                        << single_diff << '\n';
-              return 1;
-            }
+          row("double", 1, reference, bytes, flops, peak, "(reference)");
+          for (const auto precision : {ShapePrecision::double_precision, ShapePrecision::single_precision})
+            for (const unsigned int block : {1u, 4u, 8u, 16u})
+              {
+                const bool single = precision == ShapePrecision::single_precision;
+                if (!single && block == 1)
+                  continue;
+                // Blocks where the update chooses them (at least 128 shape
+                // rows per point: the tyre's model, not the synthetic ones).
+                if (block != 1 && rows < 128. * P)
+                  continue;
+                auto         conv = make(precision, block);
+                const Timing t    = time_update(*conv, steps, true);
+                const double diff = difference(t, reference);
+                if (!(diff <= (single ? 1e-5 : 1e-11)))
+                  {
+                    std::cerr << "patch_update_cost: " << (single ? "single" : "double")
+                              << "-precision shapes in blocks of " << block
+                              << " differ from the reference by " << diff << '\n';
+                    return 1;
+                  }
+                row(single ? "single" : "double", block, t, (single ? 0.5 : 1.) * bytes / block,
+                    flops, (single ? 2. : 1.) * peak, format_printf("%.2e", diff));
+              }
           if (!c.full)
-            {
-              row("double  ", rank_one, bytes, flops, peak,
-                  "(reference; full form not built: N_m N_p^2 residues)");
-              row("single  ", rounded, bytes / 2., flops, 2. * peak, format_printf("%.2e", single_diff));
-              continue;
-            }
+            continue;
           auto dense = contact::make_modal_patch_convolution(modal::full_form(c.model), dt, threads);
           const Timing full = time_update(*dense, steps, true);
-          const double diff = difference(rank_one, full);
-          row("double  ", rank_one, bytes, flops, peak, format_printf("%.2e", diff));
-          row("single  ", rounded, bytes / 2., flops, 2. * peak,
-              format_printf("%.2e", difference(rounded, full)));
-          row("full    ", full, 2. * 2. * 8. * rows * double(P) * P, 2. * 2. * 2. * rows * double(P) * P,
-              peak, "(reference)");
+          const double diff = difference(full, reference);
+          row("full", 1, full, 2. * 2. * 8. * rows * double(P) * P,
+              2. * 2. * 2. * rows * double(P) * P, peak, format_printf("%.2e", diff));
           if (!(diff <= 1e-9))
             {
               std::cerr << "patch_update_cost: the rank-one and full forms differ by " << diff

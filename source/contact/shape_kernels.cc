@@ -185,6 +185,155 @@ namespace greentread
         add_loop(shapes, rows, P, weights, n_out, out);
       }
 
+      // The block products (block_forces(), add_block_weighted_shapes()):
+      // tiles of RT rows (or points) by J columns kept in registers (6 x 16
+      // floats or 3 x 16 doubles: 12 of the 16 AVX2 registers), each shape
+      // value read once per tile and broadcast, each column vector once per
+      // row (or point) of the tile. Measured on one core (Xeon, AVX2 build)
+      // at 16 columns in float: 31 G multiply-adds/s for the forces and 28
+      // for the sums, of a peak of 37; tiles of 4 rows reached 29 and 23.
+      template <unsigned int J, unsigned int RT, typename T>
+      [[gnu::always_inline]] inline void
+      block_forces_tile(const T *s, const std::size_t P, const unsigned int *points,
+                        const std::size_t n_points, const T *loads, T *forces)
+      {
+        T acc[RT][J] = {};
+        for (std::size_t a = 0; a < n_points; ++a)
+          {
+            const T          *q = loads + a * J;
+            const std::size_t p = points[a];
+#pragma GCC unroll 8
+            for (unsigned int i = 0; i < RT; ++i)
+              {
+                const T x = s[i * P + p];
+#pragma omp simd
+                for (unsigned int j = 0; j < J; ++j)
+                  acc[i][j] += x * q[j];
+              }
+          }
+        for (unsigned int i = 0; i < RT; ++i)
+#pragma omp simd
+          for (unsigned int j = 0; j < J; ++j)
+            forces[i * J + j] = acc[i][j];
+      }
+
+      template <unsigned int J, typename T>
+      [[gnu::always_inline]] inline void
+      block_forces_loop(const T *shapes, const std::size_t rows, const std::size_t P,
+                        const unsigned int *points, const std::size_t n_points,
+                        const T *loads, T *forces)
+      {
+        constexpr unsigned int RT = sizeof(T) == 4 ? 6 : 3;
+        std::size_t            r  = 0;
+        // The pass is the first to read each row, and with a few points
+        // loaded it reads them sparsely: the rows three tiles ahead are
+        // asked for while this tile is formed (past the last row too: the
+        // caller's next rows follow, and a prefetch never faults).
+        constexpr std::size_t ahead = 3 * RT;
+        for (; r + RT <= rows; r += RT)
+          {
+            if (n_points < P)
+              for (std::size_t b = (r + ahead) * P * sizeof(T); b < (r + ahead + RT) * P * sizeof(T);
+                   b += 64)
+                __builtin_prefetch(reinterpret_cast<const char *>(shapes) + b);
+            block_forces_tile<J, RT>(shapes + r * P, P, points, n_points, loads, forces + r * J);
+          }
+        for (; r < rows; ++r)
+          block_forces_tile<J, 1>(shapes + r * P, P, points, n_points, loads, forces + r * J);
+      }
+
+      template <unsigned int J, unsigned int PT, typename T>
+      [[gnu::always_inline]] inline void
+      block_add_tile(const T *s, const std::size_t rows, const std::size_t P, const T *weights,
+                     double *out)
+      {
+        T acc[PT][J] = {};
+        for (std::size_t r = 0; r < rows; ++r)
+          {
+            const T *w = weights + r * J;
+#pragma GCC unroll 8
+            for (unsigned int i = 0; i < PT; ++i)
+              {
+                const T x = s[r * P + i];
+#pragma omp simd
+                for (unsigned int j = 0; j < J; ++j)
+                  acc[i][j] += x * w[j];
+              }
+          }
+        for (unsigned int i = 0; i < PT; ++i)
+          for (unsigned int j = 0; j < J; ++j)
+            out[i * J + j] += acc[i][j];
+      }
+
+      template <unsigned int J, typename T>
+      [[gnu::always_inline]] inline void
+      block_add_loop(const T *shapes, const std::size_t rows, const std::size_t P,
+                     const T *weights, double *out)
+      {
+        constexpr unsigned int PT = sizeof(T) == 4 ? 6 : 3;
+        std::size_t            p  = 0;
+        for (; p + PT <= P; p += PT)
+          block_add_tile<J, PT>(shapes + p, rows, P, weights, out + p * J);
+        for (; p < P; ++p)
+          block_add_tile<J, 1>(shapes + p, rows, P, weights, out + p * J);
+      }
+
+      template <typename T>
+      [[gnu::always_inline]] inline void
+      block_forces_any(const T *shapes, const std::size_t rows, const std::size_t P,
+                       const unsigned int *points, const std::size_t n_points, const T *loads,
+                       const unsigned int J, T *forces)
+      {
+        switch (J)
+          {
+            case 4:
+              return block_forces_loop<4>(shapes, rows, P, points, n_points, loads, forces);
+            case 8:
+              return block_forces_loop<8>(shapes, rows, P, points, n_points, loads, forces);
+            case 16:
+              return block_forces_loop<16>(shapes, rows, P, points, n_points, loads, forces);
+            default:
+              throw std::logic_error("block_forces: " + std::to_string(J) +
+                                     " columns; allowed: 4, 8 or 16");
+          }
+      }
+
+      template <typename T>
+      [[gnu::always_inline]] inline void
+      block_add_any(const T *shapes, const std::size_t rows, const std::size_t P,
+                    const T *weights, const unsigned int J, double *out)
+      {
+        switch (J)
+          {
+            case 4:
+              return block_add_loop<4>(shapes, rows, P, weights, out);
+            case 8:
+              return block_add_loop<8>(shapes, rows, P, weights, out);
+            case 16:
+              return block_add_loop<16>(shapes, rows, P, weights, out);
+            default:
+              throw std::logic_error("add_block_weighted_shapes: " + std::to_string(J) +
+                                     " columns; allowed: 4, 8 or 16");
+          }
+      }
+
+      template <typename T>
+      __attribute__((target("avx2,fma"))) void
+      block_forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
+                        const unsigned int *points, const std::size_t n_points, const T *loads,
+                        const unsigned int J, T *forces)
+      {
+        block_forces_any(shapes, rows, P, points, n_points, loads, J, forces);
+      }
+
+      template <typename T>
+      __attribute__((target("avx2,fma"))) void
+      block_add_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
+                     const T *weights, const unsigned int J, double *out)
+      {
+        block_add_any(shapes, rows, P, weights, J, out);
+      }
+
       bool
       has_avx2()
       {
@@ -224,6 +373,45 @@ namespace greentread
 
 
 
+    template <typename Shape>
+    void
+    block_forces(const Shape *shapes, const std::size_t rows, const std::size_t P,
+                 const unsigned int *points, const std::size_t n_points, const Shape *loads,
+                 const unsigned int J, Shape *forces)
+    {
+      if (has_avx2())
+        block_forces_avx2(shapes, rows, P, points, n_points, loads, J, forces);
+      else
+        block_forces_any(shapes, rows, P, points, n_points, loads, J, forces);
+    }
+
+
+
+    template <typename Shape>
+    void
+    add_block_weighted_shapes(const Shape *shapes, const std::size_t rows, const std::size_t P,
+                              const Shape *weights, const unsigned int J, double *out)
+    {
+      if (has_avx2())
+        block_add_avx2(shapes, rows, P, weights, J, out);
+      else
+        block_add_any(shapes, rows, P, weights, J, out);
+    }
+
+
+
+    template void
+    block_forces(const double *, std::size_t, std::size_t, const unsigned int *, std::size_t,
+                 const double *, unsigned int, double *);
+    template void
+    block_forces(const float *, std::size_t, std::size_t, const unsigned int *, std::size_t,
+                 const float *, unsigned int, float *);
+    template void
+    add_block_weighted_shapes(const double *, std::size_t, std::size_t, const double *,
+                              unsigned int, double *);
+    template void
+    add_block_weighted_shapes(const float *, std::size_t, std::size_t, const float *,
+                              unsigned int, double *);
     template void
     modal_forces(const double *, std::size_t, std::size_t, const double *, unsigned int,
                  double *);

@@ -6,8 +6,11 @@
 #include <greentread/modal/mode_synthesis.h>
 #include <greentread/modal/patch_model.h>
 
+#include <deal.II/base/thread_management.h>
+
 #include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -125,10 +128,44 @@ namespace greentread
         {
           const std::vector<std::complex<double>> ones(alpha.size(), 1.);
           PatchInfluence                          psi;
-          const Eigen::MatrixXd                   g0 = contract(false, ones);
-          psi.u = {{contract(false, alpha), contract(false, beta_a), contract(false, beta_b), g0}};
-          psi.v = {{contract(true, alpha), contract(true, beta_a), contract(true, beta_b) + g0,
-                    contract(true, ones)}};
+          // The eight sums (u and v of alpha, beta_a, beta_b, 1); for a
+          // rank-one model in two passes over the shapes, one per thread,
+          // not eight.
+          const std::array<const std::vector<std::complex<double>> *, 4> z{
+            {&alpha, &beta_a, &beta_b, &ones}};
+          std::array<Eigen::MatrixXd, 8> sums;
+          if (rank_one())
+            {
+              std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> weights[2];
+              for (unsigned int s = 0; s < 8; ++s)
+                {
+                  const auto     &c = s < 4 ? cu1 : cv1;
+                  const auto     &x = *z[s % 4];
+                  Eigen::VectorXd re(x.size()), im(x.size());
+                  for (std::size_t k = 0; k < x.size(); ++k)
+                    {
+                      re(k) = std::real(c[k] * x[k]);
+                      im(k) = -std::imag(c[k] * x[k]);
+                    }
+                  weights[s / 4].emplace_back(re, im);
+                }
+              std::vector<Eigen::MatrixXd> first;
+              auto                         task = dealii::Threads::new_task(
+                [&]() { first = modal::shape_sums(shapes, shapes_imag, weights[0]); });
+              const auto second = modal::shape_sums(shapes, shapes_imag, weights[1]);
+              task.join();
+              for (unsigned int s = 0; s < 4; ++s)
+                {
+                  sums[s]     = first[s];
+                  sums[4 + s] = second[s];
+                }
+            }
+          else
+            for (unsigned int s = 0; s < 8; ++s)
+              sums[s] = contract(s >= 4, *z[s % 4]);
+          const Eigen::MatrixXd &g0 = sums[3];
+          psi.u = {{sums[0], sums[1], sums[2], g0}};
+          psi.v = {{sums[4], sums[5], sums[6] + g0, sums[7]}};
           if (instantaneous.size() && instantaneous.cwiseAbs().maxCoeff() > 0.)
             {
               // u = G_r q(t): the end value acts at once; the slope of the
