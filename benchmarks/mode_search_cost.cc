@@ -11,6 +11,7 @@
 
 #include "benchmark_options.h"
 
+#include <greentread/base/blas_kernels.h>
 #include <greentread/periodic/bloch_modes.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/periodic/ring_modes.h>
@@ -25,6 +26,8 @@ using namespace greentread;
 int
 main(int argc, char **argv)
 {
+  // The coupling's zgeev with the kernels the application uses.
+  base::use_native_blas_kernels(argv);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto options = benchmark::parse(argc, argv, "mode_search_cost");
   geometry::GeometryParameters geometry;

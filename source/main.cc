@@ -6,6 +6,7 @@
 // Everything else lives in the greentread_core library, so that the tests and
 // benchmarks run the same code.
 
+#include <greentread/base/blas_kernels.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/config.h>
@@ -53,6 +54,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  greentread::base::use_native_blas_kernels(argv);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   try
     {
@@ -74,7 +76,8 @@ main(int argc, char **argv)
                         << "deal.II " << DEAL_II_PACKAGE_VERSION << ", Eigen "
                         << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.'
                         << EIGEN_MINOR_VERSION << ", Boost " << BOOST_VERSION / 100000 << '.'
-                        << BOOST_VERSION / 100 % 1000 << ", gmsh " << GMSH_API_VERSION << '\n';
+                        << BOOST_VERSION / 100 % 1000 << ", gmsh " << GMSH_API_VERSION << ", BLAS "
+                        << greentread::base::blas_kernels() << '\n';
               return 0;
             }
           else if (arg == "--print-parameters")

@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/periodic/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/periodic/shared_pattern.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
@@ -29,17 +30,15 @@ namespace greentread
       public:
         /// A basis kept M-orthogonal to the columns of @p locked_ as well
         /// (modes found already, with @p mass_locked_ = M locked_).
-        Basis(const SparseComplex &K_,
-              const SparseComplex &M_,
-              const Dense         &locked_,
-              const Dense         &mass_locked_,
-              const Eigen::Index   capacity)
-          : K(K_)
-          , M(M_)
+        Basis(const internal::SharedPattern &KM_,
+              const Dense                   &locked_,
+              const Dense                   &mass_locked_,
+              const Eigen::Index             capacity)
+          : KM(KM_)
           , locked(locked_)
           , mass_locked(mass_locked_)
-          , V(M_.rows(), capacity)
-          , MV(M_.rows(), capacity)
+          , V(KM_.size(), capacity)
+          , MV(KM_.size(), capacity)
           , H(capacity, capacity)
         {}
 
@@ -86,22 +85,21 @@ namespace greentread
         {
           const double before = X.norm();
           for (int pass = 0; pass < 2; ++pass)
-            project_out(X);
+            project_out(X, pass == 0);
           const bool cancelled = !(X.norm() > 1e-6 * before);
           // Directions below 1e-10 of the block's largest are round-off;
           // after a third pass, below 1e-8 of their unit size they were in
           // the basis already.
-          Dense      MX;
-          const bool weak = orthonormal(X, MX, 1e-20, false) < 1e-8 || cancelled;
+          Dense      MX, KX;
+          const bool weak = orthonormal(X, MX, KX, 1e-20, false) < 1e-8 || cancelled;
           if (weak)
             {
-              project_out(X);
-              orthonormal(X, MX, 1e-16, true);
+              project_out(X, true);
+              orthonormal(X, MX, KX, 1e-16, true);
             }
           const Eigen::Index added = std::min<Eigen::Index>(X.cols(), capacity() - m);
           if (added == 0)
             return 0;
-          const Dense KX          = K * X.leftCols(added);
           V.middleCols(m, added)  = X.leftCols(added);
           MV.middleCols(m, added) = MX.leftCols(added);
           // The new columns of H, and its new rows by symmetry.
@@ -114,10 +112,18 @@ namespace greentread
         }
 
       private:
+        /// X -= V (MV^H X), and the same against the locked modes if
+        /// @p with_locked. Once against those is enough: they are modes (to
+        /// residuals of about 1e-9), and T maps a vector M-orthogonal to a
+        /// mode to one that is M-orthogonal to it too, so the coefficients
+        /// against them stay small and nothing cancels; it is the
+        /// cancellation against the growing basis that the second pass
+        /// corrects. Their second projection was about two fifths of the
+        /// Gram-Schmidt work of the upper slices.
         void
-        project_out(Dense &X) const
+        project_out(Dense &X, const bool with_locked) const
         {
-          if (locked.cols() > 0 && X.cols() > 0)
+          if (with_locked && locked.cols() > 0 && X.cols() > 0)
             subtract_projection(locked, mass_locked, X);
           if (m > 0 && X.cols() > 0)
             subtract_projection(vectors(), mass_times_vectors(), X);
@@ -153,12 +159,12 @@ namespace greentread
         /// Replace @p X by M-orthonormal columns spanning it, strongest
         /// first, without the directions whose squared M-norm is below
         /// @p drop times the largest (or times 1, @p absolute, for columns
-        /// of unit size), and set @p MX = M X. Returns the smallest kept
-        /// squared norm over the largest (1 if none is kept).
+        /// of unit size), and set @p MX = M X, @p KX = K X. Returns the
+        /// smallest kept squared norm over the largest (1 if none is kept).
         double
-        orthonormal(Dense &X, Dense &MX, const double drop, const bool absolute) const
+        orthonormal(Dense &X, Dense &MX, Dense &KX, const double drop, const bool absolute) const
         {
-          MX = M * X;
+          KM.apply(X, {&KX, &MX});
           if (X.cols() == 0)
             return 1.;
           const Dense G = X.adjoint() * MX;
@@ -175,13 +181,14 @@ namespace greentread
             U.col(j) = eigen.eigenvectors().col(n - 1 - j) / std::sqrt(lambda(n - 1 - j));
           X  = X * U;
           MX = MX * U;
+          KX = KX * U;
           return keep > 0 ? lambda(n - keep) / largest : 1.;
         }
 
-        const SparseComplex &K, &M;
-        const Dense         &locked, &mass_locked;
-        Dense                V, MV, H;
-        Eigen::Index         m = 0;
+        const internal::SharedPattern &KM;
+        const Dense                   &locked, &mass_locked;
+        Dense                          V, MV, H;
+        Eigen::Index                   m = 0;
       };
 
       /// Rotate @p v so that its largest entry is real and positive: a
@@ -244,8 +251,10 @@ namespace greentread
       struct Problem
       {
         SparseComplex K, C, M;
-        double        norm_K, norm_M;
-        std::string   which;
+        /// K and M together, M and C alone (products with tall blocks).
+        internal::SharedPattern KM, MM, CC;
+        double                  norm_K, norm_M;
+        std::string             which;
       };
 
       /// The modes one slice found: w^2 ascending, shapes M-orthonormal.
@@ -293,7 +302,7 @@ namespace greentread
                                " rad^2/s^2) could not be factorised: is the cell held "
                                "against rigid motion?");
         const Eigen::Index n = A.rows(), b = std::min<Eigen::Index>(search.block, n);
-        Basis              basis(K, M, locked, mass_locked, n - locked.cols());
+        Basis              basis(problem.KM, locked, mass_locked, n - locked.cols());
 
         std::mt19937                           random(seed);
         std::uniform_real_distribution<double> uniform(-1., 1.);
@@ -371,7 +380,9 @@ namespace greentread
                       {
                         const Dense Y  = ritz.eigenvectors().leftCols(below);
                         const Dense VY = basis.vectors() * Y;
-                        const Dense KY = K * VY, MY = basis.mass_times_vectors() * Y;
+                        const Dense MY = basis.mass_times_vectors() * Y;
+                        Dense       KY, unused;
+                        problem.KM.apply(VY, {&KY, &unused});
                         for (Eigen::Index j = 0; j < below && converged; ++j)
                           converged = judge(theta(j), VY.col(j), KY.col(j), MY.col(j)).first;
                         if (converged)
@@ -436,6 +447,9 @@ namespace greentread
       problem.K      = part(1., 0., 0.);
       problem.C      = part(0., 1., 0.);
       problem.M      = part(0., 0., 1.);
+      problem.KM     = internal::SharedPattern({&problem.K, &problem.M});
+      problem.MM     = internal::SharedPattern({&problem.M});
+      problem.CC     = internal::SharedPattern({&problem.C});
       problem.norm_K = row_sum_norm(problem.K);
       problem.norm_M = row_sum_norm(problem.M);
       problem.which  = which;
@@ -476,7 +490,9 @@ namespace greentread
           if (s + 1 < search.slices)
             {
               mass_locked.conservativeResize(Eigen::NoChange, had + added);
-              mass_locked.rightCols(added) = problem.M * slice.shapes;
+              Dense mass_shapes;
+              problem.MM.apply(slice.shapes, {&mass_shapes});
+              mass_locked.rightCols(added) = mass_shapes;
             }
           theta.insert(theta.end(), slice.theta.begin(), slice.theta.end());
         }
@@ -504,7 +520,9 @@ namespace greentread
           modes.shapes.col(j) = locked.col(order[j]);
           fix_phase(modes.shapes.col(j));
         }
-      modes.modal_damping = modes.shapes.adjoint() * (problem.C * modes.shapes);
+      Dense damped;
+      problem.CC.apply(modes.shapes, {&damped});
+      modes.modal_damping = modes.shapes.adjoint() * damped;
       for (Eigen::Index j = 0; j < count; ++j)
         modes.damping_ratio(j) = modes.modal_damping(j, j).real() / (2. * modes.omega(j));
       return modes;

@@ -3,10 +3,12 @@
 // the direct Bloch solve of the Green's functions (with every mode kept and a
 // proportional damping the synthesis is exact; with a cut-off it converges).
 #include "coarse_tyre.h"
+#include <greentread/base/exceptions.h>
 #include <greentread/modal/mode_synthesis.h>
 #include <greentread/periodic/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/ring_modes.h>
+#include <greentread/periodic/shared_pattern.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -413,6 +415,43 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
       BOOST_TEST((gram - Eigen::MatrixXcd::Identity(expected, expected)).cwiseAbs().maxCoeff() <
                  1e-10);
     }
+}
+
+
+BOOST_AUTO_TEST_CASE(shared_pattern_products_equal_eigens)
+{
+  // The mode search's products of K, M and C with tall blocks, against
+  // Eigen's sparse products of the same Bloch matrices: blocks of 1 to 9
+  // columns (the last group of four padded), one and two products at once.
+  const test::CoarseTyre tyre(8, patch_request());
+  periodic::BlochCell    bloch(tyre.periodic_cell);
+  const auto part = [&](const Complex a, const Complex c, const Complex m) {
+    bloch.set_combination(a, c, m);
+    return periodic::SparseComplex(bloch.assemble(2. * M_PI * 3. / 8.));
+  };
+  const periodic::SparseComplex K = part(1., 0., 0.), C = part(0., 1., 0.), M = part(0., 0., 1.);
+  const periodic::internal::SharedPattern KM({&K, &M}), CC({&C});
+  for (const Eigen::Index b : {1, 4, 6, 9})
+    {
+      const Eigen::MatrixXcd X = Eigen::MatrixXcd::Random(K.rows(), b);
+      Eigen::MatrixXcd       KX, MX, CX;
+      KM.apply(X, {&KX, &MX});
+      CC.apply(X, {&CX});
+      const Eigen::MatrixXcd KX_e = K * X, MX_e = M * X, CX_e = C * X;
+      BOOST_TEST(relative_difference(KX, KX_e) < 1e-14);
+      BOOST_TEST(relative_difference(MX, MX_e) < 1e-14);
+      BOOST_TEST(relative_difference(CX, CX_e) < 1e-14);
+      Eigen::MatrixXcd K_alone;
+      KM.apply(X, {&K_alone});
+      BOOST_TEST(relative_difference(K_alone, KX_e) < 1e-14);
+    }
+  // Two products of one matrix, and matrices of different patterns.
+  Eigen::MatrixXcd a, b;
+  BOOST_CHECK_THROW(CC.apply(Eigen::MatrixXcd::Ones(K.rows(), 2), {&a, &b}), NumericalError);
+  periodic::SparseComplex other = K;
+  other.coeffRef(0, K.cols() - 1) += 1.;
+  BOOST_TEST_REQUIRE(other.nonZeros() == K.nonZeros() + 1);
+  BOOST_CHECK_THROW(periodic::internal::SharedPattern({&K, &other}), NumericalError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
