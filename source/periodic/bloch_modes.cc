@@ -103,7 +103,7 @@ namespace greentread
           V.middleCols(m, added)  = X.leftCols(added);
           MV.middleCols(m, added) = MX.leftCols(added);
           // The new columns of H, and its new rows by symmetry.
-          H.block(0, m, m + added, added) = V.leftCols(m + added).adjoint() * KX;
+          H.block(0, m, m + added, added) = V.leftCols(m + added).adjoint() * KX.leftCols(added);
           H.block(m, 0, added, m)         = H.block(0, m, m, added).adjoint();
           const Dense corner              = H.block(m, m, added, added);
           H.block(m, m, added, added)     = 0.5 * (corner + corner.adjoint());
@@ -381,8 +381,8 @@ namespace greentread
                         const Dense Y  = ritz.eigenvectors().leftCols(below);
                         const Dense VY = basis.vectors() * Y;
                         const Dense MY = basis.mass_times_vectors() * Y;
-                        Dense       KY, unused;
-                        problem.KM.apply(VY, {&KY, &unused});
+                        Dense       KY;
+                        problem.KM.apply(VY, {&KY});
                         for (Eigen::Index j = 0; j < below && converged; ++j)
                           converged = judge(theta(j), VY.col(j), KY.col(j), MY.col(j)).first;
                         if (converged)
