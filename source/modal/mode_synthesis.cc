@@ -7,8 +7,10 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -59,6 +61,86 @@ namespace greentread
         if (!failure.empty())
           throw NumericalError(what + ": " + failure);
       }
+
+      /**
+       * The modes' part of g(w), sum_k psi_k psi_k^T d_k(w), of the modes
+       * (@p frequency_hz, @p damping_ratio, @p shapes + j @p shapes_imag).
+       * Per mode the factors of Re and Im of psi psi^T (shape_sums()):
+       * d1 = 1 / (w_k^2 - w^2 + 2 j xi w_k w), and for a complex shape
+       * d2 = j (c - c'), c = 1 / (2 j w_d (j w - l)), c' = -1 / (2 j w_d (j w - conj l)).
+       */
+      Eigen::MatrixXcd
+      modal_part(const Eigen::VectorXd &frequency_hz,
+                 const Eigen::VectorXd &damping_ratio,
+                 const Eigen::MatrixXd &shapes,
+                 const Eigen::MatrixXd &shapes_imag,
+                 const double           omega)
+      {
+        const Eigen::Index m = shapes.rows();
+        Eigen::VectorXd    re1(m), im1(m), re2 = Eigen::VectorXd::Zero(m), im2 = re2;
+        const std::complex<double> s(0., omega);
+        for (Eigen::Index k = 0; k < m; ++k)
+          {
+            const double               w = 2. * M_PI * frequency_hz(k), xi = damping_ratio(k);
+            const std::complex<double> d1 =
+              1. / std::complex<double>(w * w - omega * omega, 2. * xi * w * omega);
+            re1(k) = d1.real();
+            im1(k) = d1.imag();
+            if (shapes_imag.size() == 0 || !(xi < 1.))
+              continue;
+            const double               wd = w * std::sqrt(1. - xi * xi);
+            const std::complex<double> l(-xi * w, wd), twice(0., 2. * wd);
+            const std::complex<double> d2 =
+              std::complex<double>(0., 1.) * (1. / (twice * (s - l)) + 1. / (twice * (s - std::conj(l))));
+            re2(k) = d2.real();
+            im2(k) = d2.imag();
+          }
+        const auto       sums = shape_sums(shapes, shapes_imag, {{re1, re2}, {im1, im2}});
+        Eigen::MatrixXcd g(shapes.cols(), shapes.cols());
+        g.real() = sums[0];
+        g.imag() = sums[1];
+        return g;
+      }
+
+      /// A mode is interpolated across the lines if its poles are at least
+      /// this many times the highest line away, on the real axis (or as
+      /// far in the sense of ellipse_parameter()).
+      constexpr double far_ratio = 1.25;
+
+      /// rho = |x + sqrt(x^2 - 1)| >= 1 for a point @p x of the complex plane:
+      /// the Bernstein ellipse about [-1, 1] through it. A function whose
+      /// poles lie outside the ellipse rho is interpolated at Q + 1
+      /// Chebyshev points within a few times rho^-Q of its size.
+      double
+      ellipse_parameter(const std::complex<double> x)
+      {
+        const std::complex<double> root = std::sqrt(x - 1.) * std::sqrt(x + 1.);
+        return std::max(std::abs(x + root), std::abs(x - root));
+      }
+
+      /// The smallest ellipse_parameter() of the poles of mode (@p w [rad/s],
+      /// @p xi) in w, about [0, @p omega_max] mapped onto [-1, 1]: w_d + j xi w
+      /// and -w_d + j xi w below critical damping, j w (xi -+ sqrt(xi^2 - 1))
+      /// above it.
+      double
+      mode_ellipse(const double w, const double xi, const double omega_max)
+      {
+        std::array<std::complex<double>, 2> poles;
+        if (xi < 1.)
+          {
+            const double wd = w * std::sqrt(1. - xi * xi);
+            poles           = {{{wd, xi * w}, {-wd, xi * w}}};
+          }
+        else
+          {
+            const double root = std::sqrt(xi * xi - 1.);
+            poles             = {{{0., w * (xi - root)}, {0., w * (xi + root)}}};
+          }
+        double rho = std::numeric_limits<double>::infinity();
+        for (const auto z : poles)
+          rho = std::min(rho, ellipse_parameter(2. * z / omega_max - 1.));
+        return rho;
+      }
     } // namespace
 
 
@@ -66,32 +148,81 @@ namespace greentread
     Eigen::MatrixXcd
     ModeSynthesis::modes_at(const double omega) const
     {
-      // Per mode the factors of Re and Im of psi psi^T (shape_sum()):
-      // d1 = 1 / (w_k^2 - w^2 + 2 j xi w_k w), and for a complex shape
-      // d2 = j (c - c'), c = 1 / (2 j w_d (j w - l)), c' = -1 / (2 j w_d (j w - conj l)).
-      const Eigen::Index m = shapes.rows();
-      Eigen::VectorXd    re1(m), im1(m), re2 = Eigen::VectorXd::Zero(m), im2 = re2;
-      const std::complex<double> s(0., omega);
-      for (Eigen::Index k = 0; k < m; ++k)
+      return modal_part(frequency_hz, damping_ratio, shapes, shapes_imag, omega);
+    }
+
+
+
+    std::vector<Eigen::MatrixXcd>
+    ModeSynthesis::modes_at_lines(const double df, const unsigned int n_lines) const
+    {
+      // Chebyshev-Lobatto nodes x_q = cos(pi q / Q) on [0, w_max], x = 2 w / w_max - 1.
+      const double omega_max = 2. * M_PI * df * (n_lines > 0 ? n_lines - 1 : 0);
+      const double rho       = ellipse_parameter(2. * far_ratio - 1.);
+      const auto   Q = static_cast<unsigned int>(std::ceil(std::log(1e16) / std::log(rho)));
+      std::vector<Eigen::Index> near, far;
+      for (Eigen::Index k = 0; k < frequency_hz.size(); ++k)
+        (omega_max > 0. && mode_ellipse(2. * M_PI * frequency_hz(k), damping_ratio(k),
+                                        omega_max) >= rho ?
+           far :
+           near)
+          .push_back(k);
+      // Interpolating pays only with fewer nodes than lines.
+      if (n_lines <= Q + 1)
         {
-          const double               w = 2. * M_PI * frequency_hz(k), xi = damping_ratio(k);
-          const std::complex<double> d1 =
-            1. / std::complex<double>(w * w - omega * omega, 2. * xi * w * omega);
-          re1(k) = d1.real();
-          im1(k) = d1.imag();
-          if (shapes_imag.size() == 0 || !(xi < 1.))
-            continue;
-          const double               wd = w * std::sqrt(1. - xi * xi);
-          const std::complex<double> l(-xi * w, wd), twice(0., 2. * wd);
-          const std::complex<double> d2 =
-            std::complex<double>(0., 1.) * (1. / (twice * (s - l)) + 1. / (twice * (s - std::conj(l))));
-          re2(k) = d2.real();
-          im2(k) = d2.imag();
+          near.insert(near.end(), far.begin(), far.end());
+          std::sort(near.begin(), near.end());
+          far.clear();
         }
-      const auto       sums = shape_sums(shapes, shapes_imag, {{re1, re2}, {im1, im2}});
-      Eigen::MatrixXcd g(shapes.cols(), shapes.cols());
-      g.real() = sums[0];
-      g.imag() = sums[1];
+      const auto rows = [](const Eigen::MatrixXd &A, const std::vector<Eigen::Index> &which) {
+        return A.size() ? Eigen::MatrixXd(A(which, Eigen::all)) : Eigen::MatrixXd();
+      };
+      const auto entries = [](const Eigen::VectorXd &v, const std::vector<Eigen::Index> &which) {
+        return Eigen::VectorXd(v(which));
+      };
+      const Eigen::VectorXd f_near = entries(frequency_hz, near), xi_near = entries(damping_ratio, near);
+      const Eigen::MatrixXd A_near = rows(shapes, near), B_near = rows(shapes_imag, near);
+
+      std::vector<Eigen::MatrixXcd> g(n_lines);
+      const unsigned int            n_threads = line_threads(std::max(n_lines, 1u));
+      for_each_line(0, n_lines, n_threads, "the modes at every line",
+                    [&](const unsigned int l, const unsigned int) {
+                      g[l] = modal_part(f_near, xi_near, A_near, B_near, 2. * M_PI * l * df);
+                    });
+      if (far.empty())
+        return g;
+
+      const Eigen::VectorXd f_far = entries(frequency_hz, far), xi_far = entries(damping_ratio, far);
+      const Eigen::MatrixXd A_far = rows(shapes, far), B_far = rows(shapes_imag, far);
+      Eigen::VectorXd               node(Q + 1);
+      std::vector<Eigen::MatrixXcd> at_node(Q + 1);
+      for (unsigned int q = 0; q <= Q; ++q)
+        node(q) = std::cos(M_PI * q / Q);
+      for_each_line(0, Q + 1, line_threads(Q + 1), "the modes above the lines",
+                    [&](const unsigned int q, const unsigned int) {
+                      at_node[q] =
+                        modal_part(f_far, xi_far, A_far, B_far, 0.5 * omega_max * (1. + node(q)));
+                    });
+      // The barycentric formula of the second kind (weights (-1)^q, halved at
+      // the ends); a line on a node takes the node's value.
+      for_each_line(0, n_lines, n_threads, "the modes above the lines",
+                    [&](const unsigned int l, const unsigned int) {
+                      const double x = 2. * (2. * M_PI * l * df) / omega_max - 1.;
+                      Eigen::VectorXd weight(Q + 1);
+                      for (unsigned int q = 0; q <= Q; ++q)
+                        {
+                          if (x == node(q))
+                            {
+                              g[l] += at_node[q];
+                              return;
+                            }
+                          weight(q) = ((q % 2) ? -1. : 1.) * ((q == 0 || q == Q) ? 0.5 : 1.) /
+                                      (x - node(q));
+                        }
+                      weight /= weight.sum();
+                      for (unsigned int q = 0; q <= Q; ++q)
+                        g[l] += weight(q) * at_node[q];
+                    });
       return g;
     }
 
@@ -238,11 +369,7 @@ namespace greentread
           return model;
         }
       lines->df = direct.df;
-      lines->g.assign(direct.n_lines, Eigen::MatrixXcd());
-      for_each_line(0, direct.n_lines, line_threads(direct.n_lines), "synthesise",
-                    [&](const unsigned int l, const unsigned int) {
-                      lines->g[l] = model.modes_at(2. * M_PI * l * direct.df);
-                    });
+      lines->g  = model.modes_at_lines(direct.df, direct.n_lines);
       model.residual_relaxation = fit_residual_relaxation(model, direct, lines);
       return model;
     }

@@ -411,6 +411,58 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
   BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
 }
 
+BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_line)
+{
+  // modes_at_lines() interpolates the part of the modes whose poles lie
+  // well beyond the highest line: 400 modes from 60 Hz to 20 kHz (half of
+  // them above 1.25 times the highest line), real and then complex shapes,
+  // among them an undamped mode and modes just below and above the split,
+  // and over-critical modes high in w_k whose slow pole j w_k (xi -
+  // sqrt(xi^2 - 1)) lies within the band (they must be summed, not
+  // interpolated). Against modes_at() at each of the 257 lines.
+  const unsigned int P = 6, m = 400, lines = 257;
+  const double       df = 15.625;
+  std::mt19937                           random(19);
+  std::uniform_real_distribution<double> u(-1., 1.);
+  modal::ModeSynthesis                   s;
+  s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 60., 20000.);
+  s.damping_ratio = Eigen::VectorXd::Constant(m, 0.02);
+  s.frequency_hz(150) = 4000. * 1.249; // just below the split, lightly damped
+  s.frequency_hz(151) = 4000. * 1.251; // just above it
+  s.damping_ratio(200) = 0.;           // undamped, above the band
+  s.damping_ratio(300) = 40.;          // 12 kHz, its slow pole at about 150 Hz
+  s.damping_ratio(390) = 3.;           // over-critical, both poles beyond the band
+  std::sort(s.frequency_hz.data(), s.frequency_hz.data() + m);
+  s.shapes.resize(m, P);
+  for (unsigned int k = 0; k < m; ++k)
+    for (unsigned int p = 0; p < P; ++p)
+      s.shapes(k, p) = 0.3 * u(random);
+  for (const bool complex_shapes : {false, true})
+    {
+      if (complex_shapes)
+        {
+          s.damping_ratio(300) = 0.9; // complex shapes need xi < 1
+          s.damping_ratio(390) = 0.5;
+          s.shapes_imag        = 0.1 * Eigen::MatrixXd::NullaryExpr(m, P, [&] { return u(random); });
+        }
+      const auto interpolated = s.modes_at_lines(df, lines);
+      BOOST_TEST_REQUIRE(interpolated.size() == lines);
+      double worst = 0.;
+      for (unsigned int l = 0; l < lines; ++l)
+        {
+          const Eigen::MatrixXcd g = s.modes_at(2. * M_PI * df * l);
+          worst = std::max(worst, (interpolated[l] - g).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff());
+        }
+      BOOST_TEST_MESSAGE("modes beyond the band interpolated, " << (complex_shapes ? "complex" : "real")
+                         << " shapes: largest difference from the sum at each line " << worst);
+      BOOST_TEST(worst < 1e-12);
+    }
+  // Too few lines to gain: every mode summed at every line, the same figures.
+  const auto few = s.modes_at_lines(df * 64., 5);
+  for (unsigned int l = 0; l < 5; ++l)
+    BOOST_TEST((few[l] - s.modes_at(2. * M_PI * df * 64. * l)).cwiseAbs().maxCoeff() == 0.);
+}
+
 BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
 {
   // With beta_r > 0 the residual is G_r / (1 + j w beta_r): n_p real poles

@@ -89,6 +89,21 @@ namespace greentread
       Eigen::MatrixXcd
       modes_at(double omega) const;
 
+      /**
+       * modes_at() at the lines w_l = 2 pi l @p df, l = 0 .. @p n_lines - 1,
+       * to round-off. The modes whose poles lie well beyond the highest
+       * line (at least 1.25 times it, for a lightly damped mode) are smooth
+       * over the band: their part is computed at Q + 1 Chebyshev points of
+       * [0, w_max] only and interpolated between them (barycentric formula),
+       * with Q such that the interpolation error is about 1e-16 of their
+       * size (Q = 39); the others are summed at every line. With the default
+       * tyre's modes to twice the highest line, about three fifths of them
+       * are interpolated, and the sum over modes and lines, most of the
+       * synthesis' work, halves. The lines on the worker threads.
+       */
+      std::vector<Eigen::MatrixXcd>
+      modes_at_lines(double df, unsigned int n_lines) const;
+
       /// @p modal, the modes' part at @p omega, with the residual
       /// G_r / (1 + j w beta_r) added: at() = with_residual(w, modes_at(w)).
       Eigen::MatrixXcd
