@@ -7,7 +7,14 @@
 // the frequencies from those of one slice (the reference: one shift below
 // zero, no locking).
 //
-//   mode_search_cost [--quick]   --quick: the coarse tyre, modes to 3 kHz
+// 2. The graded cells of the Green's functions' mesh study (issue 14; the
+//    crown at half the mesh size, 'Crown refinement=2'): 8 mm with 256
+//    cells and 4 mm with 512, three wavenumbers each (0, N/8, N/2), the
+//    default search (three slices): the time per wavenumber, and from its
+//    mean the ring's modes of all N/2 + 1 wavenumbers on two threads, as
+//    the modal stage would take them on such a ring.
+//
+//   mode_search_cost [--quick] [--part N]   --quick: the coarse tyre, modes to 3 kHz
 
 #include "benchmark_options.h"
 
@@ -23,6 +30,53 @@
 
 using namespace greentread;
 
+namespace
+{
+  /// Part 2: the default search on graded cells, three wavenumbers each.
+  void
+  graded_cells(const bool quick)
+  {
+    std::printf("\nThe graded cells (Crown refinement=2), modes to %g Hz, three slices, one thread\n"
+                "mesh [mm]  cells   DoFs     k  modes  solves  search [s]  coupling [s]\n",
+                quick ? 3000. : 8000.);
+    const std::vector<std::pair<double, unsigned int>> levels =
+      quick ? std::vector<std::pair<double, unsigned int>>{{0.04, 16}} :
+              std::vector<std::pair<double, unsigned int>>{{0.008, 256}, {0.004, 512}};
+    for (const auto &[mesh_size, n_cells] : levels)
+      {
+        geometry::GeometryParameters geometry;
+        geometry.geo_file        = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
+        geometry.mesh_size       = mesh_size;
+        geometry.n_cells         = n_cells;
+        geometry.other_constants = "Crown refinement=2";
+        periodic::PatchRequest request;
+        request.load = periodic::PointLoad::tributary_area;
+        const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
+                                          fe::InflationParameters(), request);
+        double total = 0.;
+        const std::vector<unsigned int> ks = {0, n_cells / 8, n_cells / 2};
+        for (const unsigned int k : ks)
+          {
+            periodic::ModeSearch search;
+            search.cutoff     = 2. * M_PI * (quick ? 3000. : 8000.);
+            const auto t0     = std::chrono::steady_clock::now();
+            const auto modes  = periodic::bloch_modes(tyre.periodic_cell, k, search);
+            const auto t1     = std::chrono::steady_clock::now();
+            const auto ring   = periodic::coupled_point_modes(modes, tyre.periodic_cell, tyre.patch, true);
+            const auto t2     = std::chrono::steady_clock::now();
+            const double a    = std::chrono::duration<double>(t1 - t0).count(),
+                         b    = std::chrono::duration<double>(t2 - t1).count();
+            total += a + b;
+            std::printf("%9.0f %6u %6u %5u %6ld %7u %11.2f %13.2f\n", 1e3 * mesh_size, n_cells,
+                        tyre.periodic_cell.size(), k, long(modes.omega.size()), modes.n_solves, a, b);
+            (void)ring;
+          }
+        std::printf("  the ring's modes of all %u wavenumbers on two threads: about %.0f s\n",
+                    n_cells / 2 + 1, total / ks.size() * (n_cells / 2 + 1) / 2.);
+      }
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -30,6 +84,11 @@ main(int argc, char **argv)
   base::use_native_blas_kernels(argv);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto options = benchmark::parse(argc, argv, "mode_search_cost");
+  if (options.part == 2)
+    {
+      graded_cells(options.quick);
+      return 0;
+    }
   geometry::GeometryParameters geometry;
   geometry.geo_file = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
   periodic::PatchRequest request;
@@ -77,4 +136,6 @@ main(int argc, char **argv)
         }
       std::printf("slices %u: %.2f s over the %zu wavenumbers\n", slices, total, ks.size());
     }
+  if (options.part == 0)
+    graded_cells(options.quick);
 }
