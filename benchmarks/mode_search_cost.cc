@@ -1,18 +1,20 @@
-// Where the modal stage's time goes: the mode search (periodic::bloch_modes)
-// of single wavenumbers of the default tyre's cell (8 mm mesh, 256 cells,
-// inflated, modes to 8 kHz), on one thread, with one to four slices of
-// [0, cut-off^2]. For each: the time of the search and of the damping's
-// coupling (coupled_point_modes), the sparse solves, the Krylov dimension,
-// the largest relative residual, and the largest relative difference of
-// the frequencies from those of one slice (the reference: one shift below
-// zero, no locking).
+// Where the modal stage's time goes, in two parts (--part N; 0: both).
 //
+// 1. The mode search (periodic::bloch_modes) of single wavenumbers of the
+//    default tyre's cell (8 mm mesh, 256 cells, inflated, modes to 8 kHz),
+//    on one thread, with one to four slices of [0, cut-off^2]. For each:
+//    the time of the search and of the damping's coupling
+//    (coupled_point_modes), the sparse solves, the Krylov dimension, the
+//    largest relative residual, and the largest relative difference of the
+//    frequencies from those of one slice (the reference: one shift below
+//    zero, no locking).
 // 2. The graded cells of the Green's functions' mesh study (issue 14; the
 //    crown at half the mesh size, 'Crown refinement=2'): 8 mm with 256
 //    cells and 4 mm with 512, three wavenumbers each (0, N/8, N/2), the
-//    default search (three slices): the time per wavenumber, and from its
-//    mean the ring's modes of all N/2 + 1 wavenumbers on two threads, as
-//    the modal stage would take them on such a ring.
+//    default search (three slices): the largest relative residual and the
+//    time per wavenumber, and from its mean the ring's modes of all N/2 + 1
+//    wavenumbers on two threads, as the modal stage would take them on such
+//    a ring.
 //
 //   mode_search_cost [--quick] [--part N]   --quick: the coarse tyre, modes to 3 kHz
 
@@ -32,12 +34,35 @@ using namespace greentread;
 
 namespace
 {
+  /// The modes of wavenumber @p k with @p search, and the seconds of the
+  /// search and of the damping's coupling (its result is not kept).
+  struct TimedSearch
+  {
+    periodic::BlochModes modes;
+    double               search = 0., coupling = 0.;
+  };
+
+  TimedSearch
+  timed_search(const periodic::InflatedTyre &tyre, const unsigned int k,
+               const periodic::ModeSearch &search)
+  {
+    TimedSearch timed;
+    const auto  t0 = std::chrono::steady_clock::now();
+    timed.modes    = periodic::bloch_modes(tyre.periodic_cell, k, search);
+    const auto t1  = std::chrono::steady_clock::now();
+    periodic::coupled_point_modes(timed.modes, tyre.periodic_cell, tyre.patch, true);
+    const auto t2  = std::chrono::steady_clock::now();
+    timed.search   = std::chrono::duration<double>(t1 - t0).count();
+    timed.coupling = std::chrono::duration<double>(t2 - t1).count();
+    return timed;
+  }
+
   /// Part 2: the default search on graded cells, three wavenumbers each.
   void
   graded_cells(const bool quick)
   {
     std::printf("\nThe graded cells (Crown refinement=2), modes to %g Hz, three slices, one thread\n"
-                "mesh [mm]  cells   DoFs     k  modes  solves  search [s]  coupling [s]\n",
+                "mesh [mm]  cells   DoFs     k  modes  solves  residual  search [s]  coupling [s]\n",
                 quick ? 3000. : 8000.);
     const std::vector<std::pair<double, unsigned int>> levels =
       quick ? std::vector<std::pair<double, unsigned int>>{{0.04, 16}} :
@@ -59,17 +84,12 @@ namespace
           {
             periodic::ModeSearch search;
             search.cutoff     = 2. * M_PI * (quick ? 3000. : 8000.);
-            const auto t0     = std::chrono::steady_clock::now();
-            const auto modes  = periodic::bloch_modes(tyre.periodic_cell, k, search);
-            const auto t1     = std::chrono::steady_clock::now();
-            const auto ring   = periodic::coupled_point_modes(modes, tyre.periodic_cell, tyre.patch, true);
-            const auto t2     = std::chrono::steady_clock::now();
-            const double a    = std::chrono::duration<double>(t1 - t0).count(),
-                         b    = std::chrono::duration<double>(t2 - t1).count();
-            total += a + b;
-            std::printf("%9.0f %6u %6u %5u %6ld %7u %11.2f %13.2f\n", 1e3 * mesh_size, n_cells,
-                        tyre.periodic_cell.size(), k, long(modes.omega.size()), modes.n_solves, a, b);
-            (void)ring;
+            const auto timed  = timed_search(tyre, k, search);
+            total += timed.search + timed.coupling;
+            std::printf("%9.0f %6u %6u %5u %6ld %7u %9.1e %11.2f %13.2f\n", 1e3 * mesh_size,
+                        n_cells, tyre.periodic_cell.size(), k, long(timed.modes.omega.size()),
+                        timed.modes.n_solves, timed.modes.max_residual, timed.search,
+                        timed.coupling);
           }
         std::printf("  the ring's modes of all %u wavenumbers on two threads: about %.0f s\n",
                     n_cells / 2 + 1, total / ks.size() * (n_cells / 2 + 1) / 2.);
@@ -116,14 +136,9 @@ main(int argc, char **argv)
           periodic::ModeSearch search;
           search.cutoff     = 2. * M_PI * (options.quick ? 3000. : 8000.);
           search.slices     = slices;
-          const auto t0     = std::chrono::steady_clock::now();
-          const auto modes  = periodic::bloch_modes(tyre.periodic_cell, ks[i], search);
-          const auto t1     = std::chrono::steady_clock::now();
-          const auto ring   = periodic::coupled_point_modes(modes, tyre.periodic_cell, tyre.patch, true);
-          const auto t2     = std::chrono::steady_clock::now();
-          const double a    = std::chrono::duration<double>(t1 - t0).count(),
-                       b    = std::chrono::duration<double>(t2 - t1).count();
-          total += a + b;
+          const auto timed  = timed_search(tyre, ks[i], search);
+          const auto &modes = timed.modes;
+          total += timed.search + timed.coupling;
           if (slices == 1)
             reference[i] = modes.omega;
           double difference = modes.omega.size() == reference[i].size() ? 0. : INFINITY;
@@ -131,8 +146,7 @@ main(int argc, char **argv)
             difference = ((modes.omega - reference[i]).cwiseQuotient(reference[i])).cwiseAbs().maxCoeff();
           std::printf("%6u %4u %6ld %7u %10u %9.1e %17.1e %11.2f %13.2f\n", slices, ks[i],
                       long(modes.omega.size()), modes.n_solves, modes.krylov_dimension,
-                      modes.max_residual, difference, a, b);
-          (void)ring;
+                      modes.max_residual, difference, timed.search, timed.coupling);
         }
       std::printf("slices %u: %.2f s over the %zu wavenumbers\n", slices, total, ks.size());
     }

@@ -167,12 +167,16 @@ namespace greentread
            far :
            near)
           .push_back(k);
+      std::vector<Eigen::MatrixXcd> g(n_lines);
+      const unsigned int            n_threads = line_threads(n_lines);
       // Interpolating pays only with fewer nodes than lines.
-      if (n_lines <= Q + 1)
+      if (far.empty() || n_lines <= Q + 1)
         {
-          near.insert(near.end(), far.begin(), far.end());
-          std::sort(near.begin(), near.end());
-          far.clear();
+          for_each_line(0, n_lines, n_threads, "the modes at every line",
+                        [&](const unsigned int l, const unsigned int) {
+                          g[l] = modes_at(2. * M_PI * l * df);
+                        });
+          return g;
         }
       const auto rows = [](const Eigen::MatrixXd &A, const std::vector<Eigen::Index> &which) {
         return A.size() ? Eigen::MatrixXd(A(which, Eigen::all)) : Eigen::MatrixXd();
@@ -182,15 +186,10 @@ namespace greentread
       };
       const Eigen::VectorXd f_near = entries(frequency_hz, near), xi_near = entries(damping_ratio, near);
       const Eigen::MatrixXd A_near = rows(shapes, near), B_near = rows(shapes_imag, near);
-
-      std::vector<Eigen::MatrixXcd> g(n_lines);
-      const unsigned int            n_threads = line_threads(std::max(n_lines, 1u));
       for_each_line(0, n_lines, n_threads, "the modes at every line",
                     [&](const unsigned int l, const unsigned int) {
                       g[l] = modal_part(f_near, xi_near, A_near, B_near, 2. * M_PI * l * df);
                     });
-      if (far.empty())
-        return g;
 
       const Eigen::VectorXd f_far = entries(frequency_hz, far), xi_far = entries(damping_ratio, far);
       const Eigen::MatrixXd A_far = rows(shapes, far), B_far = rows(shapes_imag, far);
