@@ -187,27 +187,14 @@ namespace greentread
           for (unsigned int k = 0; 2 * k <= N; ++k)
             {
               const double         phi = 2. * M_PI * k / N;
-              const SparseComplex &D_k = bloch.assemble(phi);
-              if (!analysed)
-                {
-                  lu.analyzePattern(D_k);
-                  analysed = true;
-                }
-              lu.factorize(D_k);
-              require_factorised(lu, omega, "of Bloch wavenumber " + std::to_string(k));
+              const SparseComplex &D_k = factorise(phi, omega, k);
               const Dense X = lu.solve(B);
               check_solution(D_k, X, B, omega, "of Bloch wavenumber " + std::to_string(k),
                              diagnostics);
               Dense S(n_slots, n_slots);
               for (unsigned int s = 0; s < n_slots; ++s)
                 S.row(s) = X.row(dofs[s]);
-              Dense W = Dense::Zero(n_slots, P);
-              for (unsigned int q = 0; q < P; ++q)
-                for (std::size_t e = 0; e < patch.points[q].load.size(); ++e)
-                  {
-                    const auto &entry = patch.points[q].load[e];
-                    W(slot[q][e], q) += entry.weight * std::polar(1., -phi * entry.cell);
-                  }
+              const Dense W = weights(phi);
               const Dense C = W.adjoint() * S * W;
               g += C;
               if (k != 0 && 2 * k != N)
@@ -216,7 +203,84 @@ namespace greentread
           return g / static_cast<double>(N);
         }
 
+        /// The loads @p columns only: per wavenumber k one solve with D_k
+        /// for them, and one with D_k^T for wavenumber N - k (D_{N-k} =
+        /// D_k^T, W_{N-k} = conj(W_k)), each with columns.size() right-hand
+        /// sides B W_k e_j.
+        Dense
+        solve_columns(const double                     omega,
+                      const std::vector<unsigned int> &columns,
+                      SolveDiagnostics                &diagnostics) override
+        {
+          bloch.set_frequency(omega);
+          const unsigned int N = cell.n_cells, n_slots = dofs.size();
+          const unsigned int P = patch.points.size(), n_columns = columns.size();
+          for (const unsigned int j : columns)
+            if (j >= P)
+              throw NumericalError("solve_columns: point " + std::to_string(j) +
+                                   " asked, the patch has " + std::to_string(P));
+          Dense g = Dense::Zero(P, n_columns);
+          for (unsigned int k = 0; 2 * k <= N; ++k)
+            {
+              const double         phi = 2. * M_PI * k / N;
+              const SparseComplex &D_k = factorise(phi, omega, k);
+              const Dense W = weights(phi);
+              const auto  response = [&](const bool transposed) {
+                Dense B = Dense::Zero(bloch.size(), n_columns);
+                for (unsigned int s = 0; s < n_slots; ++s)
+                  for (unsigned int c = 0; c < n_columns; ++c)
+                    B(dofs[s], c) =
+                      transposed ? std::conj(W(s, columns[c])) : W(s, columns[c]);
+                const std::string what =
+                  "of Bloch wavenumber " + std::to_string(transposed ? N - k : k);
+                const Dense X = transposed ? Dense(lu.transpose().solve(B)) : Dense(lu.solve(B));
+                if (transposed)
+                  check_solution(SparseComplex(D_k.transpose()), X, B, omega, what, diagnostics);
+                else
+                  check_solution(D_k, X, B, omega, what, diagnostics);
+                Dense at_loads(n_slots, n_columns);
+                for (unsigned int s = 0; s < n_slots; ++s)
+                  at_loads.row(s) = X.row(dofs[s]);
+                return at_loads;
+              };
+              g += W.adjoint() * response(false);
+              if (k != 0 && 2 * k != N)
+                g += W.transpose() * response(true);
+            }
+          return g / static_cast<double>(N);
+        }
+
       private:
+        /// D_k at @p phi, factorised into lu.
+        const SparseComplex &
+        factorise(const double phi, const double omega, const unsigned int k)
+        {
+          const SparseComplex &D_k = bloch.assemble(phi);
+          if (!analysed)
+            {
+              lu.analyzePattern(D_k);
+              analysed = true;
+            }
+          lu.factorize(D_k);
+          require_factorised(lu, omega, "of Bloch wavenumber " + std::to_string(k));
+          return D_k;
+        }
+
+        /// W_k (n_slots x P): W(s, q) = sum of w e^{-i phi n} over the
+        /// entries (n, s, w) of point q's load.
+        Dense
+        weights(const double phi) const
+        {
+          Dense W = Dense::Zero(dofs.size(), patch.points.size());
+          for (unsigned int q = 0; q < patch.points.size(); ++q)
+            for (std::size_t e = 0; e < patch.points[q].load.size(); ++e)
+              {
+                const auto &entry = patch.points[q].load[e];
+                W(slot[q][e], q) += entry.weight * std::polar(1., -phi * entry.cell);
+              }
+          return W;
+        }
+
         const PeriodicCell                    &cell;
         const ContactPatch                    &patch;
         BlochCell                              bloch;
@@ -418,87 +482,6 @@ namespace greentread
 
 
 
-    BlochCell::BlochCell(const PeriodicCell &cell)
-      : n_reduced(cell.n_face + cell.n_interior)
-    {
-      // Fold R onto L. Phase class 0: none; 1: e^{i phi} (column on R);
-      // 2: e^{-i phi} (row on R).
-      const auto fold = [&](const int i, bool &on_right) {
-        on_right = i >= static_cast<int>(n_reduced);
-        return on_right ? i - static_cast<int>(n_reduced) : i;
-      };
-      const SparseReal *matrices[3] = {&cell.stiffness, &cell.damping, &cell.mass};
-      std::vector<Eigen::Triplet<Complex>> entries;
-      for (const SparseReal *A : matrices)
-        for (int c = 0; c < A->outerSize(); ++c)
-          for (SparseReal::InnerIterator it(*A, c); it; ++it)
-            {
-              bool row_right, column_right;
-              entries.emplace_back(fold(it.row(), row_right), fold(it.col(), column_right), 1.);
-            }
-      matrix.resize(n_reduced, n_reduced);
-      matrix.setFromTriplets(entries.begin(), entries.end());
-      matrix.makeCompressed();
-      for (auto &per_matrix : parts)
-        for (auto &per_class : per_matrix)
-          per_class.assign(matrix.nonZeros(), 0.);
-      for (unsigned int m = 0; m < 3; ++m)
-        for (int c = 0; c < matrices[m]->outerSize(); ++c)
-          for (SparseReal::InnerIterator it(*matrices[m], c); it; ++it)
-            {
-              bool      row_right, column_right;
-              const int r = fold(it.row(), row_right), col = fold(it.col(), column_right);
-              const int phase = row_right == column_right ? 0 : (column_right ? 1 : 2);
-              parts[m][phase][position(r, col)] += it.value();
-            }
-    }
-
-
-
-    void
-    BlochCell::set_frequency(const double omega)
-    {
-      set_combination(1., Complex(0., omega), -omega * omega);
-    }
-
-
-
-    void
-    BlochCell::set_combination(const Complex a, const Complex c, const Complex m)
-    {
-      for (unsigned int t = 0; t < 3; ++t)
-        {
-          at_frequency[t].resize(matrix.nonZeros());
-          for (std::size_t e = 0; e < at_frequency[t].size(); ++e)
-            at_frequency[t][e] = a * parts[0][t][e] + c * parts[1][t][e] + m * parts[2][t][e];
-        }
-    }
-
-
-
-    const SparseComplex &
-    BlochCell::assemble(const double phi)
-    {
-      const Complex phase = std::polar(1., phi);
-      Complex      *out   = matrix.valuePtr();
-      for (std::size_t e = 0; e < at_frequency[0].size(); ++e)
-        out[e] = at_frequency[0][e] + phase * at_frequency[1][e] +
-                 std::conj(phase) * at_frequency[2][e];
-      return matrix;
-    }
-
-
-
-    std::size_t
-    BlochCell::position(const int row, const int column) const
-    {
-      const int *begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column];
-      const int *end   = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column + 1];
-      return std::lower_bound(begin, end, row) - matrix.innerIndexPtr();
-    }
-
-
-
     Eigen::MatrixXcd
     ring_response(const PeriodicCell           &cell,
                   const double                  omega,
@@ -531,6 +514,25 @@ namespace greentread
             u.col(m) += std::polar(1., phi * static_cast<double>(m)) * x.col(0);
         }
       return u / static_cast<double>(N);
+    }
+
+
+
+    Eigen::MatrixXcd
+    GreenSolver::solve_columns(const double                     omega,
+                               const std::vector<unsigned int> &columns,
+                               SolveDiagnostics                &diagnostics)
+    {
+      const Eigen::MatrixXcd g = solve(omega, diagnostics);
+      Eigen::MatrixXcd       picked(g.rows(), columns.size());
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        {
+          if (columns[c] >= g.cols())
+            throw NumericalError("solve_columns: point " + std::to_string(columns[c]) +
+                                 " asked, the patch has " + std::to_string(g.cols()));
+          picked.col(c) = g.col(columns[c]);
+        }
+      return picked;
     }
 
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 /**
  * @file
@@ -109,6 +110,18 @@ namespace greentread
        */
       virtual Eigen::MatrixXcd
       solve(double omega, SolveDiagnostics &diagnostics) = 0;
+
+      /**
+       * @brief The columns @p columns of g(w) (P x columns.size()): every
+       * point's response to a unit load at each of those points. By default
+       * the whole of g is solved and the columns copied; `bloch` solves for
+       * those loads only, one right-hand side each, which is what makes a
+       * column of a very fine ring affordable (the mesh study's check).
+       */
+      virtual Eigen::MatrixXcd
+      solve_columns(double                            omega,
+                    const std::vector<unsigned int> &columns,
+                    SolveDiagnostics                 &diagnostics);
     };
 
     /// The methods, as the parameter names them.
