@@ -19,7 +19,10 @@
 // alone (one load per wavenumber instead of the whole patch's): whether the
 // graded 4 mm, N = 512 ring is within issue 14's 2% of a ring twice as fine.
 //
-//   green_mesh_convergence [--quick] [--output DIR] [--part 1|2|3]
+// Part 4, at 0 Hz: the graded 4 mm, N = 512 ring refined in one direction at
+// a time (its section, its circumference), from the centre column alone.
+//
+//   green_mesh_convergence [--quick] [--output DIR] [--part 1|2|3|4]
 
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
@@ -160,19 +163,20 @@ namespace
   /// The static functions with the section and the circumference refined one
   /// at a time from @p base, as changes from it.
   void
-  direction_table(const Level &base, std::ofstream &csv)
+  direction_table(const Level &base, std::ofstream &csv, const bool one_column = false)
   {
+    const unsigned int             crown  = base.crown_refinement;
     const std::vector<Level>       levels = {base,
-                                             {base.mesh_size / 2, base.n_cells},
-                                             {base.mesh_size, 2 * base.n_cells},
-                                             {base.mesh_size / 2, 2 * base.n_cells}};
+                                             {base.mesh_size / 2, base.n_cells, crown},
+                                             {base.mesh_size, 2 * base.n_cells, crown},
+                                             {base.mesh_size / 2, 2 * base.n_cells, crown}};
     const char                    *what[4] = {"base", "section halved", "N doubled", "both"};
     std::vector<Result>            results;
     const std::vector<double>      zero{0.};
     for (const auto &level : levels)
       {
-        results.push_back(run(level, zero));
-        print_level(level, results.back());
+        results.push_back(run(level, zero, one_column));
+        print_level(level, results.back(), one_column);
       }
     std::printf("\n%-18s | %-12s | %-22s | %-22s | %-22s\n", "0 Hz", "base [um/N]",
                 "section halved", "N doubled", "both");
@@ -256,5 +260,17 @@ main(int argc, char **argv)
       convergence_table(graded, frequencies, csv, true);
       std::printf("\nWrote %s\n",
                   (options.output / "green_mesh_graded_finer.csv").string().c_str());
+    }
+  if (options.part == 0 || options.part == 4)
+    {
+      std::printf("\nPart 4. At 0 Hz: the graded 4 mm, N = 512 ring refined in one direction "
+                  "at a time, from the centre point's column of g alone.\n\n");
+      Level base             = options.quick ? levels[1] : Level{0.004, 512};
+      base.crown_refinement  = 2;
+      std::ofstream split(options.output / "green_mesh_graded_directions.csv");
+      split << "refined,mesh_size,n_cells,function,abs_um_per_N\n";
+      direction_table(base, split, true);
+      std::printf("\nWrote %s\n",
+                  (options.output / "green_mesh_graded_directions.csv").string().c_str());
     }
 }
