@@ -1,4 +1,5 @@
-// Where the modal stage's time goes, in two parts (--part N; 0: both).
+// Where the modal stage's time goes, in three parts (--part N; 0: parts 1
+// and 2).
 //
 // 1. The mode search (periodic::bloch_modes) of single wavenumbers of the
 //    default tyre's cell (8 mm mesh, 256 cells, inflated, modes to 8 kHz),
@@ -15,6 +16,8 @@
 //    time per wavenumber, and from its mean the ring's modes of all N/2 + 1
 //    wavenumbers on two threads, as the modal stage would take them on such
 //    a ring.
+// 3. The same for the graded 2 mm cell with 1024 cells, the ring that issue
+//    14's 2% needs (79,389 DoFs per cell; green_mesh_convergence --part 3).
 //
 //   mode_search_cost [--quick] [--part N]   --quick: the coarse tyre, modes to 3 kHz
 
@@ -57,16 +60,14 @@ namespace
     return timed;
   }
 
-  /// Part 2: the default search on graded cells, three wavenumbers each.
+  /// Parts 2 and 3: the default search on graded cells (mesh size, number
+  /// of cells), three wavenumbers each.
   void
-  graded_cells(const bool quick)
+  graded_cells(const bool quick, const std::vector<std::pair<double, unsigned int>> &levels)
   {
     std::printf("\nThe graded cells (Crown refinement=2), modes to %g Hz, three slices, one thread\n"
                 "mesh [mm]  cells   DoFs     k  modes  solves  residual  search [s]  coupling [s]\n",
                 quick ? 3000. : 8000.);
-    const std::vector<std::pair<double, unsigned int>> levels =
-      quick ? std::vector<std::pair<double, unsigned int>>{{0.04, 16}} :
-              std::vector<std::pair<double, unsigned int>>{{0.008, 256}, {0.004, 512}};
     for (const auto &[mesh_size, n_cells] : levels)
       {
         geometry::GeometryParameters geometry;
@@ -104,9 +105,14 @@ main(int argc, char **argv)
   base::use_native_blas_kernels(argv);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto options = benchmark::parse(argc, argv, "mode_search_cost");
-  if (options.part == 2)
+  using Levels             = std::vector<std::pair<double, unsigned int>>;
+  const Levels part_2_levels = options.quick ? Levels{{0.04, 16}} :
+                                               Levels{{0.008, 256}, {0.004, 512}};
+  if (options.part == 2 || options.part == 3)
     {
-      graded_cells(options.quick);
+      graded_cells(options.quick, options.part == 2 ? part_2_levels :
+                                  options.quick     ? Levels{{0.04, 16}} :
+                                                      Levels{{0.002, 1024}});
       return 0;
     }
   geometry::GeometryParameters geometry;
@@ -151,5 +157,5 @@ main(int argc, char **argv)
       std::printf("slices %u: %.2f s over the %zu wavenumbers\n", slices, total, ks.size());
     }
   if (options.part == 0)
-    graded_cells(options.quick);
+    graded_cells(options.quick, part_2_levels);
 }
