@@ -30,16 +30,21 @@ namespace greentread
       public:
         /// A basis kept M-orthogonal to the columns of @p locked_ as well
         /// (modes found already, with @p mass_locked_ = M locked_).
+        /// At most @p limit columns. The storage starts at 512 columns and
+        /// doubles as the basis grows: reserving all of them at once, n x n
+        /// for V, M V and H, was refused (std::bad_alloc) above about
+        /// 38,000 unknowns, where each exceeds the machine's memory.
         Basis(const internal::SharedPattern &KM_,
               const Dense                   &locked_,
               const Dense                   &mass_locked_,
-              const Eigen::Index             capacity)
+              const Eigen::Index             limit_)
           : KM(KM_)
           , locked(locked_)
           , mass_locked(mass_locked_)
-          , V(KM_.size(), capacity)
-          , MV(KM_.size(), capacity)
-          , H(capacity, capacity)
+          , limit(limit_)
+          , V(KM_.size(), std::min<Eigen::Index>(limit_, 512))
+          , MV(KM_.size(), V.cols())
+          , H(V.cols(), V.cols())
         {}
 
         Eigen::Index
@@ -50,7 +55,7 @@ namespace greentread
         Eigen::Index
         capacity() const
         {
-          return V.cols();
+          return limit;
         }
         auto
         vectors() const
@@ -100,6 +105,7 @@ namespace greentread
           const Eigen::Index added = std::min<Eigen::Index>(X.cols(), capacity() - m);
           if (added == 0)
             return 0;
+          reserve(m + added);
           V.middleCols(m, added)  = X.leftCols(added);
           MV.middleCols(m, added) = MX.leftCols(added);
           // The new columns of H, and its new rows by symmetry.
@@ -112,6 +118,19 @@ namespace greentread
         }
 
       private:
+        /// Storage for at least @p columns columns (at most the limit),
+        /// doubling, so that the copies cost at most twice the final size.
+        void
+        reserve(const Eigen::Index columns)
+        {
+          if (columns <= V.cols())
+            return;
+          const Eigen::Index grown = std::min(limit, std::max(columns, 2 * V.cols()));
+          V.conservativeResize(Eigen::NoChange, grown);
+          MV.conservativeResize(Eigen::NoChange, grown);
+          H.conservativeResize(grown, grown);
+        }
+
         /// X -= V (MV^H X), and the same against the locked modes if
         /// @p with_locked. Once against those is enough: they are modes (to
         /// residuals of about 1e-9), and T maps a vector M-orthogonal to a
@@ -187,6 +206,7 @@ namespace greentread
 
         const internal::SharedPattern &KM;
         const Dense                   &locked, &mass_locked;
+        const Eigen::Index             limit; ///< the most columns the basis may have
         Dense                          V, MV, H;
         Eigen::Index                   m = 0;
       };
