@@ -132,6 +132,16 @@ namespace greentread
         diagnostics.max_condition = std::max(diagnostics.max_condition, condition);
       }
 
+      /// Refuse a column of g beyond the patch's @p n_points points.
+      void
+      require_points(const std::vector<unsigned int> &columns, const std::size_t n_points)
+      {
+        for (const unsigned int j : columns)
+          if (j >= n_points)
+            throw NumericalError("solve_columns: point " + std::to_string(j) +
+                                 " asked, the patch has " + std::to_string(n_points));
+      }
+
       /// The distinct reference DoFs of the contact points' loads.
       std::vector<unsigned int>
       contact_dofs(const ContactPatch &patch)
@@ -215,10 +225,7 @@ namespace greentread
           bloch.set_frequency(omega);
           const unsigned int N = cell.n_cells, n_slots = dofs.size();
           const unsigned int P = patch.points.size(), n_columns = columns.size();
-          for (const unsigned int j : columns)
-            if (j >= P)
-              throw NumericalError("solve_columns: point " + std::to_string(j) +
-                                   " asked, the patch has " + std::to_string(P));
+          require_points(columns, P);
           Dense g = Dense::Zero(P, n_columns);
           for (unsigned int k = 0; 2 * k <= N; ++k)
             {
@@ -524,14 +531,10 @@ namespace greentread
                                SolveDiagnostics                &diagnostics)
     {
       const Eigen::MatrixXcd g = solve(omega, diagnostics);
-      Eigen::MatrixXcd       picked(g.rows(), columns.size());
+      require_points(columns, g.cols());
+      Eigen::MatrixXcd picked(g.rows(), columns.size());
       for (std::size_t c = 0; c < columns.size(); ++c)
-        {
-          if (columns[c] >= g.cols())
-            throw NumericalError("solve_columns: point " + std::to_string(columns[c]) +
-                                 " asked, the patch has " + std::to_string(g.cols()));
-          picked.col(c) = g.col(columns[c]);
-        }
+        picked.col(c) = g.col(columns[c]);
       return picked;
     }
 
