@@ -31,6 +31,12 @@ namespace greentread
             {
               gmsh::option::setNumber("General.Terminal", 0);
               gmsh::logger::start();
+              // gmsh's ONELAB parameters outlive gmsh::finalize: without
+              // this, a constant set through 'Other constants' for one cell
+              // (Crown refinement=3, say) stayed set for the next cell built
+              // in the same process, even when that cell's parameters did
+              // not name it.
+              gmsh::onelab::clear();
             }
           catch (...)
             {

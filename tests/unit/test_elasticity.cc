@@ -284,6 +284,24 @@ BOOST_AUTO_TEST_CASE(tyre_cell_masses_rigid_motions_and_ring_modes)
   BOOST_TEST(Kr.linfty_norm() < 1e-9 * model.stiffness().linfty_norm() * 0.3);
 }
 
+BOOST_AUTO_TEST_CASE(a_cells_constants_do_not_carry_over_to_the_next_cell)
+{
+  // Three cells built in one process: the default section, then 'Crown
+  // refinement=2' (the crown's elements half the size: more cells), then
+  // the default section again, which must be the first one's mesh.
+  geometry::GeometryParameters p;
+  p.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
+  p.mesh_size = 0.04;
+  p.n_cells   = 16;
+  const unsigned int plain = geometry::TyreCell(p).cell().n_active_cells();
+  p.other_constants        = "Crown refinement=2";
+  const unsigned int graded = geometry::TyreCell(p).cell().n_active_cells();
+  p.other_constants         = "";
+  const unsigned int again  = geometry::TyreCell(p).cell().n_active_cells();
+  BOOST_TEST(graded > plain);
+  BOOST_TEST(again == plain);
+}
+
 BOOST_AUTO_TEST_CASE(free_ring_has_six_rigid_body_modes)
 {
   // A coarse ring of 16 cells, nothing held: exactly six zero eigenvalues.
