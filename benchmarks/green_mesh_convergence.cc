@@ -22,7 +22,18 @@
 // Part 4, at 0 Hz: the graded 4 mm, N = 512 ring refined in one direction at
 // a time (its section, its circumference), from the centre column alone.
 //
-//   green_mesh_convergence [--quick] [--output DIR] [--part 1|2|3|4]
+// Part 5, at 0 Hz: the levels of part 3 with the crown graded once more
+// ('Crown refinement=3': the crown's elements a third of the mesh size), from
+// the centre column alone: whether the 4 mm, N = 512 ring of this grading is
+// within the 2% of a ring twice as fine.
+//
+// Part 6: the default ring and the 'Crown refinement=3' 8 mm, N = 256 ring
+// against the 'Crown refinement=3' 4 mm, N = 512 ring F of part 5 at 0, 1, 2
+// and 4 kHz (the centre column alone): their own functions, and the same
+// plus the difference of the static ones, g_F(0) - g_c(0). If the mesh's
+// error were local and static, that correction would remove it.
+//
+//   green_mesh_convergence [--quick] [--output DIR] [--part 1|2|3|4|5|6]
 
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
@@ -31,6 +42,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -196,6 +208,48 @@ namespace
               << names[q] << ',' << 1e6 * std::abs(results[l].g[0][q]) << '\n';
       }
   }
+
+  /// Part 6: each of @p coarse rings' functions, as they are and plus the
+  /// static difference g_F(0) - g_c(0), against @p fine's own, at
+  /// @p frequencies (which start at 0 Hz).
+  void
+  static_correction(const std::vector<Level>    &coarse,
+                    const Level                 &fine,
+                    const std::vector<double>   &frequencies,
+                    const std::filesystem::path &csv_path)
+  {
+    std::printf("\nPart 6. Coarser rings' functions, as they are and with the fine ring's static "
+                "correction, against the fine ring's own (centre column).\n\n");
+    const Result f = run(fine, frequencies, true);
+    print_level(fine, f, true);
+    std::ofstream csv(csv_path);
+    csv << "mesh_size,n_cells,crown_refinement,function,frequency_Hz,coarse_um_per_N,"
+           "fine_um_per_N,corrected_um_per_N,coarse_difference,corrected_difference\n";
+    for (const auto &level : coarse)
+      {
+        const Result c = run(level, frequencies, true);
+        print_level(level, c, true);
+        std::printf("%-18s %6s | %10s %10s %10s | %-12s | %s\n", "function", "f [Hz]",
+                    "coarse", "fine", "corrected", "coarse-fine", "corrected-fine  (|g| in um/N)");
+        for (unsigned int q = 0; q < 3; ++q)
+          for (std::size_t k = 0; k < frequencies.size(); ++k)
+            {
+              const auto   corrected = c.g[k][q] + (f.g[0][q] - c.g[0][q]);
+              const double scale     = std::abs(f.g[k][q]);
+              const double d_coarse  = std::abs(c.g[k][q] - f.g[k][q]) / scale;
+              const double d_corr    = std::abs(corrected - f.g[k][q]) / scale;
+              std::printf("%-18s %6.0f | %10.5g %10.5g %10.5g | %11.2f%% | %11.2f%%\n",
+                          names[q], frequencies[k], 1e6 * std::abs(c.g[k][q]), 1e6 * scale,
+                          1e6 * std::abs(corrected), 100. * d_coarse, 100. * d_corr);
+              csv << level.mesh_size << ',' << level.n_cells << ',' << level.crown_refinement
+                  << ',' << names[q] << ',' << frequencies[k] << ','
+                  << 1e6 * std::abs(c.g[k][q]) << ',' << 1e6 * scale << ','
+                  << 1e6 * std::abs(corrected) << ',' << d_coarse << ',' << d_corr << '\n';
+            }
+        std::printf("\n");
+      }
+    std::printf("Wrote %s\n", csv_path.string().c_str());
+  }
 } // namespace
 
 int
@@ -273,4 +327,28 @@ main(int argc, char **argv)
       std::printf("\nWrote %s\n",
                   (options.output / "green_mesh_graded_directions.csv").string().c_str());
     }
+  if (options.part == 0 || options.part == 5)
+    {
+      std::printf("\nPart 5. At 0 Hz: the levels of part 3 with Crown refinement = 3, from the "
+                  "centre point's column of g alone.\n\n");
+      std::vector<Level> graded = levels;
+      for (auto &level : graded)
+        {
+          if (!options.quick)
+            {
+              level.mesh_size /= 2;
+              level.n_cells *= 2;
+            }
+          level.crown_refinement = 3;
+        }
+      std::ofstream csv(options.output / "green_mesh_graded_3.csv");
+      csv << header;
+      convergence_table(graded, {0.}, csv, true);
+      std::printf("\nWrote %s\n", (options.output / "green_mesh_graded_3.csv").string().c_str());
+    }
+  if (options.part == 0 || options.part == 6)
+    static_correction(options.quick ? std::vector<Level>{levels[0], {0.04, 32, 3}} :
+                                      std::vector<Level>{levels[1], {0.008, 256, 3}},
+                      options.quick ? Level{0.02, 64, 3} : Level{0.004, 512, 3}, frequencies,
+                      options.output / "green_static_correction.csv");
 }

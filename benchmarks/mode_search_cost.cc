@@ -1,4 +1,4 @@
-// Where the modal stage's time goes, in three parts (--part N; 0: parts 1
+// Where the modal stage's time goes, in four parts (--part N; 0: parts 1
 // and 2).
 //
 // 1. The mode search (periodic::bloch_modes) of single wavenumbers of the
@@ -18,6 +18,8 @@
 //    a ring.
 // 3. The same for the graded 2 mm cell with 1024 cells, the ring that issue
 //    14's 2% needs (79,389 DoFs per cell; green_mesh_convergence --part 3).
+// 4. The same for the 4 mm cell with 512 cells and the crown at a third of
+//    the mesh size ('Crown refinement=3'; green_mesh_convergence --part 5).
 //
 //   mode_search_cost [--quick] [--part N]   --quick: the coarse tyre, modes to 3 kHz
 
@@ -32,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 using namespace greentread;
 
@@ -63,18 +66,21 @@ namespace
   /// Parts 2 and 3: the default search on graded cells (mesh size, number
   /// of cells), three wavenumbers each.
   void
-  graded_cells(const bool quick, const std::vector<std::pair<double, unsigned int>> &levels)
+  graded_cells(const bool                                           quick,
+               const std::vector<std::pair<double, unsigned int>> &levels,
+               const unsigned int                                   crown_refinement = 2)
   {
-    std::printf("\nThe graded cells (Crown refinement=2), modes to %g Hz, three slices, one thread\n"
+    std::printf("\nThe graded cells (Crown refinement=%u), modes to %g Hz, three slices, one "
+                "thread\n"
                 "mesh [mm]  cells   DoFs     k  modes  solves  residual  search [s]  coupling [s]\n",
-                quick ? 3000. : 8000.);
+                crown_refinement, quick ? 3000. : 8000.);
     for (const auto &[mesh_size, n_cells] : levels)
       {
         geometry::GeometryParameters geometry;
         geometry.geo_file        = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
         geometry.mesh_size       = mesh_size;
         geometry.n_cells         = n_cells;
-        geometry.other_constants = "Crown refinement=2";
+        geometry.other_constants = "Crown refinement=" + std::to_string(crown_refinement);
         periodic::PatchRequest request;
         request.load = periodic::PointLoad::tributary_area;
         const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
@@ -108,6 +114,11 @@ main(int argc, char **argv)
   using Levels             = std::vector<std::pair<double, unsigned int>>;
   const Levels part_2_levels = options.quick ? Levels{{0.04, 16}} :
                                                Levels{{0.008, 256}, {0.004, 512}};
+  if (options.part == 4)
+    {
+      graded_cells(options.quick, options.quick ? Levels{{0.04, 16}} : Levels{{0.004, 512}}, 3);
+      return 0;
+    }
   if (options.part == 2 || options.part == 3)
     {
       graded_cells(options.quick, options.part == 2 ? part_2_levels :
