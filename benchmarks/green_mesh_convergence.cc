@@ -209,6 +209,23 @@ namespace
       }
   }
 
+  /// Parts 3 and 5: @p levels one step finer (unless @p quick: the smoke run
+  /// keeps its coarse levels), with the crown graded by @p crown_refinement.
+  std::vector<Level>
+  finer_graded(std::vector<Level> levels, const bool quick, const unsigned int crown_refinement)
+  {
+    for (auto &level : levels)
+      {
+        if (!quick)
+          {
+            level.mesh_size /= 2;
+            level.n_cells *= 2;
+          }
+        level.crown_refinement = crown_refinement;
+      }
+    return levels;
+  }
+
   /// Part 6: each of @p coarse rings' functions, as they are and plus the
   /// static difference g_F(0) - g_c(0), against @p fine's own, at
   /// @p frequencies (which start at 0 Hz).
@@ -295,25 +312,19 @@ main(int argc, char **argv)
                   (options.output / "green_mesh_directions.csv").string().c_str(),
                   (options.output / "green_mesh_graded.csv").string().c_str());
     }
+  // Parts 3 and 5: the levels one step finer with the crown graded, from
+  // the centre point's column of g alone.
+  const auto finer_table = [&](const unsigned int crown, const std::string &file) {
+    std::ofstream csv(options.output / file);
+    csv << header;
+    convergence_table(finer_graded(levels, options.quick, crown), frequencies, csv, true);
+    std::printf("\nWrote %s\n", (options.output / file).string().c_str());
+  };
   if (options.part == 0 || options.part == 3)
     {
       std::printf("\nPart 3. The graded levels (Crown refinement = 2) one step finer, from the "
                   "centre point's column of g alone.\n\n");
-      std::vector<Level> graded = levels;
-      for (auto &level : graded)
-        {
-          if (!options.quick) // the smoke run keeps its coarse levels
-            {
-              level.mesh_size /= 2;
-              level.n_cells *= 2;
-            }
-          level.crown_refinement = 2;
-        }
-      std::ofstream csv(options.output / "green_mesh_graded_finer.csv");
-      csv << header;
-      convergence_table(graded, frequencies, csv, true);
-      std::printf("\nWrote %s\n",
-                  (options.output / "green_mesh_graded_finer.csv").string().c_str());
+      finer_table(2, "green_mesh_graded_finer.csv");
     }
   if (options.part == 0 || options.part == 4)
     {
@@ -331,20 +342,7 @@ main(int argc, char **argv)
     {
       std::printf("\nPart 5. The levels of part 3 with Crown refinement = 3, from the centre "
                   "point's column of g alone.\n\n");
-      std::vector<Level> graded = levels;
-      for (auto &level : graded)
-        {
-          if (!options.quick)
-            {
-              level.mesh_size /= 2;
-              level.n_cells *= 2;
-            }
-          level.crown_refinement = 3;
-        }
-      std::ofstream csv(options.output / "green_mesh_graded_3.csv");
-      csv << header;
-      convergence_table(graded, frequencies, csv, true);
-      std::printf("\nWrote %s\n", (options.output / "green_mesh_graded_3.csv").string().c_str());
+      finer_table(3, "green_mesh_graded_3.csv");
     }
   if (options.part == 0 || options.part == 6)
     static_correction(options.quick ? std::vector<Level>{levels[0], {0.04, 32, 3}} :
