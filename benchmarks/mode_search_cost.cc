@@ -63,8 +63,9 @@ namespace
     return timed;
   }
 
-  /// Parts 2 and 3: the default search on graded cells (mesh size, number
-  /// of cells), three wavenumbers each.
+  /// Parts 2 to 4: the default search on graded cells (mesh size, number
+  /// of cells; the crown's elements 1 / @p crown_refinement of the mesh
+  /// size), three wavenumbers each.
   void
   graded_cells(const bool                                           quick,
                const std::vector<std::pair<double, unsigned int>> &levels,
@@ -114,16 +115,13 @@ main(int argc, char **argv)
   using Levels             = std::vector<std::pair<double, unsigned int>>;
   const Levels part_2_levels = options.quick ? Levels{{0.04, 16}} :
                                                Levels{{0.008, 256}, {0.004, 512}};
-  if (options.part == 4)
+  if (options.part >= 2 && options.part <= 4)
     {
-      graded_cells(options.quick, options.quick ? Levels{{0.04, 16}} : Levels{{0.004, 512}}, 3);
-      return 0;
-    }
-  if (options.part == 2 || options.part == 3)
-    {
+      const Levels finer = options.part == 3 ? Levels{{0.002, 1024}} : Levels{{0.004, 512}};
       graded_cells(options.quick, options.part == 2 ? part_2_levels :
                                   options.quick     ? Levels{{0.04, 16}} :
-                                                      Levels{{0.002, 1024}});
+                                                      finer,
+                   options.part == 4 ? 3 : 2);
       return 0;
     }
   geometry::GeometryParameters geometry;
