@@ -16,7 +16,8 @@
 //   between the rings over every pair of the patch;
 // - for every road and speed, the stress at the patch centre and the total
 //   force: each ring's highest one-third-octave band and the largest level
-//   difference between the rings over the bands (100 Hz to 5 kHz);
+//   difference between the rings in the bands to 2 kHz and in those above
+//   (to 5 kHz);
 // and plots both rings' spectra of every run (converged_ring_<run>.png).
 //
 // The runs write to DIR/default and DIR/converged (DIR from --output) and,
