@@ -91,7 +91,7 @@ namespace
   {
     std::ifstream in(file);
     if (!in)
-      throw InputError("converged_ring: cannot read '" + file.string() + "'");
+      throw InputError("cannot read '" + file.string() + "'");
     std::map<int, double> levels;
     std::string           line;
     while (std::getline(in, line))
@@ -104,7 +104,7 @@ namespace
             fields.push_back(line.substr(start, comma - start));
           fields.push_back(line.substr(start));
           if (fields.size() != 6)
-            throw InputError("converged_ring: '" + file.string() + "': line '" + line +
+            throw InputError("'" + file.string() + "': line '" + line +
                              "' does not have the 6 fields of a band spectrum");
           levels[std::stoi(fields[0])] = std::stod(fields[5]);
         }
@@ -151,21 +151,25 @@ namespace
     const auto         fine   = modal::read_green_hdf5(fine_file.string());
     const unsigned int P      = fine.n_points();
     if (coarse.n_points() != P)
-      throw NumericalError("converged_ring: the rings have " + std::to_string(coarse.n_points()) +
-                           " and " + std::to_string(P) + " contact points");
+      throw InputError("'" + coarse_file.string() + "' has " + std::to_string(coarse.n_points()) +
+                       " contact points, '" + fine_file.string() + "' " + std::to_string(P) +
+                       "; allowed: the same patch on both rings");
     for (unsigned int p = 0; p < P; ++p)
       if (std::abs(coarse.points[p][0] - fine.points[p][0]) > 1e-9 ||
           std::abs(coarse.points[p][1] - fine.points[p][1]) > 1e-9)
-        throw NumericalError("converged_ring: contact point " + std::to_string(p) +
-                             " is not at the same place on both rings");
+        throw InputError("contact point " + std::to_string(p) + " of '" + coarse_file.string() +
+                         "' is not where '" + fine_file.string() +
+                         "' has it; allowed: the same patch on both rings");
     // Every line of the sparser grid must be a line of the other.
     const bool         fine_sparser = fine.df >= coarse.df;
     const double       df           = std::max(fine.df, coarse.df);
     const double       ratio        = df / std::min(fine.df, coarse.df);
     const unsigned int step         = static_cast<unsigned int>(std::lround(ratio));
     if (std::abs(ratio - step) > 1e-9)
-      throw NumericalError("converged_ring: the frequency steps " + std::to_string(coarse.df) +
-                           " and " + std::to_string(fine.df) + " Hz share no grid");
+      throw InputError("the frequency steps of '" + coarse_file.string() + "' and '" +
+                       fine_file.string() + "' (" + std::to_string(coarse.df) + " and " +
+                       std::to_string(fine.df) +
+                       " Hz) share no lines; allowed: one a whole multiple of the other");
     const unsigned int n_lines =
       std::min(fine_sparser ? fine.n_lines : (fine.n_lines - 1) / step + 1,
                fine_sparser ? (coarse.n_lines - 1) / step + 1 : coarse.n_lines);
@@ -211,7 +215,7 @@ namespace
               num += w * std::abs(at(coarse, !fine_sparser, l, i, j) - gf);
               den += w * std::abs(gf);
             }
-          E.push_back(num / den);
+          E.push_back(den > 0. ? num / den : 0.);
         }
     std::sort(E.begin(), E.end());
     std::printf("\nE of Eq. (50) between the rings over the %u lines 0 to %.0f Hz, all %u pairs: "
