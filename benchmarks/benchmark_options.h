@@ -66,7 +66,7 @@ namespace benchmark
   /// Peak double-precision rate of @p threads cores [FLOP/s]: clock x 16
   /// (two 4-wide FMA units), x 32 where the processor has AVX-512 (two
   /// 8-wide units, which the time-blocked update's products use:
-  /// contact/shape_kernels.h), the clock from /proc/cpuinfo.
+  /// convolution/shape_kernels.h), the clock from /proc/cpuinfo.
   inline double
   peak_flops(const unsigned int threads)
   {

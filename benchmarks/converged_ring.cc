@@ -36,7 +36,7 @@
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/plot.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/scenes/scene.h>
 
 #include <algorithm>
@@ -147,8 +147,8 @@ namespace
   void
   compare_green(const std::filesystem::path &coarse_file, const std::filesystem::path &fine_file)
   {
-    const auto         coarse = modal::read_green_hdf5(coarse_file.string());
-    const auto         fine   = modal::read_green_hdf5(fine_file.string());
+    const auto         coarse = base::read_green_hdf5(coarse_file.string());
+    const auto         fine   = base::read_green_hdf5(fine_file.string());
     const unsigned int P      = fine.n_points();
     if (coarse.n_points() != P)
       throw InputError("'" + coarse_file.string() + "' has " + std::to_string(coarse.n_points()) +
@@ -173,7 +173,7 @@ namespace
     const unsigned int n_lines =
       std::min(fine_sparser ? fine.n_lines : (fine.n_lines - 1) / step + 1,
                fine_sparser ? (coarse.n_lines - 1) / step + 1 : coarse.n_lines);
-    const auto at = [&](const modal::FrequencyResponseMatrix &g, const bool sparse,
+    const auto at = [&](const base::FrequencyResponseMatrix &g, const bool sparse,
                         const unsigned int l, const unsigned int i, const unsigned int j) {
       const unsigned int k = sparse ? l : l * step;
       return g.values[(std::size_t(k) * P + i) * P + j];

@@ -4,7 +4,7 @@
 // or modal-recursive) and by the reference, which uses none of them: the
 // full ring, all N cells assembled, integrated by Newmark's average
 // acceleration, with the contact solved at the same points each step
-// (periodic/newmark_ring.h). Same ring, points, road, static start and
+// (reference/newmark_ring.h). Same ring, points, road, static start and
 // contact law: only the structure's response differs.
 //
 // 1. The structure alone (no contact), under a smooth 2 ms force pulse at
@@ -33,7 +33,7 @@
 //   fe_transient [--quick] [--output DIR] [--part N]   (N = 1..5; default: all)
 
 #include "benchmark_options.h"
-#include <greentread/analysis/transient_comparison.h>
+#include <greentread/reference/transient_comparison.h>
 #include <greentread/base/exceptions.h>
 
 #include <algorithm>
@@ -56,7 +56,7 @@ main(int argc, char **argv)
       csv << "study,damping,road,path,modes,dt_us,seconds,difference,stress_difference,"
              "force_band_dB,stress_band_dB,mean_force_N,step_compliance_m_per_N,rms_difference\n";
 
-      analysis::TransientCaseSetup setup;
+      reference::TransientCaseSetup setup;
       setup.geo_file   = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
       setup.patch.load = periodic::PointLoad::tributary_area;
       setup.distance   = quick ? 0.03 : 0.3;
@@ -77,17 +77,17 @@ main(int argc, char **argv)
       for (const bool proportional : {true, false})
         if (wanted(1))
           {
-            analysis::TransientCaseSetup structure = setup;
+            reference::TransientCaseSetup structure = setup;
             structure.proportional_damping         = proportional;
             structure.max_frequency                = 0.;
-            const analysis::TransientCase study(structure);
+            const reference::TransientCase study(structure);
             const char                   *damping = proportional ? "proportional" : "per-layer";
             std::printf("The structure alone, %s damping (%s):\n%s\n", damping,
                         proportional ? "no inflation, loss factor 0.05 everywhere" :
                                        "the tyre's, inflated",
                         study.describe().c_str());
-            std::vector<analysis::PathModel>         models;
-            std::vector<const analysis::PathModel *> pointers;
+            std::vector<reference::PathModel>         models;
+            std::vector<const reference::PathModel *> pointers;
             for (const double f : cutoffs)
               models.push_back(study.mode_model(f));
             for (const auto &m : models)
@@ -125,7 +125,7 @@ main(int argc, char **argv)
           }
 
       // 2. The rolling contact.
-      analysis::TransientCaseSetup rolling = setup;
+      reference::TransientCaseSetup rolling = setup;
       rolling.patch.points_along           = 4;
       rolling.patch.points_across          = 3;
       // The mean of a run's total force [N].
@@ -144,11 +144,11 @@ main(int argc, char **argv)
           // The coarse ring resolves 4 x 3 points on the patch: with 10 x 12, many
           // rectangles share one 4 cm face, their loads are dependent and G(0) is
           // singular (the static contact's LCP refuses it).
-          const analysis::TransientCase study(rolling);
+          const reference::TransientCase study(rolling);
           std::printf("%s\n", study.describe().c_str());
           // The contact's matrix is the response within one step: it needs the
           // modes up to about 1 / dt (65 kHz here), so the cut-off goes higher.
-          std::vector<analysis::PathModel> models;
+          std::vector<reference::PathModel> models;
           models.push_back(study.lsce_model());
           std::vector<double> rolling_cutoffs = cutoffs;
           if (!quick)
@@ -165,8 +165,8 @@ main(int argc, char **argv)
                           "W_cc [m/N]", "rms dF");
               const auto reference = study.reference(road, dt);
               const auto row       = [&](const std::string &path, const unsigned int modes,
-                                   const analysis::TransientRun &run) {
-                const auto d = analysis::compare(run, reference, dt);
+                                   const reference::TransientRun &run) {
+                const auto d = reference::compare(run, reference, dt);
                 std::printf("  %-40s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %10.3f%s\n",
                             path.c_str(), run.seconds, d.force, d.stress, d.force_band,
                             d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
@@ -207,7 +207,7 @@ main(int argc, char **argv)
                   const auto reference = study.reference(road, half);
                   const auto run =
                     study.fast(road, half, model, convolution::Method::modal_recursive);
-                  const auto d = analysis::compare(run, reference, half);
+                  const auto d = reference::compare(run, reference, half);
                   std::printf("  %-10s %11.2e %11.2e %10.2f %10.2f %14.3e %14.3e %10.3f\n",
                               road.c_str(), d.force, d.stress, d.force_band, d.stress_band,
                               reference.step_compliance, run.step_compliance, d.force_rms);
@@ -225,7 +225,7 @@ main(int argc, char **argv)
       for (const unsigned int part : {4u, 5u})
         if (!quick && wanted(part))
           {
-            analysis::TransientCaseSetup massless = rolling;
+            reference::TransientCaseSetup massless = rolling;
             massless.surface_mass_inward          = true;
             if (part == 5)
               {
@@ -233,7 +233,7 @@ main(int argc, char **argv)
                 massless.loss_factor          = 0.1;
               }
             const char                   *damping = part == 4 ? "per-layer" : "proportional 0.1";
-            const analysis::TransientCase moved(massless);
+            const reference::TransientCase moved(massless);
             const double                  dt = moved.road_time_step();
             std::printf("\n%u. The tread surface's mass moved inward (massless contact nodes), "
                         "%s, modal-recursive:\n%s\n",
@@ -242,7 +242,7 @@ main(int argc, char **argv)
                           "the tyre's per-layer damping" :
                           "no inflation, the tread's loss factor 0.1 everywhere (C = aM + bK)",
                         moved.describe().c_str());
-            std::vector<analysis::PathModel> moved_models;
+            std::vector<reference::PathModel> moved_models;
             for (const double f : {8000., 16000., 32000.})
               {
                 moved_models.push_back(moved.mode_model(f));
@@ -268,18 +268,18 @@ main(int argc, char **argv)
                             road.c_str(), "dt [us]", "path", "time [s]", "dF / F_max", "ds / s_max",
                             "dL_F [dB]", "dL_s [dB]", "mean F [N]", "W_cc [m/N]", "dt/2 moves F",
                             "rms dF");
-                std::vector<analysis::TransientRun> previous;
+                std::vector<reference::TransientRun> previous;
                 for (const double fraction : {1., 0.5, 0.25})
                   {
                     const double                        step = fraction * dt;
-                    std::vector<analysis::TransientRun> runs{moved.reference(road, step)};
+                    std::vector<reference::TransientRun> runs{moved.reference(road, step)};
                     for (const auto &m : moved_models)
                       runs.push_back(
                         moved.fast(road, step, m, convolution::Method::modal_recursive));
                     for (std::size_t r = 0; r < runs.size(); ++r)
                       {
                         const auto       &run  = runs[r];
-                        const auto        d    = analysis::compare(run, runs[0], step);
+                        const auto        d    = reference::compare(run, runs[0], step);
                         const std::string name = r == 0 ? "reference" : moved_models[r - 1].name;
                         const std::string moved_by =
                           previous.empty() ?

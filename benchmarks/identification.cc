@@ -37,7 +37,7 @@ main(int argc, char **argv)
 
   // The Green's matrix in memory, as the periodic stage would hand it over
   // (not timed).
-  modal::FrequencyResponseMatrix matrix;
+  base::FrequencyResponseMatrix matrix;
   matrix.df      = 4.;
   matrix.n_lines = 1001;
   matrix.points.assign(green.points.begin(), green.points.begin() + n_points);
@@ -85,7 +85,7 @@ main(int argc, char **argv)
           {
             if (t.lambda.imag() > 0.9 * 2. * M_PI * 4000.)
               continue;
-            convolution::ModalModel alone;
+            modal::ModalModel alone;
             alone.add_pair(t.lambda, t.residue);
             // E of the data against 'data minus this mode' is its weight.
             const auto rest   = modal::sample(alone, 4., 1001);

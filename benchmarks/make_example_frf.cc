@@ -22,7 +22,7 @@ main(int argc, char **argv)
   record.header = "synthetic tyre-like Green's function g_00 (benchmarks/synthetic_green.h): " +
                   std::to_string(green.frequency.size()) +
                   " modes from 80 Hz, 1-3% damping; 1001 lines, df = 4 Hz";
-  greentread::modal::write_frf_csv(file, green.frf(0, 0, 4., 1001), record);
+  greentread::base::write_frf_csv(file, green.frf(0, 0, 4., 1001), record);
   std::cout << "wrote " << file << "\n";
   return 0;
 }

@@ -19,10 +19,10 @@ using namespace greentread;
 
 namespace
 {
-  convolution::ModalModel
+  modal::ModalModel
   synthetic_model(const unsigned int n_modes)
   {
-    convolution::ModalModel model;
+    modal::ModalModel model;
     for (unsigned int k = 0; k < n_modes; ++k)
       {
         const double f  = 50. * std::pow(80., (k + 0.5) / n_modes);

@@ -22,11 +22,11 @@
 #include "benchmark_options.h"
 
 #include <greentread/base/exceptions.h>
-#include <greentread/contact/patch_convolution.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/convolution/patch_convolution.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
 #include <cmath>
@@ -40,7 +40,7 @@ namespace
 {
   /// The coarse tyre's direct Green's functions (lines to 2 kHz every 50 Hz)
   /// and its modes up to @p cutoff_hz.
-  std::pair<modal::FrequencyResponseMatrix, modal::ModeSynthesis>
+  std::pair<base::FrequencyResponseMatrix, synthesis::ModeSynthesis>
   coarse_tyre(const double cutoff_hz)
   {
     geometry::GeometryParameters geometry;
@@ -55,7 +55,7 @@ namespace
     request.width         = 0.05;
     const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
                                       fe::InflationParameters(), request);
-    modal::FrequencyResponseMatrix green;
+    base::FrequencyResponseMatrix green;
     green.df      = 50.;
     green.n_lines = 41;
     for (const auto &p : tyre.patch.points)
@@ -70,11 +70,11 @@ namespace
           for (Eigen::Index j = 0; j < g.cols(); ++j)
             green.values.push_back(g(i, j));
       }
-    periodic::ModeSearch search;
+    synthesis::ModeSearch search;
     search.cutoff    = 2. * M_PI * cutoff_hz;
-    const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+    const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                             MPI_COMM_SELF, false);
-    return {green, modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green)};
+    return {green, synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green)};
   }
 
   /// Milliseconds per step of the rank-one update of @p model.
@@ -82,10 +82,10 @@ namespace
   update_ms(const modal::PatchModel &model, const unsigned int threads)
   {
     const double       dt = 15.36e-6;
-    auto               c  = contact::make_modal_patch_convolution(model, dt, threads);
+    auto               c  = convolution::make_modal_patch_convolution(model, dt, threads);
     const unsigned int P = model.n_points(), steps = 200;
     Eigen::VectorXd    u(P), v(P);
-    contact::PatchLoad load(P);
+    convolution::PatchLoad load(P);
     load.component[1].setConstant(1.);
     load.component[2].setConstant(1.);
     const auto start = std::chrono::steady_clock::now();
@@ -108,8 +108,8 @@ main(int argc, char **argv)
     {
       const auto         options = benchmark::parse(argc, argv, "mode_cutoff");
       const unsigned int threads = std::min(2u, std::max(1u, std::thread::hardware_concurrency()));
-      modal::FrequencyResponseMatrix green;
-      modal::ModeSynthesis           all;
+      base::FrequencyResponseMatrix green;
+      synthesis::ModeSynthesis           all;
       std::vector<double>            cutoffs;
       if (options.model.empty())
         {
@@ -122,8 +122,8 @@ main(int argc, char **argv)
         }
       else
         {
-          all   = modal::read_modal_model(options.model.string());
-          green = modal::read_green_hdf5((options.model.parent_path() / "green_functions.h5").string());
+          all   = synthesis::read_modal_model(options.model.string());
+          green = base::read_green_hdf5((options.model.parent_path() / "green_functions.h5").string());
           const double f_max = green.df * (green.n_lines - 1), top = all.frequency_hz.maxCoeff();
           for (const double r : {1.125, 1.25, 1.5, 1.75, 2., 2.5, 3.})
             if (r * f_max < 0.999 * top)
@@ -157,14 +157,14 @@ main(int argc, char **argv)
               if (coupled)
                 imag.row(r) = all.shapes_imag.row(keep[r]);
             }
-          const auto synthesis = modal::synthesise(omega, xi, shapes, imag, green);
-          const auto errors    = modal::compare(synthesis, green);
+          const auto synthesis = synthesis::synthesise(omega, xi, shapes, imag, green);
+          const auto errors    = synthesis::compare(synthesis, green);
           double     driving   = 0.;
           for (unsigned int i = 0; i < P; ++i)
             driving = std::max(driving, errors.pair_error[i * P + i]);
           // The update reads the shapes once per step (ModePatchConvolution).
           const double mb = (coupled ? 16. : 8.) * m * P / 1e6;
-          const double ms = update_ms(modal::to_patch_model(synthesis, Eigen::MatrixXd(), 0.), threads);
+          const double ms = update_ms(synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 0.), threads);
           std::cout << format_printf("%14.0f", cutoff) << format_printf("%8.0f", m)
                     << format_printf("%10.3f%%", 100. * errors.median)
                     << format_printf("%8.3f%%", 100. * errors.p90)

@@ -1,7 +1,7 @@
 // Where the modal stage's time goes, in four parts (--part N; 0: parts 1
 // and 2).
 //
-// 1. The mode search (periodic::bloch_modes) of single wavenumbers of the
+// 1. The mode search (synthesis::bloch_modes) of single wavenumbers of the
 //    default tyre's cell (8 mm mesh, 256 cells, inflated, modes to 8 kHz),
 //    on one thread, with one to four slices of [0, cut-off^2]. For each:
 //    the time of the search and of the damping's coupling
@@ -26,9 +26,9 @@
 #include "benchmark_options.h"
 
 #include <greentread/base/blas_kernels.h>
-#include <greentread/periodic/bloch_modes.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
 #include <cmath>
@@ -44,19 +44,19 @@ namespace
   /// search and of the damping's coupling (its result is not kept).
   struct TimedSearch
   {
-    periodic::BlochModes modes;
+    synthesis::BlochModes modes;
     double               search = 0., coupling = 0.;
   };
 
   TimedSearch
   timed_search(const periodic::InflatedTyre &tyre, const unsigned int k,
-               const periodic::ModeSearch &search)
+               const synthesis::ModeSearch &search)
   {
     TimedSearch timed;
     const auto  t0 = std::chrono::steady_clock::now();
-    timed.modes    = periodic::bloch_modes(tyre.periodic_cell, k, search);
+    timed.modes    = synthesis::bloch_modes(tyre.periodic_cell, k, search);
     const auto t1  = std::chrono::steady_clock::now();
-    periodic::coupled_point_modes(timed.modes, tyre.periodic_cell, tyre.patch, true);
+    synthesis::coupled_point_modes(timed.modes, tyre.periodic_cell, tyre.patch, true);
     const auto t2  = std::chrono::steady_clock::now();
     timed.search   = std::chrono::duration<double>(t1 - t0).count();
     timed.coupling = std::chrono::duration<double>(t2 - t1).count();
@@ -90,7 +90,7 @@ namespace
         const std::vector<unsigned int> ks = {0, n_cells / 8, n_cells / 2};
         for (const unsigned int k : ks)
           {
-            periodic::ModeSearch search;
+            synthesis::ModeSearch search;
             search.cutoff     = 2. * M_PI * (quick ? 3000. : 8000.);
             const auto timed  = timed_search(tyre, k, search);
             total += timed.search + timed.coupling;
@@ -148,7 +148,7 @@ main(int argc, char **argv)
       double total = 0.;
       for (std::size_t i = 0; i < ks.size(); ++i)
         {
-          periodic::ModeSearch search;
+          synthesis::ModeSearch search;
           search.cutoff     = 2. * M_PI * (options.quick ? 3000. : 8000.);
           search.slices     = slices;
           const auto timed  = timed_search(tyre, ks[i], search);

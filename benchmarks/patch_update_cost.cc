@@ -10,7 +10,7 @@
 // load the last step's end. The rank-one update runs step by step (one pass
 // over the shapes per step, the reference) and, where the update chooses
 // them (at least 128 shape rows per point), in time blocks of 4, 8 and 16
-// steps (one pass per block, contact/mode_patch_convolution.h); the set-up
+// steps (one pass per block, convolution/mode_patch_convolution.h); the set-up
 // (the blocks' lag kernels, formed on the first step) is printed apart from
 // the time per step.
 //
@@ -27,9 +27,9 @@
 #include "benchmark_options.h"
 
 #include <greentread/base/exceptions.h>
-#include <greentread/contact/mode_patch_convolution.h>
-#include <greentread/contact/patch_convolution.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/convolution/mode_patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <chrono>
 #include <cmath>
@@ -44,7 +44,7 @@ namespace
   modal::PatchModel
   synthetic_modes(const unsigned int nx, const unsigned int ny, const unsigned int n_modes)
   {
-    modal::ModeSynthesis s;
+    synthesis::ModeSynthesis s;
     const unsigned int   P = nx * ny;
     for (unsigned int i = 0; i < nx; ++i)
       for (unsigned int j = 0; j < ny; ++j)
@@ -61,7 +61,7 @@ namespace
                            std::cos(b * M_PI * s.points[p][1] / 0.08 + 0.3 * k);
       }
     s.instantaneous = 1e-7 * Eigen::MatrixXd::Identity(P, P);
-    return modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+    return synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   }
 
 
@@ -73,11 +73,11 @@ namespace
 
   /// @p steps steps of history + advance under a load that varies smoothly.
   Timing
-  time_update(contact::PatchConvolution &c, const unsigned int steps, const bool keep)
+  time_update(convolution::PatchConvolution &c, const unsigned int steps, const bool keep)
   {
     const unsigned int P = c.n_points();
     Eigen::VectorXd    u(P), v(P);
-    contact::PatchLoad load(P);
+    convolution::PatchLoad load(P);
     Timing             t;
     auto               start = std::chrono::steady_clock::now();
     for (unsigned int n = 0; n < steps; ++n)
@@ -147,8 +147,8 @@ main(int argc, char **argv)
         cases.push_back({"synthetic", synthetic_modes(nx, ny, n_modes), nx * ny == 120});
       if (!options.model.empty())
         {
-          const auto synthesis = modal::read_modal_model(options.model.string());
-          cases.push_back({"tyre", modal::to_patch_model(synthesis, Eigen::MatrixXd(), 4000.), false});
+          const auto synthesis = synthesis::read_modal_model(options.model.string());
+          cases.push_back({"tyre", synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 4000.), false});
           std::cout << "  (tyre: " << options.model.string() << ", " << synthesis.n_modes()
                     << " modes)\n";
         }
@@ -157,11 +157,11 @@ main(int argc, char **argv)
         {
           const unsigned int P    = c.model.n_points();
           const double       rows = double(c.model.shapes.rows()) * (c.model.shapes_imag.size() ? 2 : 1);
-          const auto   make     = [&](const contact::ShapePrecision precision,
+          const auto   make     = [&](const convolution::ShapePrecision precision,
                                  const unsigned int           block) {
-            return contact::make_rank_one_patch_convolution(c.model, dt, threads, precision, block);
+            return convolution::make_rank_one_patch_convolution(c.model, dt, threads, precision, block);
           };
-          using contact::ShapePrecision;
+          using convolution::ShapePrecision;
           // The reference: double shapes, step by step.
           auto         reference_conv = make(ShapePrecision::double_precision, 1);
           const Timing reference      = time_update(*reference_conv, steps, true);
@@ -221,7 +221,7 @@ main(int argc, char **argv)
               }
           if (!c.full)
             continue;
-          auto dense = contact::make_modal_patch_convolution(modal::full_form(c.model), dt, threads);
+          auto dense = convolution::make_modal_patch_convolution(synthesis::full_form(c.model), dt, threads);
           const Timing full = time_update(*dense, steps, true);
           const double diff = difference(full, reference);
           row("full", 1, full, 2. * 2. * 8. * rows * double(P) * P,

@@ -115,7 +115,7 @@ main(int argc, char **argv)
       const auto eq     = contact::start_contact(model.static_compliance(), tread, heights, setup);
       const double area = 6.684e-3 * 7.65e-3;
 
-      const auto run = [&](contact::PatchConvolution &conv, const unsigned int n_steps) {
+      const auto run = [&](convolution::PatchConvolution &conv, const unsigned int n_steps) {
         Run        r;
         const auto observe = [&](const contact::RollingStep &s) {
           r.centre.push_back(s.force[centre] / area);
@@ -138,7 +138,7 @@ main(int argc, char **argv)
       // 1. The timing target: 2 m with the modal recursion.
       const double       long_distance = options.quick ? 0.1 : 2.;
       const unsigned int long_steps    = static_cast<unsigned int>(long_distance / (V * dt));
-      auto               modal_long    = contact::make_modal_patch_convolution(model, dt, threads);
+      auto               modal_long    = convolution::make_modal_patch_convolution(model, dt, threads);
       const Run          target        = run(*modal_long, long_steps);
       const double       flops_per_step =
         8. * n_p * double(n_p) * model.n_terms() + 8. * n_p * double(model.n_terms());
@@ -158,9 +158,9 @@ main(int argc, char **argv)
       // for the bands from 250 Hz.
       const double       short_distance = options.quick ? 0.05 : 0.5;
       const unsigned int short_steps    = static_cast<unsigned int>(short_distance / (V * dt));
-      auto               direct = contact::make_direct_patch_convolution(model, dt, short_steps + 1);
+      auto               direct = convolution::make_direct_patch_convolution(model, dt, short_steps + 1);
       const Run          reference = run(*direct, short_steps);
-      auto               modal     = contact::make_modal_patch_convolution(model, dt, threads);
+      auto               modal     = convolution::make_modal_patch_convolution(model, dt, threads);
       const Run          fast      = run(*modal, short_steps);
       double             diff = 0., peak = 0.;
       for (unsigned int n = 0; n < short_steps; ++n)

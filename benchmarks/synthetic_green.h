@@ -11,8 +11,8 @@
 // and g_ij(w) = sum_k A_k phi_k(i) phi_k(j) / (w_k^2 - w^2 + 2j xi_k w_k w):
 // reciprocal (g_ij = g_ji) and passive (A_k > 0) like a real tyre's.
 
-#include <greentread/convolution/modal_model.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/modal/modal_model.h>
+#include <greentread/base/frequency_response.h>
 
 #include <cmath>
 #include <random>
@@ -51,10 +51,10 @@ namespace benchmark
     }
 
     /// The exact modal model of g_ij.
-    greentread::convolution::ModalModel
+    greentread::modal::ModalModel
     model(unsigned int i, unsigned int j) const
     {
-      greentread::convolution::ModalModel m;
+      greentread::modal::ModalModel m;
       for (std::size_t k = 0; k < frequency.size(); ++k)
         {
           const double w = 2. * M_PI * frequency[k], xi = damping[k];
@@ -66,7 +66,7 @@ namespace benchmark
     }
 
     /// The FRF g_ij on lines 0, df, ..., (n_lines - 1) df.
-    greentread::modal::FrequencyResponse
+    greentread::base::FrequencyResponse
     frf(unsigned int i, unsigned int j, double df, unsigned int n_lines) const
     {
       return greentread::modal::sample(model(i, j), df, n_lines);

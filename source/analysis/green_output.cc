@@ -30,7 +30,7 @@ namespace greentread
 
     GreenPairFiles
     write_green_pairs(const std::filesystem::path                              &directory,
-                      const modal::FrequencyResponseMatrix                     &green,
+                      const base::FrequencyResponseMatrix                     &green,
                       const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                       const std::string                                        &title,
                       const base::ParameterRecord                              &record)
@@ -42,7 +42,7 @@ namespace greentread
         {
           const auto [i, j]      = pairs[n];
           const std::string name = "green_" + std::to_string(i) + "_" + std::to_string(j) + ".csv";
-          modal::write_frf_csv(directory / name, green.get(i, j), record);
+          base::write_frf_csv(directory / name, green.get(i, j), record);
           files.csv.push_back(name);
           const std::string data  = base::gnuplot_quote(directory / name);
           const std::string style = "with lines lw 2 lc rgb '" + std::string(colours[n % 6]) +
@@ -67,7 +67,7 @@ namespace greentread
 
 
     std::string
-    summarise_pairs(const modal::FrequencyResponseMatrix                     &green,
+    summarise_pairs(const base::FrequencyResponseMatrix                     &green,
                     const std::vector<std::pair<unsigned int, unsigned int>> &pairs)
     {
       // The driving point: resonance and passivity at a glance.

@@ -134,7 +134,7 @@ namespace greentread
 
     bool
     write_worst_fit(const std::filesystem::path          &directory,
-                    const modal::FrequencyResponse        &frf,
+                    const base::FrequencyResponse        &frf,
                     const modal::Identification           &fit,
                     std::pair<unsigned int, unsigned int> pair,
                     const base::ParameterRecord          &record)

@@ -11,7 +11,7 @@ namespace greentread
   {
     void
     write_dispersion(const std::filesystem::path &directory,
-                     const modal::Dispersion     &dispersion,
+                     const synthesis::Dispersion     &dispersion,
                      const double                 cutoff_hz,
                      const base::ParameterRecord &record)
     {
@@ -46,8 +46,8 @@ namespace greentread
 
     void
     report_synthesis(const std::filesystem::path  &directory,
-                     const modal::ModeSynthesis   &synthesis,
-                     const modal::SynthesisErrors &errors,
+                     const synthesis::ModeSynthesis   &synthesis,
+                     const synthesis::SynthesisErrors &errors,
                      const base::ParameterRecord  &record)
     {
       const unsigned int n_p = synthesis.shapes.cols();

@@ -11,7 +11,7 @@ namespace greentread
   {
     void
     write_modal_parameters(const std::filesystem::path &file_name,
-                           const convolution::ModalModel &model, const base::ParameterRecord &record)
+                           const modal::ModalModel &model, const base::ParameterRecord &record)
     {
       base::AtomicFile file(file_name);
       file.stream().precision(16);

@@ -138,7 +138,7 @@ namespace greentread
       // returns the variation within the coarse cells: (I - P) L_f (I - P),
       // P the mean over each cell.
       const double margin = 4. * layer.thickness;
-      layer_product       = std::make_shared<const LatticeConvolution>(
+      layer_product       = std::make_shared<const convolution::LatticeConvolution>(
         layer_lattice_kernel(layer, dx, dy, nx, ny, margin));
       if (matrix_free)
         return;
@@ -248,16 +248,16 @@ namespace greentread
     namespace
     {
       /// The convolution of the contact points of a grid with s > 1.
-      class GridConvolution : public PatchConvolution
+      class GridConvolution : public convolution::PatchConvolution
       {
       public:
-        GridConvolution(std::unique_ptr<PatchConvolution> coarse_, const ContactGrid &grid_)
-          : PatchConvolution(grid_.n_points(), coarse_->time_step())
+        GridConvolution(std::unique_ptr<convolution::PatchConvolution> coarse_, const ContactGrid &grid_)
+          : convolution::PatchConvolution(grid_.n_points(), coarse_->time_step())
           , coarse(std::move(coarse_))
           , grid(grid_)
           , coarse_load(coarse->n_points())
         {
-          const PatchInfluence &c = coarse->influence();
+          const convolution::PatchInfluence &c = coarse->influence();
           psi.instantaneous       = true;
           if (grid.matrix_free)
             {
@@ -313,7 +313,7 @@ namespace greentread
         }
 
         void
-        advance(const PatchLoad &load) override
+        advance(const convolution::PatchLoad &load) override
         {
           for (unsigned int g = 0; g < 4; ++g)
             coarse_load.component[g] = grid.gather(load.component[g]);
@@ -334,17 +334,17 @@ namespace greentread
         }
 
       private:
-        std::unique_ptr<PatchConvolution> coarse;
+        std::unique_ptr<convolution::PatchConvolution> coarse;
         const ContactGrid                &grid;
-        PatchLoad                         coarse_load;
+        convolution::PatchLoad                         coarse_load;
         Eigen::VectorXd                   uc, vc;
       };
     } // namespace
 
 
 
-    std::unique_ptr<PatchConvolution>
-    make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid)
+    std::unique_ptr<convolution::PatchConvolution>
+    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse, const ContactGrid &grid)
     {
       if (grid.subdivisions == 1 && !grid.matrix_free)
         return coarse;

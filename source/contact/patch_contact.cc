@@ -13,7 +13,7 @@ namespace greentread
     namespace
     {
       convolution::Influence
-      point_influence(const PatchInfluence &psi, const unsigned int j)
+      point_influence(const convolution::PatchInfluence &psi, const unsigned int j)
       {
         convolution::Influence p;
         for (unsigned int g = 0; g < 4; ++g)
@@ -22,16 +22,6 @@ namespace greentread
             p.v[g] = psi.v[g](j, j);
           }
         return p;
-      }
-
-      /// y += M x from the columns where x is not zero (the loads of the
-      /// points in contact: a few percent of a fine grid's).
-      void
-      add_product(const Eigen::MatrixXd &M, const Eigen::VectorXd &x, Eigen::VectorXd &y)
-      {
-        for (Eigen::Index j = 0; j < x.size(); ++j)
-          if (x[j] != 0.)
-            y += x[j] * M.col(j);
       }
 
       std::array<double, 4>
@@ -43,19 +33,7 @@ namespace greentread
 
 
 
-    void
-    add_influence(const PatchInfluence &psi, const unsigned int g, const Eigen::VectorXd &x,
-                  Eigen::VectorXd &y)
-    {
-      if (psi.add_u)
-        psi.add_u(g, x, y);
-      else
-        add_product(psi.u[g], x, y);
-    }
-
-
-
-    PatchKinematicContact::PatchKinematicContact(const PatchInfluence &psi_,
+    PatchKinematicContact::PatchKinematicContact(const convolution::PatchInfluence &psi_,
                                                  const unsigned int    n)
       : psi(psi_)
       , matrix_free(static_cast<bool>(psi_.add_u))
@@ -94,7 +72,7 @@ namespace greentread
     PatchStepReport
     PatchKinematicContact::solve_continuous(const Eigen::VectorXd &uh,
                                             const Eigen::VectorXd &d,
-                                            PatchLoad             &load)
+                                            convolution::PatchLoad             &load)
     {
       // The load is linear over the step from the last step's end value a
       // (known) to b (unknown): u(t_{n+1}) = u^h + Psi_start a + Psi_end b.
@@ -107,7 +85,7 @@ namespace greentread
       if (previous_end.size() != n)
         previous_end = Eigen::VectorXd::Zero(n);
       Eigen::VectorXd q = uh - d;
-      add_influence(psi, 1, previous_end, q);
+      convolution::add_influence(psi, 1, previous_end, q);
       if (!q.allFinite())
         throw NumericalError("patch contact: the force of the last step is not finite (largest "
                              "|q| " + format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
@@ -159,7 +137,7 @@ namespace greentread
     PatchStepReport
     PatchKinematicContact::solve(const Eigen::VectorXd &uh, const Eigen::VectorXd &vh,
                                  const Eigen::VectorXd &d, const Eigen::VectorXd &dd,
-                                 PatchLoad &load)
+                                 convolution::PatchLoad &load)
     {
       const unsigned int n = uh.size();
       if (psi.instantaneous)
@@ -286,7 +264,7 @@ namespace greentread
 
 
     RollingSummary
-    roll(PatchConvolution                                                              &conv,
+    roll(convolution::PatchConvolution                                                              &conv,
          const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand,
          const unsigned int                                                       n_steps,
          const Eigen::VectorXd                                                   &start_force,
@@ -303,7 +281,7 @@ namespace greentread
           conv.preload(start_force);
           solver.set_force(start_force);
         }
-      PatchLoad       load(n);
+      convolution::PatchLoad       load(n);
       Eigen::VectorXd uh(n), vh(n), dd(n);
       RollingSummary  summary;
       RollingStep     s;
@@ -328,7 +306,7 @@ namespace greentread
           conv.advance(load);
           s.u = uh;
           for (unsigned int g = 0; g < 4; ++g)
-            add_influence(conv.influence(), g, load.component[g], s.u);
+            convolution::add_influence(conv.influence(), g, load.component[g], s.u);
           s.force = load.impulse(dt) / dt;
           if (!s.force.allFinite() || !s.u.allFinite())
             throw NumericalError("rolling contact: the contact forces or displacements are not "

@@ -54,11 +54,11 @@ namespace greentread
 
 
 
-    std::unique_ptr<PatchConvolution>
+    std::unique_ptr<convolution::PatchConvolution>
     make_patch_convolution(const convolution::Method method, const modal::PatchModel &model,
                            const double dt, const unsigned int n_steps,
                            const unsigned int direct_kernel, const unsigned int threads,
-                           const ShapePrecision precision)
+                           const convolution::ShapePrecision precision)
     {
       if (method == convolution::Method::modal_recursive)
         return make_modal_patch_convolution(model, dt, threads, precision);
@@ -75,7 +75,7 @@ namespace greentread
                          "'Rolling/Direct kernel length' (at most " +
                          std::to_string(static_cast<unsigned int>(8e9 / (64. * n_p * n_p))) +
                          " steps)");
-      return make_direct_patch_convolution(model, dt, n_kernel);
+      return convolution::make_direct_patch_convolution(model, dt, n_kernel);
     }
 
 
@@ -94,7 +94,7 @@ namespace greentread
 
 
     RollingSummary
-    roll_patch(PatchConvolution &convolution, const Eigen::VectorXd &tread,
+    roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
                const PatchRoadHeights &road, const StaticContact &start,
                const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
     {

@@ -15,13 +15,13 @@ namespace greentread
       {
         prm.declare_entry("Speeds", "50, 70, 90", dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
                           "Rolling speeds V0 in km/h, a comma-separated list (1 to 400).");
-        prm.declare_entry("Distance", "2", RangePattern::closed(0.01, 20., "m"),
+        prm.declare_entry("Distance", "2", base::RangePattern::closed(0.01, 20., "m"),
                           "Distance rolled in each run (the paper: 2 m).");
-        prm.declare_entry("Static load", "600", RangePattern::closed(0., 1e5, "N"),
+        prm.declare_entry("Static load", "600", base::RangePattern::closed(0., 1e5, "N"),
                           "Static load carried by the patch; the indentation that carries it is "
                           "found on the road where the run starts and then held (the rim does "
                           "not move). 0: use 'Indentation' instead.");
-        prm.declare_entry("Indentation", "0", RangePattern::closed(-0.05, 0.05, "m"),
+        prm.declare_entry("Indentation", "0", base::RangePattern::closed(-0.05, 0.05, "m"),
                           "Used when 'Static load' = 0: how far the road is pushed into the "
                           "tread, measured from the lowest tread point.");
         prm.declare_entry("Start from static equilibrium", "true", dealii::Patterns::Bool(),
@@ -32,7 +32,7 @@ namespace greentread
                           "Steps kept by 'Convolution/Method' = direct (0: the whole run).");
         prm.declare_entry("Frames", "40", dealii::Patterns::Integer(1, 10000),
                           "Contact-stress maps written per run (VTU time series).");
-        prm.declare_entry("Stress reference", "100", RangePattern::positive("Pa"),
+        prm.declare_entry("Stress reference", "100", base::RangePattern::positive("Pa"),
                           "sigma0 of L_f = 20 log10(|sigma| / sigma0), Eq. (52): the paper "
                           "gives 10^2 (printed N/m; a stress is in N/m^2 = Pa).");
       }
@@ -66,8 +66,8 @@ namespace greentread
       convolution = convolution::parse_method(
         prm.get("Method"), {convolution::Method::direct, convolution::Method::modal_recursive},
         "in scene tire-road-contact (the paper's modal form overflows over a rolling run)");
-      shape_precision = prm.get("Shape precision") == "single" ? ShapePrecision::single_precision :
-                                                                 ShapePrecision::double_precision;
+      shape_precision = prm.get("Shape precision") == "single" ? convolution::ShapePrecision::single_precision :
+                                                                 convolution::ShapePrecision::double_precision;
       prm.leave_subsection();
     }
   } // namespace contact

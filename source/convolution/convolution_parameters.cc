@@ -91,7 +91,7 @@ namespace greentread
 
     std::unique_ptr<Convolution>
     create(const ConvolutionParameters &parameters,
-           const ModalModel            &model,
+           const modal::ModalModel            &model,
            const double                 dt,
            const unsigned int           n_steps,
            const ImpulseResponse       *exact)

@@ -10,7 +10,7 @@ namespace greentread
 {
   namespace convolution
   {
-    ModalPaperConvolution::ModalPaperConvolution(const ModalModel &model, const double dt_)
+    ModalPaperConvolution::ModalPaperConvolution(const modal::ModalModel &model, const double dt_)
       : Convolution(dt_)
       , g0(model.impulse_response(0.))
     {
@@ -27,7 +27,7 @@ namespace greentread
           m.lambda      = term.lambda;
           m.residue     = term.residue;
           m.residue_t   = term.residue_t;
-          m.scale       = term.kind == ModalTerm::Kind::complex_pair ? 2. : 1.;
+          m.scale       = term.kind == modal::ModalTerm::Kind::complex_pair ? 2. : 1.;
           m.step_decay  = std::exp(term.lambda * dt);
           m.step_growth = std::exp(-term.lambda * dt);
           for (unsigned int g = 0; g < 2; ++g)
@@ -60,7 +60,7 @@ namespace greentread
       for (const auto &m : modes)
         {
           const std::complex<double> decay = m.decay * m.step_decay; // e^{lambda t}
-          if (m.kind == ModalTerm::Kind::double_pole)
+          if (m.kind == modal::ModalTerm::Kind::double_pole)
             {
               const std::complex<double> core =
                 (m.residue + m.residue_t * t) * m.acc0 - m.residue_t * m.acc1;

@@ -8,7 +8,7 @@ namespace greentread
 {
   namespace convolution
   {
-    ModalRecursiveConvolution::ModalRecursiveConvolution(const ModalModel &model,
+    ModalRecursiveConvolution::ModalRecursiveConvolution(const modal::ModalModel &model,
                                                          const double      dt_)
       : Convolution(dt_)
       , n_modes(model.n_modes())
@@ -18,9 +18,9 @@ namespace greentread
                              "(Re(lambda) = " + format_short(model.max_real_part()) +
                              " > 0); only stable poles can be convolved");
 
-      std::vector<const ModalTerm *> simple;
+      std::vector<const modal::ModalTerm *> simple;
       for (const auto &term : model.terms())
-        if (term.kind == ModalTerm::Kind::double_pole)
+        if (term.kind == modal::ModalTerm::Kind::double_pole)
           {
             const double l   = term.lambda.real();
             const auto   psi = exponential_moments(l * dt);
@@ -47,14 +47,14 @@ namespace greentread
       double g0 = 0.;
       for (Eigen::Index k = 0; k < m; ++k)
         {
-          const ModalTerm           &term  = *simple[k];
+          const modal::ModalTerm           &term  = *simple[k];
           const std::complex<double> z     = term.lambda * dt;
           const auto                 psi   = exponential_moments(z);
           const std::complex<double> alpha = std::exp(z);
           const std::complex<double> ba    = dt * psi[1];
           const std::complex<double> bb    = dt * (psi[0] - psi[1]);
           const double               scale =
-            term.kind == ModalTerm::Kind::complex_pair ? 2. : 1.;
+            term.kind == modal::ModalTerm::Kind::complex_pair ? 2. : 1.;
           const std::complex<double> cu = scale * term.residue;
           const std::complex<double> cv = scale * term.residue * term.lambda;
           alpha_re[k]                   = alpha.real();

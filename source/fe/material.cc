@@ -121,20 +121,20 @@ namespace greentread
     {
       using base::RangePattern;
       const auto density = [&](const char *value) {
-        prm.declare_entry("Density", value, RangePattern::positive("kg/m^3"),
+        prm.declare_entry("Density", value, base::RangePattern::positive("kg/m^3"),
                           "Mass density rho. Unit: kg/m^3.");
       };
       const auto loss = [&](const char *value, const char *what) {
-        prm.declare_entry("Loss factor", value, RangePattern::closed(0., 2., ""),
+        prm.declare_entry("Loss factor", value, base::RangePattern::closed(0., 2., ""),
                           std::string("Loss factor eta, turned into Rayleigh damping (subsection "
                                       "Damping). Not given by the paper; ") +
                             what + " Unit: 1.");
       };
       const auto isotropic = [&](const char *E, const char *nu, const char *what) {
-        prm.declare_entry("Young's modulus", E, RangePattern::positive("Pa"),
+        prm.declare_entry("Young's modulus", E, base::RangePattern::positive("Pa"),
                           std::string("Young's modulus E. Unit: Pa. Table A.4: ") + what + ".");
-        prm.declare_entry("Poisson's ratio", nu, RangePattern({-1., RangePattern::Bound::exclusive,
-                                                               0.5, RangePattern::Bound::exclusive,
+        prm.declare_entry("Poisson's ratio", nu, base::RangePattern({-1., base::RangePattern::Bound::exclusive,
+                                                               0.5, base::RangePattern::Bound::exclusive,
                                                                ""}),
                           "Poisson's ratio nu, -1 < nu < 0.5. Unit: 1.");
       };
@@ -161,24 +161,24 @@ namespace greentread
 
         prm.enter_subsection("Belt");
         density("2014");
-        prm.declare_entry("Radial modulus", "663e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Radial modulus", "663e6", base::RangePattern::positive("Pa"),
                           "E_r, the paper's E_r. Unit: Pa. Table A.4: 663 MPa.");
-        prm.declare_entry("Circumferential modulus", "624e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Circumferential modulus", "624e6", base::RangePattern::positive("Pa"),
                           "E_theta, the paper's E_x (x: the rolling direction). Unit: Pa. "
                           "Table A.4: 624 MPa.");
-        prm.declare_entry("Axial modulus", "663e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Axial modulus", "663e6", base::RangePattern::positive("Pa"),
                           "E_z (across the tread). Not in Table A.4; completed as E_r. Unit: Pa.");
-        prm.declare_entry("Poisson's ratio r-theta", "0.4", RangePattern::closed(-1., 1., ""),
+        prm.declare_entry("Poisson's ratio r-theta", "0.4", base::RangePattern::closed(-1., 1., ""),
                           "nu_r,theta. Not in Table A.4; completed as nu_ry. Unit: 1.");
-        prm.declare_entry("Poisson's ratio r-z", "0.4", RangePattern::closed(-1., 1., ""),
+        prm.declare_entry("Poisson's ratio r-z", "0.4", base::RangePattern::closed(-1., 1., ""),
                           "nu_r,z, the paper's nu_ry (y: across the tread). Unit: 1. Table A.4: 0.4.");
-        prm.declare_entry("Poisson's ratio theta-z", "0.4", RangePattern::closed(-1., 1., ""),
+        prm.declare_entry("Poisson's ratio theta-z", "0.4", base::RangePattern::closed(-1., 1., ""),
                           "nu_theta,z. Not in Table A.4; completed as nu_ry. Unit: 1.");
-        prm.declare_entry("Shear modulus r-theta", "330e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Shear modulus r-theta", "330e6", base::RangePattern::positive("Pa"),
                           "G_r,theta. Not in Table A.4; completed as G_ry. Unit: Pa.");
-        prm.declare_entry("Shear modulus r-z", "330e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Shear modulus r-z", "330e6", base::RangePattern::positive("Pa"),
                           "G_r,z, the paper's G_ry. Unit: Pa. Table A.4: 330 MPa.");
-        prm.declare_entry("Shear modulus theta-z", "330e6", RangePattern::positive("Pa"),
+        prm.declare_entry("Shear modulus theta-z", "330e6", base::RangePattern::positive("Pa"),
                           "G_theta,z. Not in Table A.4; completed as G_ry. Unit: Pa.");
         loss("0.05", "steel cords lower it below the rubber's.");
         prm.leave_subsection();
@@ -196,10 +196,10 @@ namespace greentread
         prm.leave_subsection();
 
         prm.enter_subsection("Damping");
-        prm.declare_entry("First frequency", "200", RangePattern::positive("Hz"),
+        prm.declare_entry("First frequency", "200", base::RangePattern::positive("Hz"),
                           "Rayleigh damping C = alpha M + beta K of each material gives the "
                           "damping ratio eta/2 at this frequency and the next. Unit: Hz.");
-        prm.declare_entry("Second frequency", "2000", RangePattern::positive("Hz"),
+        prm.declare_entry("Second frequency", "2000", base::RangePattern::positive("Hz"),
                           "See 'First frequency'; must be larger. Unit: Hz.");
         prm.leave_subsection();
       }

@@ -21,7 +21,7 @@ namespace greentread
                           "directory). Its DefineConstant parameters 'Parameters/<name>' are "
                           "set from this subsection; a new design is a new file.");
         const auto length = [&](const char *name, const char *value, const char *doc) {
-          prm.declare_entry(name, value, RangePattern::positive("m"), std::string(doc) +
+          prm.declare_entry(name, value, base::RangePattern::positive("m"), std::string(doc) +
                                                                          " Unit: m.");
         };
         length("Rim diameter", "0.3302", "Diameter of the rim seat. Table A.3: 13 in = 330.2 mm.");
@@ -38,7 +38,7 @@ namespace greentread
         length("Sidewall thickness", "0.006", "Thickness of the sidewalls (rubber and nylon).");
         length("Bead width", "0.008", "Axial width of each bead (steel).");
         length("Bead height", "0.008", "Radial height of each bead.");
-        prm.declare_entry("Bulge height", "0.5", RangePattern::closed(0.05, 0.95, ""),
+        prm.declare_entry("Bulge height", "0.5", base::RangePattern::closed(0.05, 0.95, ""),
                           "Where the sidewall is widest, as a fraction of the way from the "
                           "bead up to the belt. Unit: 1.");
         length("Mesh size", "0.008",

@@ -35,7 +35,7 @@ namespace greentread
       class ResidueFit
       {
       public:
-        ResidueFit(const FrequencyResponse    &frf,
+        ResidueFit(const base::FrequencyResponse    &frf,
                    const std::vector<Pole>    &poles,
                    ResidueModel                model,
                    bool                        lower,
@@ -225,14 +225,14 @@ namespace greentread
         }
 
         /// The modal model of coefficients x for the modes in @p modes.
-        convolution::ModalModel
+        modal::ModalModel
         model_of(const Eigen::VectorXd &x, const std::vector<unsigned int> &modes,
                  double &lower, double &upper) const
         {
           lower = upper = 0.;
           for (unsigned int c = 0; c < n_residual; ++c)
             (residual_kind[c] == 0 ? lower : upper) = x[c] / scale[c];
-          convolution::ModalModel result;
+          modal::ModalModel result;
           for (const unsigned int m : modes)
             {
               const Pole        &pole = poles[m];
@@ -256,7 +256,7 @@ namespace greentread
         }
 
       private:
-        const FrequencyResponse       &frf;
+        const base::FrequencyResponse       &frf;
         std::vector<Pole>              poles;
         ResidueModel                   model;
         unsigned int                   first_line;
@@ -378,7 +378,7 @@ namespace greentread
     namespace
     {
       Identification
-      identify_in_bands(const FrequencyResponse        &frf,
+      identify_in_bands(const base::FrequencyResponse        &frf,
                         const IdentificationParameters &parameters,
                         const unsigned int              B)
     {
@@ -508,7 +508,7 @@ namespace greentread
 
 
     Identification
-    identify(const FrequencyResponse &frf, const IdentificationParameters &parameters)
+    identify(const base::FrequencyResponse &frf, const IdentificationParameters &parameters)
     {
       if (parameters.bands > 0)
         return identify_in_bands(frf, parameters, parameters.bands);
@@ -531,8 +531,8 @@ namespace greentread
 
 
     double
-    modal_error(const FrequencyResponse     &frf,
-                const convolution::ModalModel &model,
+    modal_error(const base::FrequencyResponse     &frf,
+                const modal::ModalModel &model,
                 const double                   lower,
                 const double                   upper)
     {
@@ -555,7 +555,7 @@ namespace greentread
 
 
     std::vector<Identification>
-    identify_all(const std::function<FrequencyResponse(std::size_t)> &get,
+    identify_all(const std::function<base::FrequencyResponse(std::size_t)> &get,
                  const std::size_t                                    count,
                  const IdentificationParameters                      &parameters,
                  const bool                                           show_progress)
@@ -607,7 +607,7 @@ namespace greentread
 
 
     std::vector<Identification>
-    identify_pairs(const FrequencyResponseMatrix                            &green,
+    identify_pairs(const base::FrequencyResponseMatrix                            &green,
                    const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                    const IdentificationParameters                           &parameters,
                    std::size_t                                              &reused,

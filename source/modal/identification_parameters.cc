@@ -46,14 +46,14 @@ namespace greentread
                           "f_max. Each pole is taken from the band whose core holds its "
                           "frequency. 'auto': 1 band, and 8 bands as well where E exceeds "
                           "'Zoom above error', keeping the better fit.");
-        prm.declare_entry("Zoom above error", "0.05", RangePattern::closed(0., 1., ""),
+        prm.declare_entry("Zoom above error", "0.05", base::RangePattern::closed(0., 1., ""),
                           "With Bands = auto, an FRF whose error E with one band exceeds this "
                           "is identified again in 8 bands. Unit: 1 (0.05 = 5%, the paper's "
                           "typical error).");
         prm.declare_entry("Maximum number of modes", "60", dealii::Patterns::Integer(1, 500),
                           "N_max: the LSCE order is 2 N_max poles, and the chosen model has at "
                           "most N_max modes. The paper uses about 50 per Green's function.");
-        prm.declare_entry("Order tolerance", "0.001", RangePattern::closed(0., 1., ""),
+        prm.declare_entry("Order tolerance", "0.001", base::RangePattern::closed(0., 1., ""),
                           "The chosen N_m is the smallest whose error E (Eq. 50) is within "
                           "this of the smallest E over all orders tried. Unit: 1 (a fraction "
                           "of E, 0.001 = 0.1 percentage point).");
@@ -82,14 +82,14 @@ namespace greentread
                           "the band), and it costs about a hundred times LSCE's time. Scene "
                           "identify only: the contact scene's patch model keeps LSCE's poles.");
         prm.declare_entry("Stabilisation frequency tolerance", "0.01",
-                          RangePattern::closed(0., 1., ""),
+                          base::RangePattern::closed(0., 1., ""),
                           "A pole is kept only if the LSCE polynomial of order p - 2 has a "
                           "root within this relative distance |d lambda| / |lambda|. Unit: 1.");
         prm.declare_entry("Stabilisation damping tolerance", "0.05",
-                          RangePattern::closed(0., 10., ""),
+                          base::RangePattern::closed(0., 10., ""),
                           "... and with a damping ratio within this fraction of its own. "
                           "Unit: 1.");
-        prm.declare_entry("Band edge", "0.98", RangePattern::closed(0.1, 1., ""),
+        prm.declare_entry("Band edge", "0.98", base::RangePattern::closed(0.1, 1., ""),
                           "Poles whose damped frequency exceeds this fraction of f_max are "
                           "rejected: the cut of the FRF at f_max rings at the Nyquist "
                           "frequency and LSCE fits that ringing with poles there. Unit: 1.");

@@ -11,7 +11,7 @@ namespace greentread
   namespace modal
   {
     ImpulseResponse<double>
-    impulse_response(const FrequencyResponse &frf, const unsigned int last_line)
+    impulse_response(const base::FrequencyResponse &frf, const unsigned int last_line)
     {
       const std::size_t K = last_line > 0 ? last_line : frf.values.size() - 1;
       std::vector<std::complex<double>> half(frf.values.begin(), frf.values.begin() + K + 1);
@@ -31,7 +31,7 @@ namespace greentread
 
 
     ImpulseResponse<std::complex<double>>
-    band_impulse_response(const FrequencyResponse &frf,
+    band_impulse_response(const base::FrequencyResponse &frf,
                           const unsigned int       first_line,
                           const unsigned int       last_line)
     {

@@ -29,7 +29,7 @@ namespace greentread
           "with the static residual G_r = G(0) - sum_k phi_k phi_k^T / w_k^2; exact up to "
           "the cut-off, passive, and rank one per mode (saved as modal_model.h5; the "
           "default).");
-        prm.declare_entry("Mode cutoff", "8000", RangePattern::positive("Hz"),
+        prm.declare_entry("Mode cutoff", "8000", base::RangePattern::positive("Hz"),
                           "'fe modes': the ring's modes with a natural frequency up to this "
                           "are kept; those above it enter through the static residual G_r "
                           "only. Unit: Hz.");
@@ -43,18 +43,18 @@ namespace greentread
           "'real pole': a real pole at -2 pi f_r (see 'Residual pole factor'), which the "
           "one-point convolutions can carry but which makes the one-step influence of a "
           "patch indefinite (measured on the default tyre).");
-        prm.declare_entry("Residual pole factor", "3", RangePattern::closed(0., 100., ""),
+        prm.declare_entry("Residual pole factor", "3", base::RangePattern::closed(0., 100., ""),
                           "The local compliance of a point force that the modes below f_max do "
                           "not explain is carried by a real pole at -2 pi f_r, f_r = this factor "
                           "times the highest line f_max; its residue is fitted with the others. "
                           "0: no residual pole (the fit of a driving point then misses most of "
                           "its compliance).");
-        prm.declare_entry("Static weight", "20", RangePattern::closed(1., 1e6, ""),
+        prm.declare_entry("Static weight", "20", base::RangePattern::closed(1., 1e6, ""),
                           "Weight of the 0 Hz line in the least-squares fit of the residues, "
                           "relative to the other lines: a large weight makes the model's "
                           "static compliance that of the structure, which the static contact "
                           "solve uses.");
-        prm.declare_entry("Pole merge tolerance", "0.005", RangePattern::closed(1e-6, 0.1, ""),
+        prm.declare_entry("Pole merge tolerance", "0.005", base::RangePattern::closed(1e-6, 0.1, ""),
                           "The poles are identified on a few reference functions and merged: "
                           "two poles closer than this, relative to |lambda|, are one.");
         prm.declare_entry("Reference transfers", "8", dealii::Patterns::Integer(0, 64),
@@ -87,10 +87,10 @@ namespace greentread
 
 
 
-    convolution::ModalModel
+    modal::ModalModel
     PatchModel::pair_model(const unsigned int i, const unsigned int j) const
     {
-      convolution::ModalModel m;
+      modal::ModalModel m;
       for (unsigned int k = 0; k < n_terms(); ++k)
         if (real[k])
           m.add_real(lambda[k].real(), residue(k, i, j).real());
@@ -217,13 +217,13 @@ namespace greentread
        * a uniform pressure, and @p n_references transfers from the point
        * nearest the centre to points spread over the patch.
        */
-      std::vector<FrequencyResponse>
-      reference_functions(const FrequencyResponseMatrix &green, const unsigned int n_references)
+      std::vector<base::FrequencyResponse>
+      reference_functions(const base::FrequencyResponseMatrix &green, const unsigned int n_references)
       {
         const unsigned int n       = green.n_points();
         const unsigned int n_lines = green.n_lines;
         const auto         summed  = [&](const auto &take) {
-          FrequencyResponse frf;
+          base::FrequencyResponse frf;
           frf.df = green.df;
           frf.values.assign(n_lines, 0.);
           for (unsigned int k = 0; k < n_lines; ++k)
@@ -233,7 +233,7 @@ namespace greentread
                   frf.values[k] += green.values[(std::size_t(k) * n + i) * n + j];
           return frf;
         };
-        std::vector<FrequencyResponse> sources;
+        std::vector<base::FrequencyResponse> sources;
         sources.push_back(summed([](unsigned int i, unsigned int j) {
           return i == j;
         }));
@@ -270,7 +270,7 @@ namespace greentread
        */
       double
       find_poles(PatchModel                           &model,
-                 const std::vector<FrequencyResponse> &sources,
+                 const std::vector<base::FrequencyResponse> &sources,
                  const IdentificationParameters       &identification,
                  const PatchModelParameters           &parameters)
       {
@@ -289,7 +289,7 @@ namespace greentread
             for (const auto &term : found.model.terms())
               {
                 // A double pole (critical damping) is carried by one real pole.
-                const bool real = term.kind != convolution::ModalTerm::Kind::complex_pair;
+                const bool real = term.kind != modal::ModalTerm::Kind::complex_pair;
                 const std::complex<double> l =
                   real ? std::complex<double>(term.lambda.real(), 0.) : term.lambda;
                 bool known = false;
@@ -349,7 +349,7 @@ namespace greentread
         /// starts from rest) and the constant.
         std::vector<Eigen::Index> used;
 
-        ResidueSystem(const FrequencyResponseMatrix &green,
+        ResidueSystem(const base::FrequencyResponseMatrix &green,
                       const PatchModel              &model,
                       const PatchModelParameters    &parameters)
           : n(green.n_points())
@@ -560,7 +560,7 @@ namespace greentread
 
 
     PatchModel
-    fit_patch_model(const FrequencyResponseMatrix  &green,
+    fit_patch_model(const base::FrequencyResponseMatrix  &green,
                     const IdentificationParameters &identification,
                     const PatchModelParameters     &parameters,
                     const bool                      show_progress)

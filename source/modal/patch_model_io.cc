@@ -61,7 +61,7 @@ namespace greentread
     std::string
     read_patch_model_key(const std::string &file)
     {
-      return read_hdf5_stage_key(file, patch_datasets);
+      return base::read_hdf5_stage_key(file, patch_datasets);
     }
 
 

@@ -30,7 +30,7 @@ namespace greentread
 
 
     PatchModel
-    patch_model_stage(const FrequencyResponseMatrix  &green,
+    patch_model_stage(const base::FrequencyResponseMatrix  &green,
                       const IdentificationParameters &identification,
                       const PatchModelParameters     &parameters,
                       const std::filesystem::path    &file,

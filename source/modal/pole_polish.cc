@@ -21,7 +21,7 @@ namespace greentread
        */
       struct Projection : Eigen::DenseFunctor<double>
       {
-        Projection(const FrequencyResponse       &frf_,
+        Projection(const base::FrequencyResponse       &frf_,
                    const std::vector<PolishPole> &shape,
                    const bool                     lower_,
                    const bool                     upper_)
@@ -201,7 +201,7 @@ namespace greentread
           return 0;
         }
 
-        const FrequencyResponse &frf;
+        const base::FrequencyResponse &frf;
         std::vector<bool>        real;
         bool                     lower, upper;
         unsigned int             first;
@@ -213,7 +213,7 @@ namespace greentread
 
 
     std::vector<PolishPole>
-    polish_poles(const FrequencyResponse       &frf,
+    polish_poles(const base::FrequencyResponse       &frf,
                  const std::vector<PolishPole> &poles,
                  const bool                     lower,
                  const bool                     upper,

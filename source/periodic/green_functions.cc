@@ -23,10 +23,10 @@ namespace greentread
     {
       prm.enter_subsection("Green's functions");
       {
-        prm.declare_entry("Maximum frequency", "4000", RangePattern::positive("Hz"),
+        prm.declare_entry("Maximum frequency", "4000", base::RangePattern::positive("Hz"),
                           "f_max, the last line of the grid. Unit: Hz. Paper, Section 5.1: "
                           "4000 Hz.");
-        prm.declare_entry("Frequency step", "15.625", RangePattern::positive("Hz"),
+        prm.declare_entry("Frequency step", "15.625", base::RangePattern::positive("Hz"),
                           "df, the line spacing: the grid is 0, df, ..., f_max, and f_max / df "
                           "must be a whole number. The impulse responses LSCE fits are 1 / df "
                           "long. Unit: Hz. The default, 4000 / 256, gives 64 ms responses on "
@@ -38,10 +38,10 @@ namespace greentread
                           "'doubling': the paper's recursive doubling of the condensed cell "
                           "(Eqs. 46-49; exact, dense). 'full-ring': all N cells in one sparse "
                           "solve (the reference; coarse meshes only).");
-        prm.declare_entry("Patch length", "0.06", RangePattern::positive("m"),
+        prm.declare_entry("Patch length", "0.06", base::RangePattern::positive("m"),
                           "L_c, the contact patch along the rolling direction x. Unit: m. "
                           "Section 5.2: 6 cm.");
-        prm.declare_entry("Patch width", "0.08", RangePattern::positive("m"),
+        prm.declare_entry("Patch width", "0.08", base::RangePattern::positive("m"),
                           "l_c, the contact patch across the tread (y). Unit: m. Section 5.2: "
                           "8 cm.");
         prm.declare_entry("Points along", "10", dealii::Patterns::Integer(1, 1000),
@@ -123,7 +123,7 @@ namespace greentread
       if (pairs != "auto")
         {
           // Each pair is a CSV file and a curve in one plot: a few, not all.
-          const auto chosen = modal::parse_point_pairs(pairs, n, "Green's functions/Pairs");
+          const auto chosen = base::parse_point_pairs(pairs, n, "Green's functions/Pairs");
           require_parameter(chosen.size() <= 12, "Green's functions/Pairs", pairs,
                             "'auto' or at most 12 pairs i:j (this names " +
                               std::to_string(chosen.size()) +
@@ -142,7 +142,7 @@ namespace greentread
 
 
 
-    modal::FrequencyResponseMatrix
+    base::FrequencyResponseMatrix
     compute_green_functions(const PeriodicCell &cell,
                             const ContactPatch &patch,
                             const Method        method,
@@ -219,7 +219,7 @@ namespace greentread
       throw_if_any_rank_failed(comm, failure.empty() ? RankFailure::none : RankFailure::numerical,
                                "Green's functions: " + failure);
 
-      modal::FrequencyResponseMatrix green;
+      base::FrequencyResponseMatrix green;
       green.df      = df;
       green.n_lines = n_lines;
       if (n_ranks > 1)

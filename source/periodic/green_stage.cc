@@ -137,13 +137,13 @@ namespace greentread
       // Rank 0 decides, every rank follows.
       int reuse = 0;
       if (rank == 0 && reuse_saved)
-        reuse = modal::read_green_stage_key(h5.string()) == key;
+        reuse = base::read_green_stage_key(h5.string()) == key;
       MPI_Bcast(&reuse, 1, MPI_INT, 0, comm);
       if (reuse)
         {
           result.reused = true;
           if (rank == 0)
-            result.green = modal::read_green_hdf5(h5.string());
+            result.green = base::read_green_hdf5(h5.string());
           return result;
         }
       result.green = compute_green_functions(tyre.periodic_cell, tyre.patch,
@@ -151,7 +151,7 @@ namespace greentread
                                              parameters.frequency_step, parameters.n_lines(), comm,
                                              show_progress, result.report);
       if (rank == 0)
-        modal::write_green_hdf5(h5, result.green, record, key);
+        base::write_green_hdf5(h5, result.green, record, key);
       return result;
     }
 

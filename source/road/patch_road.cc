@@ -28,16 +28,16 @@ namespace greentread
                           "height grid (README, 'File formats').");
         prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0),
                           "Seed of the synthetic textures: the same seed gives the same road.");
-        prm.declare_entry("Length", "2.304", RangePattern::closed(0.05, 20., "m"),
+        prm.declare_entry("Length", "2.304", base::RangePattern::closed(0.05, 20., "m"),
                           "Length of the synthetic, sinusoidal and flat roads.");
-        prm.declare_entry("Spacing", "0.000384", RangePattern::closed(1e-5, 5e-3, "m"),
+        prm.declare_entry("Spacing", "0.000384", base::RangePattern::closed(1e-5, 5e-3, "m"),
                           "Sampling interval of the synthetic, sinusoidal and flat roads "
                           "(the paper's measured roads: 384 um).");
-        prm.declare_entry("Sinusoid amplitude", "0.001", RangePattern::closed(0., 0.05, "m"),
+        prm.declare_entry("Sinusoid amplitude", "0.001", base::RangePattern::closed(0., 0.05, "m"),
                           "Amplitude of the 'sinusoid' road.");
-        prm.declare_entry("Sinusoid wavelength", "0.05", RangePattern::closed(1e-3, 10., "m"),
+        prm.declare_entry("Sinusoid wavelength", "0.05", base::RangePattern::closed(1e-3, 10., "m"),
                           "Wavelength of the 'sinusoid' road.");
-        prm.declare_entry("Height scale", "1", RangePattern::closed(0., 100., "1"),
+        prm.declare_entry("Height scale", "1", base::RangePattern::closed(0., 100., "1"),
                           "Factor on every road's heights (presets, sinusoid and texture "
                           "files): 2 raises the texture spectrum by 6.02 dB at every "
                           "wavelength and keeps its shape.");

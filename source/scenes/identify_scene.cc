@@ -34,20 +34,20 @@ namespace greentread
     {
       namespace fs = std::filesystem;
       // Read the input before anything is written.
-      modal::FrequencyResponse                           single;
-      modal::FrequencyResponseMatrix                     green;
+      base::FrequencyResponse                           single;
+      base::FrequencyResponseMatrix                     green;
       std::vector<std::pair<unsigned int, unsigned int>> pairs;
       std::string                                        source;
       if (!identification.frf_file.empty())
         {
-          single = modal::read_frf_csv(identification.frf_file);
+          single = base::read_frf_csv(identification.frf_file);
           pairs  = {{0u, 0u}};
           source = identification.frf_file;
         }
       else
         {
-          green  = modal::read_green_hdf5(identification.green_file);
-          pairs  = modal::parse_point_pairs(identification.pairs, green.n_points(),
+          green  = base::read_green_hdf5(identification.green_file);
+          pairs  = base::parse_point_pairs(identification.pairs, green.n_points(),
                                             "Identification/Pairs");
           source = identification.green_file;
         }

@@ -9,8 +9,8 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/modal/mode_synthesis.h>
-#include <greentread/periodic/mode_stage.h>
+#include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/synthesis/mode_stage.h>
 #include <greentread/scenes/road_scene.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -152,7 +152,7 @@ namespace greentread
       // Stages 1-3: geometry, fe, periodic: the Green's functions (saved).
       const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
       const fs::path                       h5        = directory / "green_functions.h5";
-      const modal::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
+      const base::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
 
       // Stage 4: modal, the patch model (saved too).
       const modal::PatchModel model = modal_stage(G, green_key, directory, record);
@@ -175,7 +175,7 @@ namespace greentread
                   << format_number(1e3 * geometry.tread_thickness) << " mm layer below it)\n";
       const analysis::PatchLattice lattice(grid.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
-      const Eigen::MatrixXd        G0    = modal::static_line(G);
+      const Eigen::MatrixXd        G0    = synthesis::static_line(G);
       const double static_mismatch =
         (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       std::cout << "  the model's static compliance differs from the structure's by "
@@ -212,15 +212,15 @@ namespace greentread
 
 
 
-    modal::FrequencyResponseMatrix
+    base::FrequencyResponseMatrix
     RoadContactScene::green_stage(const std::filesystem::path &h5,
                                   const std::string           &key,
                                   const base::ParameterRecord &record) const
     {
-      modal::FrequencyResponseMatrix G;
+      base::FrequencyResponseMatrix G;
       const bool green_cached =
-        global.reuse && modal::read_green_stage_key(h5.string()) == key &&
-        base::read_saved_stage(h5, [&] { G = modal::read_green_hdf5(h5.string()); });
+        global.reuse && base::read_green_stage_key(h5.string()) == key &&
+        base::read_saved_stage(h5, [&] { G = base::read_green_hdf5(h5.string()); });
       if (green_cached)
         std::cout << "Reusing " << h5.string()
                   << ": same geometry, materials, inflation and Green's-function parameters\n";
@@ -244,7 +244,7 @@ namespace greentread
 
 
     modal::PatchModel
-    RoadContactScene::modal_stage(const modal::FrequencyResponseMatrix &G,
+    RoadContactScene::modal_stage(const base::FrequencyResponseMatrix &G,
                                   const std::string                    &green_key,
                                   const std::filesystem::path          &directory,
                                   const base::ParameterRecord          &record) const
@@ -254,23 +254,23 @@ namespace greentread
                                         directory / "patch_model.h5",
                                         modal::patch_model_stage_key(prm, green_key), record,
                                         global.reuse, global.print_timings);
-      const periodic::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
+      const synthesis::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
                                              patch_model.mode_cutoff};
       // The modes' part at every line, when the stage computes it (not
       // when it is reused): compare() then only adds the residual.
-      modal::ModalLines          lines;
-      const modal::ModeSynthesis synthesis = periodic::run_mode_stage(
-        inputs, G, directory / "modal_model.h5", periodic::mode_stage_key(prm, green_key),
+      synthesis::ModalLines          lines;
+      const synthesis::ModeSynthesis synthesis = synthesis::run_mode_stage(
+        inputs, G, directory / "modal_model.h5", synthesis::mode_stage_key(prm, green_key),
         record, global.reuse, global.print_timings, MPI_COMM_WORLD, &lines);
       analysis::write_dispersion(directory, synthesis.dispersion, patch_model.mode_cutoff, record);
-      const modal::SynthesisErrors errors = modal::compare(synthesis, G, &lines);
+      const synthesis::SynthesisErrors errors = synthesis::compare(synthesis, G, &lines);
       analysis::report_synthesis(directory, synthesis, errors, record);
       const unsigned int n_p = G.n_points();
       Eigen::MatrixXd    E(n_p, n_p);
       for (unsigned int i = 0; i < n_p; ++i)
         for (unsigned int j = 0; j < n_p; ++j)
           E(i, j) = errors.pair_error[i * n_p + j];
-      return modal::to_patch_model(synthesis, E, G.df * (G.n_lines - 1));
+      return synthesis::to_patch_model(synthesis, E, G.df * (G.n_lines - 1));
     }
 
 

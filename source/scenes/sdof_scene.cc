@@ -67,7 +67,7 @@ namespace greentread
                     << " Hz: N_m = " << identified->identification.n_modes << ", E = "
                     << format_printf("%.3g", identified->identification.error) << ", pole error "
                     << format_printf("%.3g", identified->pole_error) << "\n";
-          modal::write_frf_csv(directory / "frf.csv", identified->frf, record);
+          base::write_frf_csv(directory / "frf.csv", identified->frf, record);
           analysis::write_modal_parameters(directory / "modal_parameters.csv",
                                            identified->identification.model, record);
         }

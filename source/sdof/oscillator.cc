@@ -14,17 +14,17 @@ namespace greentread
       prm.enter_subsection("Oscillator");
       {
         using base::RangePattern;
-        prm.declare_entry("Mass", "1", RangePattern::positive("kg"),
+        prm.declare_entry("Mass", "1", base::RangePattern::positive("kg"),
                           "Mass M. Unit: kg. Table A.1: 1 kg.");
-        prm.declare_entry("Stiffness", "4e5", RangePattern::positive("N/m"),
+        prm.declare_entry("Stiffness", "4e5", base::RangePattern::positive("N/m"),
                           "Spring stiffness K. Unit: N/m. Table A.1: 4e5 N/m.");
-        prm.declare_entry("Damping ratio", "0.02", RangePattern::closed(0., 1000., ""),
+        prm.declare_entry("Damping ratio", "0.02", base::RangePattern::closed(0., 1000., ""),
                           "Viscous damping ratio xi = C / (2 sqrt(K M)); xi < 0 would feed "
                           "energy in. Values >= 1 give real poles. Unit: 1. Table A.1: 0.02.");
-        prm.declare_entry("Gravity", "9.81", RangePattern::non_negative("m/s^2"),
+        prm.declare_entry("Gravity", "9.81", base::RangePattern::non_negative("m/s^2"),
                           "Gravitational acceleration g pressing the mass onto the road "
                           "(the load -M g of Eq. 30). Unit: m/s^2.");
-        prm.declare_entry("Speed", "0.1", RangePattern::positive("m/s"),
+        prm.declare_entry("Speed", "0.1", base::RangePattern::positive("m/s"),
                           "Speed V0 at which the oscillator travels over the road. "
                           "Unit: m/s. Paper, Section 3: 0.1 m/s.");
         prm.declare_entry("Green's function", "analytic",
@@ -34,10 +34,10 @@ namespace greentread
                           "Identification) finds from the oscillator's own FRF, sampled "
                           "from 0 to 'FRF maximum frequency'; the scene then also reports "
                           "the difference from the run with the exact modal form.");
-        prm.declare_entry("FRF maximum frequency", "1000", RangePattern::positive("Hz"),
+        prm.declare_entry("FRF maximum frequency", "1000", base::RangePattern::positive("Hz"),
                           "Highest line of the FRF identified when Green's function = "
                           "identified. Unit: Hz.");
-        prm.declare_entry("FRF line spacing", "1", RangePattern::positive("Hz"),
+        prm.declare_entry("FRF line spacing", "1", base::RangePattern::positive("Hz"),
                           "Line spacing of that FRF. Unit: Hz.");
       }
       prm.leave_subsection();
@@ -181,10 +181,10 @@ namespace greentread
 
 
 
-    convolution::ModalModel
+    modal::ModalModel
     Oscillator::modal_model() const
     {
-      convolution::ModalModel model;
+      modal::ModalModel model;
       if (std::abs(xi - 1.) <= 1e-8)
         model.add_double(-sigma, 0., 1. / M);
       else if (xi < 1.)

@@ -17,7 +17,7 @@ namespace greentread
                      const convolution::ConvolutionParameters &parameters,
                      const double                              dt,
                      const unsigned int                        n_steps,
-                     const convolution::ModalModel            *model)
+                     const modal::ModalModel            *model)
     {
       if (model)
         return convolution::create(parameters, *model, dt, n_steps);
@@ -48,10 +48,10 @@ namespace greentread
 
 
 
-    modal::FrequencyResponse
+    base::FrequencyResponse
     frequency_response(const Oscillator &oscillator, const double f_max, const double df)
     {
-      modal::FrequencyResponse frf;
+      base::FrequencyResponse frf;
       frf.df                 = df;
       const unsigned int n   = static_cast<unsigned int>(std::llround(f_max / df)) + 1;
       for (unsigned int k = 0; k < n; ++k)
@@ -109,32 +109,32 @@ namespace greentread
       run.F[0] = 0.;
 
       const auto law = contact::create(contact, psi, oscillator.stiffness(), oscillator.mass());
-      const StepLoad   gravity{0., -weight, -weight, 0.};
+      const convolution::StepLoad   gravity{0., -weight, -weight, 0.};
       base::Progress   progress("sdof time steps", n_steps);
       const auto       start = std::chrono::steady_clock::now();
 
       for (unsigned int n = 0; n < n_steps; ++n)
         {
           const double   t1      = (n + 1) * dt;
-          const Response history = convolution.history();
+          const convolution::Response history = convolution.history();
           double         ur, vr;
           road.height_and_velocity(t1, ur, vr);
 
           const contact::ContactStep step = law->step(history, gravity, ur, vr);
-          const StepLoad             load = step.load;
+          const convolution::StepLoad             load = step.load;
           if (step.branch >= 0)
             {
               ++run.branch_count[static_cast<unsigned int>(step.branch)];
               run.branches = true;
             }
 
-          StepLoad total = gravity;
+          convolution::StepLoad total = gravity;
           total += load;
           convolution.advance(total);
 
-          const Response total_response = psi.of(total);
-          const Response state = {history.u + total_response.u, history.v + total_response.v};
-          StepLoad       before_end = total;
+          const convolution::Response total_response = psi.of(total);
+          const convolution::Response state = {history.u + total_response.u, history.v + total_response.v};
+          convolution::StepLoad       before_end = total;
           before_end.impulse_end    = 0.;
           run.u_start[n] = run.u[n] + psi.u[3] * total.impulse_start;
           run.v_start[n] = run.v[n] + psi.v[3] * total.impulse_start;
@@ -225,7 +225,7 @@ namespace greentread
              const contact::ContactParameters          &contact,
              const convolution::ConvolutionParameters &convolution,
              const bool                                show_progress,
-             const convolution::ModalModel            *model)
+             const modal::ModalModel            *model)
     {
       const Oscillator      oscillator(oscillator_parameters);
       const road::RoadTrack track{road, oscillator_parameters.speed, 0.};

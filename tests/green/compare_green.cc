@@ -3,7 +3,7 @@
 // Prints the largest |g_A - g_B| / max |g_A| over all frequencies and
 // pairs, and exits 1 if it exceeds TOLERANCE or the grids or points differ.
 #include <greentread/base/exceptions.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 
 #include <cmath>
 #include <iostream>
@@ -19,8 +19,8 @@ main(int argc, char **argv)
     }
   try
     {
-      const auto   a         = greentread::modal::read_green_hdf5(argv[1]);
-      const auto   b         = greentread::modal::read_green_hdf5(argv[2]);
+      const auto   a         = greentread::base::read_green_hdf5(argv[1]);
+      const auto   b         = greentread::base::read_green_hdf5(argv[2]);
       const double tolerance = std::stod(argv[3]);
       if (a.n_lines != b.n_lines || a.df != b.df || a.points != b.points)
         {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <greentread/contact/elastic_layer.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <Eigen/Core>
 
@@ -55,11 +55,11 @@ namespace test
 
   /// 12 modes (200 to 3000 Hz, 4% damping) on @p coarse with
   /// coarse_compliance() as G_r.
-  inline greentread::modal::ModeSynthesis
+  inline greentread::synthesis::ModeSynthesis
   synthetic_modes(const std::vector<std::array<double, 3>> &coarse)
   {
     const unsigned int               n_c = coarse.size(), m = 12;
-    greentread::modal::ModeSynthesis s;
+    greentread::synthesis::ModeSynthesis s;
     s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 200., 3000.);
     s.damping_ratio = Eigen::VectorXd::Constant(m, 0.04);
     s.shapes.resize(m, n_c);

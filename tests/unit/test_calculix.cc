@@ -18,7 +18,7 @@
 #include <greentread/fe/elastic_model.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/periodic/periodic_cell.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/synthesis/ring_modes.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -163,7 +163,7 @@ BOOST_AUTO_TEST_CASE(inflation_and_ring_frequencies)
   BOOST_REQUIRE(ccx.size() == n_modes);
 
   // The same ring's modes from its cell, one wavenumber at a time (the Bloch
-  // modes of the modal synthesis, periodic/ring_modes.h), no prestress. The
+  // modes of the modal synthesis, synthesis/ring_modes.h), no prestress. The
   // undamped ones: with the damping's coupling (the synthesis' default) the
   // frequencies are the damped poles' |s|, 3e-6 to 4e-5 above these.
   fe::ElasticModel cell_model(comparison.cell.cell(), comparison.materials.materials());
@@ -173,9 +173,9 @@ BOOST_AUTO_TEST_CASE(inflation_and_ring_frequencies)
                                                  geometry::tread_surface, false);
   periodic::PatchRequest request;
   request.points_along = request.points_across = 1;
-  periodic::ModeSearch search;
+  synthesis::ModeSearch search;
   search.cutoff    = 2. * M_PI * 1.2 * ccx.back();
-  const auto bloch = periodic::ring_modes(cell, periodic::place_contact_points(cell, request),
+  const auto bloch = synthesis::ring_modes(cell, periodic::place_contact_points(cell, request),
                                           search, MPI_COMM_SELF, false, false);
   BOOST_REQUIRE(bloch.size() >= n_modes);
   for (unsigned int i = 0; i < n_modes; ++i)

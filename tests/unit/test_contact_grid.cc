@@ -10,7 +10,7 @@
 #include <greentread/contact/lcp.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/road/texture.h>
 
@@ -157,18 +157,18 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
   // G_r replaced by the grid's compliance of G_r) with the plain recursion.
   const auto                 coarse = coarse_points(4, 3);
   const unsigned int         n_c    = coarse.size();
-  const modal::ModeSynthesis s      = test::synthetic_modes(coarse);
-  const modal::PatchModel coarse_model = modal::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+  const synthesis::ModeSynthesis s      = test::synthetic_modes(coarse);
+  const modal::PatchModel coarse_model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid grid(coarse, 2, tread_layer);
-  modal::ModeSynthesis       f = s;
+  synthesis::ModeSynthesis       f = s;
   f.shapes.resize(s.shapes.rows(), grid.n_points());
   for (unsigned int p = 0; p < grid.n_points(); ++p)
     f.shapes.col(p) = s.shapes.col(grid.coarse_of[p]);
   f.instantaneous = grid.compliance(s.instantaneous);
   f.points        = grid.points;
   const modal::PatchModel fine_model =
-    modal::to_patch_model(f, Eigen::MatrixXd::Zero(grid.n_points(), grid.n_points()), 4000.);
+    synthesis::to_patch_model(f, Eigen::MatrixXd::Zero(grid.n_points(), grid.n_points()), 4000.);
   BOOST_TEST((fine_model.static_compliance() - grid.compliance(coarse_model.static_compliance()))
                .cwiseAbs()
                .maxCoeff() < 1e-12 * fine_model.static_compliance().cwiseAbs().maxCoeff());

@@ -40,14 +40,14 @@ namespace
   }
 
   /// Run a convolution over the loads; the response at every t_{n+1}.
-  std::vector<Response>
+  std::vector<convolution::Response>
   run(convolution::Convolution &conv, const std::vector<StepLoad> &loads)
   {
-    std::vector<Response> out;
+    std::vector<convolution::Response> out;
     for (const auto &load : loads)
       {
-        const Response h = conv.history();
-        const Response c = conv.influence().of(load);
+        const convolution::Response h = conv.history();
+        const convolution::Response c = conv.influence().of(load);
         conv.advance(load);
         out.push_back({h.u + c.u, h.v + c.v});
       }
@@ -163,7 +163,7 @@ BOOST_AUTO_TEST_CASE(modal_paper_reports_its_overflow)
     {
       for (unsigned int i = 0; i < 10000; ++i)
         {
-          const Response h = p.history();
+          const convolution::Response h = p.history();
           BOOST_REQUIRE(std::isfinite(h.u));
           p.advance({0., 1., 1., 0.});
         }
@@ -196,7 +196,7 @@ BOOST_AUTO_TEST_CASE(truncation_by_the_paper_rule)
 
 BOOST_AUTO_TEST_CASE(unstable_model_is_refused)
 {
-  convolution::ModalModel model;
+  modal::ModalModel model;
   model.add_pair({+1., 100.}, {0., 1.});
   BOOST_CHECK_THROW(convolution::ModalRecursiveConvolution(model, 1e-4), NumericalError);
 }

@@ -1,5 +1,5 @@
 // The fast pipeline against the finite-element transient (issue 17): the
-// full ring integrated by Newmark (periodic/newmark_ring.h) is the
+// full ring integrated by Newmark (reference/newmark_ring.h) is the
 // reference, which uses no Green's functions, no modal model and no
 // convolution. On the tests' coarse ring (4 cm mesh, 32 cells, 22,848
 // unknowns) with 4 x 3 tributary-area points:
@@ -20,7 +20,7 @@
 // - with the tread surface's mass moved inward (massless contact nodes), the
 //   contact's step compliance of the modes and of the reference meet as dt
 //   falls, where with the consistent mass they part.
-#include <greentread/analysis/transient_comparison.h>
+#include <greentread/reference/transient_comparison.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -31,10 +31,10 @@ using namespace greentread;
 
 namespace
 {
-  analysis::TransientCaseSetup
+  reference::TransientCaseSetup
   coarse_case(const bool proportional)
   {
-    analysis::TransientCaseSetup setup;
+    reference::TransientCaseSetup setup;
     setup.geo_file             = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
     setup.mesh_size            = 0.04;
     setup.n_cells              = 32;
@@ -53,10 +53,10 @@ BOOST_AUTO_TEST_SUITE(fe_transient)
 
 BOOST_AUTO_TEST_CASE(structure_converges_at_second_order_with_proportional_damping)
 {
-  const analysis::TransientCase study(coarse_case(true));
+  const reference::TransientCase study(coarse_case(true));
   BOOST_TEST_MESSAGE(study.describe());
   BOOST_TEST(study.static_mismatch() < 1e-10);
-  const analysis::PathModel modes = study.mode_model(4000.);
+  const reference::PathModel modes = study.mode_model(4000.);
   std::vector<double>       error;
   for (const double dt : {4e-5, 2e-5, 1e-5})
     {
@@ -72,14 +72,14 @@ BOOST_AUTO_TEST_CASE(structure_converges_at_second_order_with_proportional_dampi
 BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_converges_with_coupled_modes)
 {
   // The per-layer damping is not proportional. With the modes coupled by
-  // it (periodic/ring_modes.h, the default) the structure converges to the
+  // it (synthesis/ring_modes.h, the default) the structure converges to the
   // reference as dt falls, as with a proportional damping; with only the
   // diagonal of Psi^H C Psi it stopped at 2.0e-3 whatever dt (the coupling's
   // floor; measured 2.1e-3 and 2.05e-3 at 20 and 10 us before the
   // coupling). Measured now: 2.2e-4 and 8.2e-5.
-  const analysis::TransientCase study(coarse_case(false));
+  const reference::TransientCase study(coarse_case(false));
   BOOST_TEST(study.static_mismatch() < 1e-10);
-  const analysis::PathModel modes = study.mode_model(4000.);
+  const reference::PathModel modes = study.mode_model(4000.);
   const double              coarse = study.driven_difference({&modes}, 2e-5, 2e-3)[0];
   const double              fine   = study.driven_difference({&modes}, 1e-5, 2e-3)[0];
   BOOST_TEST_MESSAGE("per-layer damping: " << coarse << " at dt = 20 us, " << fine
@@ -90,11 +90,11 @@ BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_converges_with_coupled_mod
 
 BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_step)
 {
-  analysis::TransientCaseSetup setup = coarse_case(false);
+  reference::TransientCaseSetup setup = coarse_case(false);
   setup.distance                     = 0.1;
-  const analysis::TransientCase study(setup);
-  const analysis::PathModel     low  = study.mode_model(4000.);
-  const analysis::PathModel     high = study.mode_model(32000.);
+  const reference::TransientCase study(setup);
+  const reference::PathModel     low  = study.mode_model(4000.);
+  const reference::PathModel     high = study.mode_model(32000.);
   const double                  dt   = study.road_time_step();
   const auto mean = [](const std::vector<double> &f) {
     return std::accumulate(f.begin(), f.end(), 0.) / f.size();
@@ -105,8 +105,8 @@ BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_st
       const auto coarse    = study.fast(road, dt, low, convolution::Method::modal_recursive);
       const auto fine      = study.fast(road, dt, high, convolution::Method::modal_recursive);
       BOOST_TEST_REQUIRE(reference.failed_steps + coarse.failed_steps + fine.failed_steps == 0u);
-      const auto d_low  = analysis::compare(coarse, reference, dt);
-      const auto d_high = analysis::compare(fine, reference, dt);
+      const auto d_low  = reference::compare(coarse, reference, dt);
+      const auto d_high = reference::compare(fine, reference, dt);
       BOOST_TEST_MESSAGE(road << ": modes to 4 kHz: force " << d_low.force << " of the peak, "
                               << d_low.force_band << " dB, stress " << d_low.stress_band
                               << " dB; to 32 kHz: " << d_high.force << ", " << d_high.force_band
@@ -142,12 +142,12 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
   // for every layer, 7.46 us, where the reference's layer has the tread's
   // own beta; before the modes were coupled the fitted beta_r absorbed part
   // of the coupling's error and happened to land nearer, 2.7%).
-  analysis::TransientCaseSetup setup = coarse_case(false);
+  reference::TransientCaseSetup setup = coarse_case(false);
   setup.distance                     = 0.1;
   setup.surface_mass_inward          = true;
   setup.max_frequency                = 5000.;
-  const analysis::TransientCase study(setup);
-  const analysis::PathModel     modes = study.mode_model(16000.);
+  const reference::TransientCase study(setup);
+  const reference::PathModel     modes = study.mode_model(16000.);
   BOOST_TEST_MESSAGE("residual relaxation " << modes.model.residual_relaxation << " s");
   const auto mean = [](const std::vector<double> &f) {
     return std::accumulate(f.begin(), f.end(), 0.) / f.size();
@@ -160,7 +160,7 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
           const auto reference = study.reference(road, dt);
           const auto fast      = study.fast(road, dt, modes, convolution::Method::modal_recursive);
           BOOST_TEST_REQUIRE(reference.failed_steps + fast.failed_steps == 0u);
-          const auto d = analysis::compare(fast, reference, dt);
+          const auto d = reference::compare(fast, reference, dt);
           const double mismatch = std::abs(fast.step_compliance / reference.step_compliance - 1.);
           rms.push_back(d.force_rms);
           BOOST_TEST_MESSAGE(road << ", dt = " << 1e6 * dt << " us, mass moved inward: step "

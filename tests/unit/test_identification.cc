@@ -14,7 +14,7 @@
 #include <random>
 
 using namespace greentread;
-using convolution::ModalModel;
+using modal::ModalModel;
 
 namespace
 {
@@ -155,7 +155,7 @@ BOOST_AUTO_TEST_CASE(real_pole)
                                                  << ", E = " << id.error);
       unsigned int real_poles = 0;
       for (const auto &t : id.model.terms())
-        real_poles += t.kind == convolution::ModalTerm::Kind::real_pole;
+        real_poles += t.kind == modal::ModalTerm::Kind::real_pole;
       BOOST_TEST_CONTEXT(modal::to_string(model))
       {
         BOOST_TEST(real_poles == 1u);
@@ -299,7 +299,7 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
 
 BOOST_AUTO_TEST_CASE(pure_noise_is_reported_as_a_poor_fit)
 {
-  modal::FrequencyResponse frf;
+  base::FrequencyResponse frf;
   frf.df = 4.;
   std::mt19937                     random(9);
   std::normal_distribution<double> noise(0., 1e-6);
@@ -363,8 +363,8 @@ BOOST_AUTO_TEST_CASE(frf_csv_round_trip_and_bad_files)
   std::filesystem::create_directories(dir);
   base::ParameterRecord record;
   record.header = "test";
-  modal::write_frf_csv(dir / "g.csv", frf, record);
-  const auto back = modal::read_frf_csv((dir / "g.csv").string());
+  base::write_frf_csv(dir / "g.csv", frf, record);
+  const auto back = base::read_frf_csv((dir / "g.csv").string());
   BOOST_TEST(back.df == 4.);
   BOOST_REQUIRE(back.values.size() == frf.values.size());
   for (std::size_t k = 0; k < frf.values.size(); ++k)
@@ -374,7 +374,7 @@ BOOST_AUTO_TEST_CASE(frf_csv_round_trip_and_bad_files)
     std::ofstream(dir / "bad.csv") << text;
     try
       {
-        modal::read_frf_csv((dir / "bad.csv").string());
+        base::read_frf_csv((dir / "bad.csv").string());
         BOOST_ERROR("no error for: " << expected);
       }
     catch (const InputError &e)
@@ -389,7 +389,7 @@ BOOST_AUTO_TEST_CASE(frf_csv_round_trip_and_bad_files)
   bad("f,re,im\n0,1,0\n4,1\n", "three comma-separated numbers");
   bad("freq,real,imag\n0,1,0\n", "expected the header 'f,re,im'");
   bad("", "is empty");
-  BOOST_CHECK_THROW(modal::read_frf_csv((dir / "none.csv").string()), InputError);
+  BOOST_CHECK_THROW(base::read_frf_csv((dir / "none.csv").string()), InputError);
   std::filesystem::remove_all(dir);
 }
 
@@ -403,7 +403,7 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
   add_mode(g01, 1500., 0.02, -1e3);
   add_mode(g11, 500., 0.02, 1e3);
   add_mode(g11, 1500., 0.02, 1e3);
-  modal::FrequencyResponseMatrix green;
+  base::FrequencyResponseMatrix green;
   green.df      = 10.;
   green.n_lines = 201;
   green.points  = {{{0., 0., 0.}}, {{0.01, 0., 0.}}};
@@ -419,8 +419,8 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
   std::filesystem::create_directories(dir);
   base::ParameterRecord record;
   record.header = "test";
-  modal::write_green_hdf5(dir / "green.h5", green, record);
-  auto back = modal::read_green_hdf5((dir / "green.h5").string());
+  base::write_green_hdf5(dir / "green.h5", green, record);
+  auto back = base::read_green_hdf5((dir / "green.h5").string());
   BOOST_TEST(back.df == 10.);
   BOOST_TEST(back.n_points() == 2u);
   BOOST_TEST(back.points[1][0] == 0.01);
@@ -442,9 +442,9 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
     back.values[4 * k + 2] *= 1.001;
   modal::identify_pairs(back, pairs, p, reused, false);
   BOOST_TEST(reused == 0u);
-  BOOST_CHECK_THROW(modal::read_green_hdf5((dir / "none.h5").string()), InputError);
+  BOOST_CHECK_THROW(base::read_green_hdf5((dir / "none.h5").string()), InputError);
   std::ofstream(dir / "text.h5") << "not an HDF5 file";
-  BOOST_CHECK_THROW(modal::read_green_hdf5((dir / "text.h5").string()), InputError);
+  BOOST_CHECK_THROW(base::read_green_hdf5((dir / "text.h5").string()), InputError);
   std::filesystem::remove_all(dir);
 }
 

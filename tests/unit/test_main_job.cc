@@ -11,7 +11,7 @@
 #include <greentread/config.h>
 #include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/periodic/mode_stage.h>
+#include <greentread/synthesis/mode_stage.h>
 #include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
 
@@ -73,7 +73,7 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
       base::apply_override(prm, o);
     const std::string green = periodic::green_stage_key(prm, geo_file);
     return std::make_tuple(green, modal::patch_model_stage_key(prm, green),
-                           periodic::mode_stage_key(prm, green));
+                           synthesis::mode_stage_key(prm, green));
   };
   const auto reference = keys({}, geo);
   BOOST_TEST(std::get<0>(reference).find(GREENTREAD_GIT_REVISION) == std::string::npos);

@@ -1,7 +1,7 @@
 // The oscillator's Green's function in its three forms (closed form, modal
 // model, frequency response) against independent references: the dynamic
 // stiffness inverse of Eq. (3), and Boost.Odeint integration of the ODE.
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 #include <greentread/sdof/oscillator.h>
 
 #include <boost/test/unit_test.hpp>

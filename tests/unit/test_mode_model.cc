@@ -12,10 +12,10 @@
 
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
-#include <greentread/contact/mode_patch_convolution.h>
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/mode_patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/modal/identification.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/hdf5.h>
 
@@ -32,13 +32,13 @@ namespace
 {
   /// 7 points, 9 modes from 120 Hz to 3 kHz (one over-critical, one
   /// undamped), shapes of mass-normalised size, a static residual of rank 2.
-  modal::ModeSynthesis
+  synthesis::ModeSynthesis
   known_synthesis()
   {
     const unsigned int P = 7, m = 9;
     std::mt19937       random(7);
     std::uniform_real_distribution<double> u(-1., 1.);
-    modal::ModeSynthesis s;
+    synthesis::ModeSynthesis s;
     s.frequency_hz.resize(m);
     s.damping_ratio.resize(m);
     const double f[m]  = {120., 310., 311., 640., 900., 1400., 1900., 2500., 3000.};
@@ -73,7 +73,7 @@ namespace
   /// The largest difference of the pole-residue form from the closed form
   /// over a few lines, relative to the largest |g| at each line.
   double
-  pole_residue_error(const modal::ModeSynthesis &s, const modal::PatchModel &model)
+  pole_residue_error(const synthesis::ModeSynthesis &s, const modal::PatchModel &model)
   {
     double worst = 0.;
     // 640 Hz is left out: the undamped mode is infinite there.
@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(poles_and_residues_give_the_closed_form)
 {
   auto s             = known_synthesis();
   s.damping_ratio(7) = 1.3; // critical damping is the next case
-  const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto model   = synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   BOOST_TEST(model.is_rank_one());
   // Two real poles for each mode with xi >= 1, one pair for the others.
   BOOST_TEST(model.n_terms() == 11u);
@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(poles_and_residues_give_the_closed_form)
   // Exactly critical damping is taken as xi = 1 + 1e-6 (two real poles
   // 2.8e-3 w apart): a relative change of order 1e-6 in that mode.
   const auto   s1      = known_synthesis();
-  const double nudged = pole_residue_error(s1, modal::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
+  const double nudged = pole_residue_error(s1, synthesis::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
   BOOST_TEST_MESSAGE("with a critically damped mode: " << nudged);
   BOOST_TEST(nudged < 1e-6);
   // The static compliance: G_r + sum phi phi^T / w^2.
@@ -117,10 +117,10 @@ BOOST_AUTO_TEST_CASE(negative_damping_and_zero_frequency_are_refused)
 {
   auto s             = known_synthesis();
   s.damping_ratio(2) = -0.01;
-  BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
+  BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
   s                  = known_synthesis();
   s.frequency_hz(0)  = 0.;
-  BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
+  BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
 }
 
 namespace
@@ -136,23 +136,23 @@ namespace
   /// velocity at the end, summed again from its states, against the first's.
   std::array<double, 4>
   recursion_differences(const modal::PatchModel &model,
-                        const contact::ShapePrecision precision =
-                          contact::ShapePrecision::double_precision)
+                        const convolution::ShapePrecision precision =
+                          convolution::ShapePrecision::double_precision)
   {
-    const auto         full = modal::full_form(model);
+    const auto         full = synthesis::full_form(model);
     const double       dt   = 2e-5;
     const unsigned int n = 400, P = model.n_points();
-    auto fast   = contact::make_modal_patch_convolution(model, dt, 2, precision);
-    auto fast_u = contact::make_modal_patch_convolution(model, dt, 2, precision);
-    auto dense  = contact::make_modal_patch_convolution(full, dt, 1);
-    auto direct = contact::make_direct_patch_convolution(model, dt, n + 1);
+    auto fast   = convolution::make_modal_patch_convolution(model, dt, 2, precision);
+    auto fast_u = convolution::make_modal_patch_convolution(model, dt, 2, precision);
+    auto dense  = convolution::make_modal_patch_convolution(full, dt, 1);
+    auto direct = convolution::make_direct_patch_convolution(model, dt, n + 1);
     // The one-step influences, each against its own size. Without G_r the
     // displacement's response to the impulse at the step's end (u[3]) is zero:
     // exactly in the full form, to round-off in the rank-one form (2.5e-20
     // against u[0]'s 7e-6 with FMA), so a zero one is measured against the
     // largest of its kind.
     double                         influence = 0.;
-    const contact::PatchInfluence &a = fast->influence(), &b = dense->influence();
+    const convolution::PatchInfluence &a = fast->influence(), &b = dense->influence();
     const auto relative = [](const std::array<Eigen::MatrixXd, 4> &x,
                              const std::array<Eigen::MatrixXd, 4> &y, const unsigned int g) {
       double largest = 0.;
@@ -185,7 +185,7 @@ namespace
         worst_dense  = std::max(worst_dense, (u1 - u2).cwiseAbs().maxCoeff());
         worst_direct = std::max(worst_direct, (u1 - u3).cwiseAbs().maxCoeff());
         worst_u      = std::max(worst_u, (u1 - u4).cwiseAbs().maxCoeff());
-        contact::PatchLoad load(P);
+        convolution::PatchLoad load(P);
         Eigen::VectorXd    next(P);
         for (unsigned int p = 0; p < P; ++p)
           next(p) = u(random);
@@ -213,7 +213,7 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   // The undamped mode cannot be convolved (Re lambda = 0): give it a little damping.
   auto s             = known_synthesis();
   s.damping_ratio(3) = 0.01;
-  const auto d       = recursion_differences(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.));
+  const auto d       = recursion_differences(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.));
   BOOST_TEST_MESSAGE("rank-one recursion against the full form " << d[0]
                      << ", against the direct sum " << d[1] << "; influences " << d[2]
                      << "; displacement alone, then the velocity " << d[3]);
@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
 BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
 {
   // The displacement of a continuous force is updated in time blocks
-  // (contact/mode_patch_convolution.h): free responses summed once per block
+  // (convolution/mode_patch_convolution.h): free responses summed once per block
   // and lag kernels for the loads inside it. Against the step-by-step update
   // (block length 1) and the direct convolution sum, over 300 steps of a
   // force that is continuous, with points leaving and entering contact, the
@@ -237,7 +237,7 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
   const unsigned int P = 12, m = 150, n = 300;
   std::mt19937       random(5);
   std::uniform_real_distribution<double> u(0., 1.);
-  modal::ModeSynthesis s;
+  synthesis::ModeSynthesis s;
   s.frequency_hz.resize(m);
   s.damping_ratio.resize(m);
   s.shapes.resize(m, P);
@@ -258,17 +258,17 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
     s.points.push_back({{0.01 * p, 0.002 * p, 0.27}});
   s.wavenumber          = std::vector<unsigned int>(m, 0);
   s.residual_relaxation = 5e-6;
-  const auto   model    = modal::to_patch_model(s, Eigen::MatrixXd(), 1e4);
+  const auto   model    = synthesis::to_patch_model(s, Eigen::MatrixXd(), 1e4);
   const double dt       = 1.5e-5;
-  using contact::ShapePrecision;
-  auto step   = contact::make_rank_one_patch_convolution(model, dt, 2,
+  using convolution::ShapePrecision;
+  auto step   = convolution::make_rank_one_patch_convolution(model, dt, 2,
                                                        ShapePrecision::double_precision, 1);
-  auto direct = contact::make_direct_patch_convolution(model, dt, n + 1);
-  std::vector<std::unique_ptr<contact::PatchConvolution>> blocked;
+  auto direct = convolution::make_direct_patch_convolution(model, dt, n + 1);
+  std::vector<std::unique_ptr<convolution::PatchConvolution>> blocked;
   for (const unsigned int J : {4u, 8u, 16u})
-    blocked.push_back(contact::make_rank_one_patch_convolution(
+    blocked.push_back(convolution::make_rank_one_patch_convolution(
       model, dt, 2, ShapePrecision::double_precision, J));
-  auto single = contact::make_rank_one_patch_convolution(model, dt, 2,
+  auto single = convolution::make_rank_one_patch_convolution(model, dt, 2,
                                                          ShapePrecision::single_precision, 16);
   Eigen::VectorXd q0 = Eigen::VectorXd::Constant(P, 50.);
   for (auto *c : {step.get(), direct.get(), single.get()})
@@ -301,7 +301,7 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
         }
       single->history_u(u2);
       worst_single = std::max(worst_single, (u1 - u2).cwiseAbs().maxCoeff());
-      contact::PatchLoad load(P);
+      convolution::PatchLoad load(P);
       load.component[1] = k == 201 ? Eigen::VectorXd(0.9 * previous) : previous;
       for (unsigned int p = 0; p < P; ++p)
         load.component[2](p) = (k / 20 + p) % 3 == 0 ? 0. : 100. * u(random);
@@ -321,7 +321,7 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
   BOOST_TEST(worst_direct / size < 1e-9);
   BOOST_TEST(worst_single / size < 1e-6);
   BOOST_TEST(worst_single / size > 1e-12); // the shapes are rounded: not the double path
-  BOOST_CHECK_THROW(contact::make_rank_one_patch_convolution(
+  BOOST_CHECK_THROW(convolution::make_rank_one_patch_convolution(
                       model, dt, 2, ShapePrecision::double_precision, 5),
                     std::logic_error);
 }
@@ -335,8 +335,8 @@ BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_round
   // epsilon, and far below the synthesis' own error (E of 1e-3).
   auto s             = known_synthesis();
   s.damping_ratio(3) = 0.01;
-  const auto model   = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
-  const auto d       = recursion_differences(model, contact::ShapePrecision::single_precision);
+  const auto model   = synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto d       = recursion_differences(model, convolution::ShapePrecision::single_precision);
   BOOST_TEST_MESSAGE("single-precision shapes: against the full form " << d[0]
                      << ", against the direct sum " << d[1] << "; displacement alone, then the "
                      << "velocity " << d[3]);
@@ -350,7 +350,7 @@ BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_round
 BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
 {
   // Modes coupled by a damping that is not proportional have complex shapes
-  // psi = a + j b (periodic/ring_modes.h): mode k contributes
+  // psi = a + j b (synthesis/ring_modes.h): mode k contributes
   //   psi psi^T / (2 j w_d (j w - l)) - conj(psi) conj(psi)^T / (2 j w_d (j w - conj(l))).
   // That sum written out here against the synthesis and its pole-residue
   // form, then the rank-one recursion with complex shapes against the full
@@ -365,7 +365,7 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
   for (Eigen::Index k = 0; k < s.shapes.rows(); ++k)
     for (Eigen::Index p = 0; p < s.shapes.cols(); ++p)
       s.shapes_imag(k, p) = u(random);
-  const auto model = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto model = synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   double     worst = 0., worst_model = 0.;
   for (const double f : {0., 50., 119., 311., 640., 1000., 2500., 5000.})
     {
@@ -402,13 +402,13 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
   BOOST_TEST(d[1] < 1e-9);
   BOOST_TEST(d[2] < 1e-12);
   BOOST_TEST(d[3] < 1e-12);
-  const auto single = recursion_differences(model, contact::ShapePrecision::single_precision);
+  const auto single = recursion_differences(model, convolution::ShapePrecision::single_precision);
   BOOST_TEST_MESSAGE("complex shapes in single precision: against the full form " << single[0]);
   BOOST_TEST(single[0] < 1e-6);
   BOOST_TEST(single[3] < 1e-6);
   // A complex shape on an over-critical mode has no pole pair: refused.
   s.damping_ratio(2) = 1.5;
-  BOOST_CHECK_THROW(modal::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
+  BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
 }
 
 BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_line)
@@ -424,7 +424,7 @@ BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_l
   const double       df = 15.625;
   std::mt19937                           random(19);
   std::uniform_real_distribution<double> u(-1., 1.);
-  modal::ModeSynthesis                   s;
+  synthesis::ModeSynthesis                   s;
   s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 60., 20000.);
   s.damping_ratio = Eigen::VectorXd::Constant(m, 0.02);
   s.frequency_hz(150) = 4000. * 1.249; // just below the split, lightly damped
@@ -472,24 +472,24 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
   auto s                = known_synthesis();
   s.damping_ratio(7)    = 1.3;
   s.residual_relaxation = 7e-6;
-  const auto model      = modal::to_patch_model(s, Eigen::MatrixXd(), 4000.);
+  const auto model      = synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   BOOST_TEST(model.n_terms() == 11u + 7u);
   BOOST_TEST(model.instantaneous.size() == 0);
   const double worst = pole_residue_error(s, model);
   BOOST_TEST_MESSAGE("relaxing residual, pole-residue form against the closed form: " << worst);
   BOOST_TEST(worst < 1e-11);
 
-  modal::ModeSynthesis residual;
+  synthesis::ModeSynthesis residual;
   residual.frequency_hz.resize(0);
   residual.damping_ratio.resize(0);
   residual.shapes.resize(0, 7);
   residual.instantaneous       = s.instantaneous;
   residual.points              = s.points;
   residual.residual_relaxation = s.residual_relaxation;
-  const auto         alone     = modal::to_patch_model(residual, Eigen::MatrixXd(), 4000.);
+  const auto         alone     = synthesis::to_patch_model(residual, Eigen::MatrixXd(), 4000.);
   const double       dt = 4e-6, beta = residual.residual_relaxation, T = 5 * dt;
   const unsigned int P           = 7;
-  auto               convolution = contact::make_modal_patch_convolution(alone, dt, 1);
+  auto               convolution = convolution::make_modal_patch_convolution(alone, dt, 1);
   BOOST_TEST(convolution->influence().instantaneous);
   Eigen::VectorXd Q(P);
   for (unsigned int p = 0; p < P; ++p)
@@ -508,7 +508,7 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
     {
       Eigen::VectorXd uh(P), vh(P);
       convolution->history(uh, vh);
-      contact::PatchLoad load(P);
+      convolution::PatchLoad load(P);
       load.component[1]         = load_at(n * dt);
       load.component[2]         = load_at((n + 1) * dt);
       const auto           &psi = convolution->influence();
@@ -529,7 +529,7 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
   // point and a transfer: every isolated mode (no other within 10%) that
   // carries at least 0.1% of the function's peak is found within 1e-3 in
   // frequency.
-  modal::ModeSynthesis s;
+  synthesis::ModeSynthesis s;
   const double f[7]  = {180., 420., 430., 900., 1500., 2300., 3300.};
   const double xi[7] = {0.02, 0.03, 0.03, 0.02, 0.04, 0.03, 0.05};
   s.frequency_hz     = Eigen::Map<const Eigen::VectorXd>(f, 7);
@@ -546,7 +546,7 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
   parameters.upper_residual = true;
   for (const auto &[i, j] : {std::pair<unsigned, unsigned>{0, 0}, {0, 2}})
     {
-      modal::FrequencyResponse frf;
+      base::FrequencyResponse frf;
       frf.df = 4.;
       for (unsigned int l = 0; l <= 1000; ++l)
         frf.values.push_back(s.at(2. * M_PI * l * frf.df)(i, j));
@@ -584,9 +584,9 @@ BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
   auto       s          = known_synthesis();
   s.residual_relaxation = 3.5e-6;
   base::ParameterRecord record;
-  modal::write_modal_model(file, s, record, "key 1");
-  BOOST_TEST(modal::read_modal_model_key(file.string()) == "key 1");
-  const auto r = modal::read_modal_model(file.string());
+  synthesis::write_modal_model(file, s, record, "key 1");
+  BOOST_TEST(synthesis::read_modal_model_key(file.string()) == "key 1");
+  const auto r = synthesis::read_modal_model(file.string());
   BOOST_TEST((r.frequency_hz - s.frequency_hz).cwiseAbs().maxCoeff() == 0.);
   BOOST_TEST((r.damping_ratio - s.damping_ratio).cwiseAbs().maxCoeff() == 0.);
   BOOST_TEST((r.shapes - s.shapes).cwiseAbs().maxCoeff() == 0.);
@@ -603,8 +603,8 @@ BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
     h5.create_dataset<double>("frequency_hz", {1}).write(std::vector<double>{1.});
     h5.set_attribute("stage_key", std::string("key 1"));
   }
-  BOOST_TEST(modal::read_modal_model_key((dir / "partial.h5").string()).empty());
-  BOOST_CHECK_EXCEPTION(modal::read_modal_model((dir / "partial.h5").string()), InputError,
+  BOOST_TEST(synthesis::read_modal_model_key((dir / "partial.h5").string()).empty());
+  BOOST_CHECK_EXCEPTION(synthesis::read_modal_model((dir / "partial.h5").string()), InputError,
                         [](const InputError &e) {
                           return std::string(e.what()).find("partial.h5") != std::string::npos;
                         });

@@ -129,8 +129,8 @@ namespace
       forces[run].push_back(s.force);
     };
     ConvolutionComparison c;
-    auto modal  = contact::make_modal_patch_convolution(model, dt, 2);
-    auto direct = contact::make_direct_patch_convolution(model, dt, n_steps + 1);
+    auto modal  = convolution::make_modal_patch_convolution(model, dt, 2);
+    auto direct = convolution::make_direct_patch_convolution(model, dt, n_steps + 1);
     c.modal     = contact::roll(*modal, demand, n_steps, Eigen::VectorXd(), observe);
     run         = 1;
     c.direct    = contact::roll(*direct, demand, n_steps, Eigen::VectorXd(), observe);
@@ -172,7 +172,7 @@ namespace
       r.error        = std::max(r.error, max_abs(s.force - ref.q));
       r.peak         = std::max(r.peak, max_abs(ref.q));
     };
-    auto conv = contact::make_modal_patch_convolution(model, dt);
+    auto conv = convolution::make_modal_patch_convolution(model, dt);
     r.summary = contact::roll(*conv, demand, static_cast<unsigned int>(0.02 / V / dt), eq.q, observe);
     return r;
   }
@@ -219,13 +219,13 @@ BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
   const auto one_mode = osc.modal_model();
   for (const auto &term : one_mode.terms())
     {
-      BOOST_REQUIRE(term.kind == convolution::ModalTerm::Kind::complex_pair);
+      BOOST_REQUIRE(term.kind == modal::ModalTerm::Kind::complex_pair);
       model.lambda.push_back(term.lambda);
       model.real.push_back(false);
       model.residues.push_back(Eigen::MatrixXcd::Constant(1, 1, term.residue));
     }
   model.errors = Eigen::MatrixXd::Zero(1, 1);
-  auto       conv = contact::make_modal_patch_convolution(model, dt);
+  auto       conv = convolution::make_modal_patch_convolution(model, dt);
   const auto flight = [&](const double t, double &u, double &v) {
     osc.free_motion(track.height(0.), 0., t, u, v);
   };
@@ -280,7 +280,7 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
   BOOST_TEST(std::abs(gap.dot(eq.q)) < 1e-12 * 100.);
   BOOST_TEST(eq.n_contact < model.n_points()); // the tread's curvature lifts the ends
 
-  auto conv = contact::make_modal_patch_convolution(model, 1e-5);
+  auto conv = convolution::make_modal_patch_convolution(model, 1e-5);
   const auto demand = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
     d  = (-tread.array() + eq.delta).matrix();
     dd = Eigen::VectorXd::Zero(d.size());
@@ -381,7 +381,7 @@ BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
     else
       first_peak = std::max(first_peak, s.force.sum());
   };
-  auto       conv = contact::make_modal_patch_convolution(model, dt);
+  auto       conv = convolution::make_modal_patch_convolution(model, dt);
   const auto s    = contact::roll(*conv, demand, n_steps, Eigen::VectorXd(), observe);
   const double expected = 80. * (n_steps * dt - t_settle);
   BOOST_TEST_MESSAGE("impulse after the start-up " << late_impulse << " N s, static load times "
@@ -413,9 +413,9 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
 BOOST_AUTO_TEST_CASE(bad_input_is_refused)
 {
   const auto model = synthetic_patch();
-  BOOST_CHECK_THROW(contact::make_modal_patch_convolution(model, 0.), InputError);
-  BOOST_CHECK_THROW(contact::make_modal_patch_convolution(model, NAN), InputError);
-  auto       conv   = contact::make_modal_patch_convolution(model, 1e-5);
+  BOOST_CHECK_THROW(convolution::make_modal_patch_convolution(model, 0.), InputError);
+  BOOST_CHECK_THROW(convolution::make_modal_patch_convolution(model, NAN), InputError);
+  auto       conv   = convolution::make_modal_patch_convolution(model, 1e-5);
   const auto demand = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
     d  = Eigen::VectorXd::Constant(d.size(), NAN);
     dd = Eigen::VectorXd::Zero(d.size());

@@ -64,10 +64,10 @@ namespace
       return sum + (constant ? c : c * wr / (jw + wr));
     }
 
-    modal::FrequencyResponseMatrix
+    base::FrequencyResponseMatrix
     sample(const double df, const unsigned int n_lines) const
     {
-      modal::FrequencyResponseMatrix m;
+      base::FrequencyResponseMatrix m;
       m.df      = df;
       m.n_lines = n_lines;
       for (unsigned int i = 0; i < n; ++i)

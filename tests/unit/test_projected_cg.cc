@@ -6,11 +6,11 @@
 // static start by both solvers.
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_grid.h>
-#include <greentread/contact/lattice_convolution.h>
+#include <greentread/convolution/lattice_convolution.h>
 #include <greentread/contact/lcp.h>
 #include <greentread/contact/projected_cg.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/road/texture.h>
 
@@ -63,7 +63,7 @@ BOOST_AUTO_TEST_CASE(lattice_convolution_equals_the_dense_product)
   // rectangle wide), applied by FFT and as the dense matrix.
   for (const auto &[nx, ny] : {std::pair<unsigned int, unsigned int>{7, 9}, {1, 5}, {12, 3}})
     {
-      const contact::LatticeConvolution L(
+      const convolution::LatticeConvolution L(
         contact::layer_lattice_kernel(tread_layer, 1.5e-3, 1.67e-3, nx, ny, 0.032));
       const Eigen::VectorXd x = random_vector(nx * ny, nx + ny);
       Eigen::VectorXd       y;
@@ -77,8 +77,8 @@ BOOST_AUTO_TEST_CASE(lattice_convolution_equals_the_dense_product)
       L.apply(in_place, in_place);
       BOOST_TEST((in_place - y).cwiseAbs().maxCoeff() == 0.);
     }
-  BOOST_CHECK_THROW(contact::LatticeConvolution(Eigen::MatrixXd::Constant(2, 2, NAN)), InputError);
-  const contact::LatticeConvolution L(Eigen::MatrixXd::Ones(2, 2));
+  BOOST_CHECK_THROW(convolution::LatticeConvolution(Eigen::MatrixXd::Constant(2, 2, NAN)), InputError);
+  const convolution::LatticeConvolution L(Eigen::MatrixXd::Ones(2, 2));
   Eigen::VectorXd                   y;
   BOOST_CHECK_THROW(L.apply(Eigen::VectorXd::Ones(3), y), InputError);
 }
@@ -206,8 +206,8 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   // 3 grid from the static start: the matrix-free solver against pivoting.
   const auto                 coarse = coarse_points(4, 3);
   const unsigned int         n_c    = coarse.size();
-  const modal::ModeSynthesis s      = test::synthetic_modes(coarse);
-  const modal::PatchModel model = modal::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+  const synthesis::ModeSynthesis s      = test::synthetic_modes(coarse);
+  const modal::PatchModel model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid pivoting(coarse, 3, tread_layer), free(coarse, 3, tread_layer, true);
   std::vector<road::WavelengthBand> bands;

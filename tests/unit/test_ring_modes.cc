@@ -4,11 +4,11 @@
 // proportional damping the synthesis is exact; with a cut-off it converges).
 #include "coarse_tyre.h"
 #include <greentread/base/exceptions.h>
-#include <greentread/modal/mode_synthesis.h>
-#include <greentread/periodic/bloch_modes.h>
+#include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
-#include <greentread/periodic/ring_modes.h>
-#include <greentread/periodic/shared_pattern.h>
+#include <greentread/synthesis/ring_modes.h>
+#include <greentread/synthesis/shared_pattern.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -57,21 +57,21 @@ namespace
     return solver->solve(omega, diagnostics);
   }
 
-  modal::ModeSynthesis
-  synthesis(const test::CoarseTyre &tyre, const periodic::RingModes &modes)
+  synthesis::ModeSynthesis
+  synthesis_of(const test::CoarseTyre &tyre, const synthesis::RingModes &modes)
   {
     std::vector<std::array<double, 3>> points;
     for (const auto &p : tyre.patch.points)
       points.push_back({{p.x, p.y, p.radius}});
-    return modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag,
+    return synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag,
                              direct(tyre, 0.).real(), points);
   }
 
   /// The direct Bloch Green's functions every 50 Hz from 0 to 2 kHz.
-  modal::FrequencyResponseMatrix
+  base::FrequencyResponseMatrix
   lines_to_2khz(const test::CoarseTyre &tyre)
   {
-    modal::FrequencyResponseMatrix lines;
+    base::FrequencyResponseMatrix lines;
     lines.df      = 50.;
     lines.n_lines = 41;
     for (const auto &p : tyre.patch.points)
@@ -101,7 +101,7 @@ BOOST_AUTO_TEST_CASE(bloch_modes_equal_a_dense_eigen_solve)
   // 3 a complex Hermitian one.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request());
-  periodic::ModeSearch   search;
+  synthesis::ModeSearch   search;
   search.cutoff = 2. * M_PI * 3000.;
   for (const unsigned int k : {0u, 3u, N / 2})
     {
@@ -119,7 +119,7 @@ BOOST_AUTO_TEST_CASE(bloch_modes_equal_a_dense_eigen_solve)
         continue;
       search.slices = std::max(slices, 1u);
       search.cutoff = 2. * M_PI * (slices == 0 ? 60000. : 3000.);
-      const auto modes = periodic::bloch_modes(tyre.periodic_cell, k, search);
+      const auto modes = synthesis::bloch_modes(tyre.periodic_cell, k, search);
       Eigen::Index expected = 0;
       while (expected < dense.eigenvalues().size() &&
              dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
@@ -171,11 +171,11 @@ BOOST_AUTO_TEST_CASE(every_mode_and_proportional_damping_give_the_bloch_solve)
   // and the static residual G_r vanishes.
   const unsigned int     N = 12;
   const test::CoarseTyre tyre(N, patch_request(), false);
-  periodic::ModeSearch   search;
+  synthesis::ModeSearch   search;
   search.cutoff    = 2. * M_PI * 1e7;
   search.tolerance = 1e-7;
-  const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
-  const auto model = synthesis(tyre, modes);
+  const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
+  const auto model = synthesis_of(tyre, modes);
   const unsigned int n_bloch = tyre.periodic_cell.n_face + tyre.periodic_cell.n_interior;
   BOOST_TEST_MESSAGE(modes.size() << " ring modes from cells of " << n_bloch << " DoFs, up to "
                                   << modes.omega.maxCoeff() / (2. * M_PI) << " Hz");
@@ -202,20 +202,20 @@ BOOST_AUTO_TEST_CASE(coupled_modes_equal_the_direct_solve_in_their_subspace)
   // A_k(r, q) the Bloch mode r under point q's load.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request(), true);
-  periodic::ModeSearch   search;
+  synthesis::ModeSearch   search;
   search.cutoff    = 2. * M_PI * 3000.;
-  const auto modes = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+  const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                           MPI_COMM_SELF, false);
   BOOST_TEST_REQUIRE(modes.uncoupled == 0u);
   BOOST_TEST_REQUIRE(modes.shapes_imag.size() > 0);
-  const auto         model = synthesis(tyre, modes);
+  const auto         model = synthesis_of(tyre, modes);
   const Eigen::Index P     = tyre.patch.points.size();
-  std::vector<periodic::BlochModes> bloch;
+  std::vector<synthesis::BlochModes> bloch;
   std::vector<Eigen::MatrixXcd>     A;
   double                            coupling = 0.;
   for (unsigned int k = 0; k < N; ++k)
     {
-      bloch.push_back(periodic::bloch_modes(tyre.periodic_cell, k, search));
+      bloch.push_back(synthesis::bloch_modes(tyre.periodic_cell, k, search));
       const auto      &b   = bloch.back();
       const double     phi = 2. * M_PI * k / N;
       Eigen::MatrixXcd a   = Eigen::MatrixXcd::Zero(b.omega.size(), P);
@@ -262,19 +262,19 @@ BOOST_AUTO_TEST_CASE(a_cutoff_converges_and_stays_passive)
   // coupling's floor: 0.65% at 5 and 10 kHz.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request(), true);
-  const modal::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
+  const base::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
   std::vector<double> worst, diagonal;
   for (const double cutoff : {2500., 5000., 10000.})
     for (const bool couple : {true, false})
       {
         if (!couple && cutoff < 5000.)
           continue;
-        periodic::ModeSearch search;
+        synthesis::ModeSearch search;
         search.cutoff     = 2. * M_PI * cutoff;
-        const auto modes  = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+        const auto modes  = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                                  MPI_COMM_SELF, false, couple);
-        const auto model  = synthesis(tyre, modes);
-        const auto errors = modal::compare(model, direct_lines);
+        const auto model  = synthesis_of(tyre, modes);
+        const auto errors = synthesis::compare(model, direct_lines);
         BOOST_TEST_MESSAGE("cut-off " << cutoff << " Hz, " << modes.size()
                                       << (couple ? " coupled" : " diagonal")
                                       << " modes: E median " << errors.median << ", worst "
@@ -300,13 +300,13 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   // and a 10 kHz cut-off, E is below 1e-3 for every pair.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request(), false);
-  const modal::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
-  periodic::ModeSearch search;
+  const base::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
+  synthesis::ModeSearch search;
   search.cutoff     = 2. * M_PI * 10000.;
-  const auto modes  = periodic::ring_modes(tyre.periodic_cell, tyre.patch, search,
+  const auto modes  = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
                                            MPI_COMM_SELF, false);
-  auto       model  = synthesis(tyre, modes);
-  const auto errors = modal::compare(model, direct_lines);
+  auto       model  = synthesis_of(tyre, modes);
+  const auto errors = synthesis::compare(model, direct_lines);
   BOOST_TEST_MESSAGE("proportional damping, " << modes.size() << " modes: E median "
                                                << errors.median << ", worst " << errors.worst);
   BOOST_TEST(errors.worst < 1e-3);
@@ -315,8 +315,8 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   // j w (b + a / w_k^2)) - w^2): nearly G_r / (1 + j w b), b = eta / (w1 +
   // w2) the stiffness-proportional coefficient of C. The relaxation fitted
   // to the lines is b within 5%, and it takes E down by at least 3 times.
-  model.residual_relaxation = modal::fit_residual_relaxation(model, direct_lines);
-  const auto   relaxed      = modal::compare(model, direct_lines);
+  model.residual_relaxation = synthesis::fit_residual_relaxation(model, direct_lines);
+  const auto   relaxed      = synthesis::compare(model, direct_lines);
   const double b            = fe::rayleigh_coefficients(0.05, 200., 2000.).second;
   BOOST_TEST_MESSAGE("residual relaxation " << model.residual_relaxation << " s, b = " << b
                                             << "; E median " << relaxed.median << ", worst "
@@ -330,11 +330,11 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   // the fit and compare() reuse it. The same beta_r and E as each computing
   // the sum itself at every line, above, to round-off: E is relative to
   // |g|, so it moves by about the lines' relative difference (1e-14).
-  modal::ModalLines kept;
-  const auto        staged = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+  synthesis::ModalLines kept;
+  const auto        staged = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
                                                modes.shapes_imag, direct_lines, &kept);
   BOOST_TEST_REQUIRE(kept.matches(direct_lines));
-  const auto reused = modal::compare(staged, direct_lines, &kept);
+  const auto reused = synthesis::compare(staged, direct_lines, &kept);
   BOOST_TEST(std::abs(staged.residual_relaxation / model.residual_relaxation - 1.) < 1e-12);
   BOOST_TEST(std::abs(reused.worst - relaxed.worst) < 1e-12);
   BOOST_TEST(std::abs(reused.median - relaxed.median) < 1e-12);
@@ -380,7 +380,7 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
   BOOST_TEST(moved < 0.2);
   BOOST_TEST(std::abs(m1 - m0) < 1e-12 * m0);
 
-  periodic::ModeSearch search;
+  synthesis::ModeSearch search;
   search.cutoff = 2. * M_PI * 3000.;
   for (const unsigned int k : {0u, 3u})
     {
@@ -407,7 +407,7 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
       condensed = (0.5 * (condensed + condensed.adjoint())).eval();
       const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> dense(condensed,
                                                                              block(M, r, r));
-      const auto modes = periodic::bloch_modes(cell, k, search);
+      const auto modes = synthesis::bloch_modes(cell, k, search);
       Eigen::Index expected = 0;
       while (expected < dense.eigenvalues().size() &&
              dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
@@ -440,7 +440,7 @@ BOOST_AUTO_TEST_CASE(shared_pattern_products_equal_eigens)
     return periodic::SparseComplex(bloch.assemble(2. * M_PI * 3. / 8.));
   };
   const periodic::SparseComplex K = part(1., 0., 0.), C = part(0., 1., 0.), M = part(0., 0., 1.);
-  const periodic::internal::SharedPattern KM({&K, &M}), CC({&C});
+  const synthesis::internal::SharedPattern KM({&K, &M}), CC({&C});
   for (const Eigen::Index b : {1, 4, 6, 9})
     {
       const Eigen::MatrixXcd X = Eigen::MatrixXcd::Random(K.rows(), b);
@@ -461,7 +461,7 @@ BOOST_AUTO_TEST_CASE(shared_pattern_products_equal_eigens)
   periodic::SparseComplex other = K;
   other.coeffRef(0, K.cols() - 1) += 1.;
   BOOST_TEST_REQUIRE(other.nonZeros() == K.nonZeros() + 1);
-  BOOST_CHECK_THROW(periodic::internal::SharedPattern({&K, &other}), NumericalError);
+  BOOST_CHECK_THROW(synthesis::internal::SharedPattern({&K, &other}), NumericalError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/periodic/contact_patch.h>
 
 #include <filesystem>
@@ -39,7 +39,7 @@ namespace greentread
      */
     GreenPairFiles
     write_green_pairs(const std::filesystem::path                              &directory,
-                      const modal::FrequencyResponseMatrix                     &green,
+                      const base::FrequencyResponseMatrix                     &green,
                       const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                       const std::string                                        &title,
                       const base::ParameterRecord                              &record);
@@ -50,7 +50,7 @@ namespace greentread
      * that the regression tests' absolute tolerance sees them.
      */
     std::string
-    summarise_pairs(const modal::FrequencyResponseMatrix                     &green,
+    summarise_pairs(const base::FrequencyResponseMatrix                     &green,
                     const std::vector<std::pair<unsigned int, unsigned int>> &pairs);
   } // namespace analysis
 } // namespace greentread

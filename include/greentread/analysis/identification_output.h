@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/identification.h>
 
 #include <filesystem>
@@ -62,7 +62,7 @@ namespace greentread
      */
     bool
     write_worst_fit(const std::filesystem::path    &directory,
-                    const modal::FrequencyResponse &frf,
+                    const base::FrequencyResponse &frf,
                     const modal::Identification    &fit,
                     std::pair<unsigned int, unsigned int> pair,
                     const base::ParameterRecord    &record);

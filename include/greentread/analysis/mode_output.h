@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <filesystem>
 
@@ -24,7 +24,7 @@ namespace greentread
      */
     void
     write_dispersion(const std::filesystem::path &directory,
-                     const modal::Dispersion     &dispersion,
+                     const synthesis::Dispersion     &dispersion,
                      double                       cutoff_hz,
                      const base::ParameterRecord &record);
 
@@ -36,8 +36,8 @@ namespace greentread
      */
     void
     report_synthesis(const std::filesystem::path   &directory,
-                     const modal::ModeSynthesis    &synthesis,
-                     const modal::SynthesisErrors  &errors,
+                     const synthesis::ModeSynthesis    &synthesis,
+                     const synthesis::SynthesisErrors  &errors,
                      const base::ParameterRecord   &record);
   } // namespace analysis
 } // namespace greentread

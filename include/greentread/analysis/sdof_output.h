@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/sdof/exact_solution.h>
 #include <greentread/sdof/sdof_solver.h>
@@ -22,7 +22,7 @@ namespace greentread
   {
     /// modal_parameters.csv: `i,j,lambda_re,lambda_im,R_re,R_im`, one row per pole.
     void
-    write_modal_parameters(const std::filesystem::path &file, const convolution::ModalModel &model,
+    write_modal_parameters(const std::filesystem::path &file, const modal::ModalModel &model,
                            const base::ParameterRecord &record);
 
     /// time_history.csv: `t,u,v,F` of @p run.

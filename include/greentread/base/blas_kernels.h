@@ -10,7 +10,7 @@
  * built for every x86 processor and picks its kernels when the library is
  * loaded. A processor newer than it knows (this project's Intel Xeon,
  * family 6 model 207) gets the oldest, Prescott's (SSE3): LAPACK's zgeev of
- * the damping's coupling (periodic/ring_modes.h) then took twice as long as
+ * the damping's coupling (synthesis/ring_modes.h) then took twice as long as
  * with the AVX-512 kernels (benchmarks/mode_search_cost: 1.10 s against
  * 0.57 s over its five wavenumbers). OpenBLAS reads OPENBLAS_CORETYPE only
  * when it is loaded, so the choice takes a new process image.

@@ -84,6 +84,10 @@ namespace greentread
       std::string allowed;
     };
 
+    /// The text without its leading and trailing blanks (spaces, tabs, CR, LF).
+    std::string
+    trim(const std::string &s);
+
     /// The non-empty items of a comma-separated list, trimmed.
     std::vector<std::string>
     split_list(const std::string &text);

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <greentread/contact/elastic_layer.h>
-#include <greentread/contact/lattice_convolution.h>
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/lattice_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/contact/rolling.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -59,7 +59,7 @@
  *   (refused above).
  * - `projected CG`: no N x N matrix. The compliance is applied as
  *   $A^T (G (A f)) + (I - P) L_f (I - P) f$, L_f by FFT on the lattice
- *   (greentread/contact/lattice_convolution.h), and each step's LCP is the
+ *   (greentread/convolution/lattice_convolution.h), and each step's LCP is the
  *   bound-constrained quadratic programme solved by MPRGP
  *   (greentread/contact/projected_cg.h), warm-started from the last step's
  *   forces. O(N log N) per product; it needs a reciprocal (symmetric) patch
@@ -178,7 +178,7 @@ namespace greentread
       /// The solver: `projected CG` (true) or `pivoting`.
       bool matrix_free = false;
       /// \f$L_f\f$ on the lattice, by FFT; empty when s = 1.
-      std::shared_ptr<const LatticeConvolution> layer_product;
+      std::shared_ptr<const convolution::LatticeConvolution> layer_product;
 
     private:
       unsigned int n_coarse = 0;
@@ -190,8 +190,8 @@ namespace greentread
      * its history seen by each contact point, plus the local term at the end
      * of each step. With s = 1, @p coarse itself.
      */
-    std::unique_ptr<PatchConvolution>
-    make_grid_convolution(std::unique_ptr<PatchConvolution> coarse, const ContactGrid &grid);
+    std::unique_ptr<convolution::PatchConvolution>
+    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse, const ContactGrid &grid);
 
     /**
      * @brief contact::start_contact() on the grid: the static compliance

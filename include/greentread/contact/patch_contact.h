@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/contact/kinematic_contact.h>
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/contact/lcp.h>
 #include <greentread/modal/patch_model.h>
 
@@ -17,7 +17,7 @@
  * @file
  * Kinematic contact of a whole patch of N_p points (Section 5): the
  * complementarity problem of one step, and the time loop that advances the
- * convolution of greentread/contact/patch_convolution.h. Implemented in
+ * convolution of greentread/convolution/patch_convolution.h. Implemented in
  * source/contact/patch_contact.cc.
  *
  * Conventions: a contact force q_j >= 0 pushes tread point j towards the
@@ -74,7 +74,7 @@ namespace greentread
     public:
       /// @p n_points: the patch's (the influence's matrices may be empty,
       /// PatchInfluence::add_u).
-      PatchKinematicContact(const PatchInfluence &psi, unsigned int n_points);
+      PatchKinematicContact(const convolution::PatchInfluence &psi, unsigned int n_points);
 
       /**
        * @param[in] uh, vh History terms at t_{n+1}.
@@ -83,7 +83,7 @@ namespace greentread
        */
       PatchStepReport
       solve(const Eigen::VectorXd &uh, const Eigen::VectorXd &vh, const Eigen::VectorXd &d,
-            const Eigen::VectorXd &dd, PatchLoad &load);
+            const Eigen::VectorXd &dd, convolution::PatchLoad &load);
 
       /// The force at the start of the next step (for a start from a static
       /// equilibrium, its loads).
@@ -99,12 +99,12 @@ namespace greentread
        * reciprocal positive matrix, so the LCP is well posed.
        */
       PatchStepReport
-      solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, PatchLoad &load);
+      solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, convolution::PatchLoad &load);
 
       Eigen::VectorXd                      previous_end;
       double                               end_norm = 0.; // of psi.u[2], continuous path
       Eigen::MatrixXd                      lcp_matrix; // the last round's, iterative path
-      const PatchInfluence                &psi;
+      const convolution::PatchInfluence                &psi;
       /// The matrix-free form: MPRGP (projected_cg.h) on \f$\Psi^u_{end}\f$.
       bool                                 matrix_free = false;
       std::vector<KinematicContact>        rules;
@@ -151,7 +151,7 @@ namespace greentread
      * not finite.
      */
     RollingSummary
-    roll(PatchConvolution                                                  &convolution,
+    roll(convolution::PatchConvolution                                                  &convolution,
          const std::function<void(double t, Eigen::VectorXd &d, Eigen::VectorXd &dd)> &demand,
          unsigned int                                                       n_steps,
          const Eigen::VectorXd                                             &start_force,

@@ -39,7 +39,7 @@ namespace greentread
       unsigned int           direct_kernel = 0; ///< steps kept by `direct`; 0: the whole run
       unsigned int           threads       = 1; ///< of the modal recursion
       /// of the rank-one modal recursion's shapes
-      ShapePrecision shape_precision = ShapePrecision::double_precision;
+      convolution::ShapePrecision shape_precision = convolution::ShapePrecision::double_precision;
     };
 
     /**
@@ -85,11 +85,11 @@ namespace greentread
      * @throws InputError if `direct` would store more than 8 GB of kernels,
      * naming the parameters that shorten it.
      */
-    std::unique_ptr<PatchConvolution>
+    std::unique_ptr<convolution::PatchConvolution>
     make_patch_convolution(convolution::Method method, const modal::PatchModel &model,
                            double dt, unsigned int n_steps, unsigned int direct_kernel,
                            unsigned int   threads,
-                           ShapePrecision precision = ShapePrecision::double_precision);
+                           convolution::ShapePrecision precision = convolution::ShapePrecision::double_precision);
 
     /**
      * @brief Roll @p model over @p road from @p start (start_contact()): the
@@ -105,7 +105,7 @@ namespace greentread
     /// run without the making of the kernels); @p setup.convolution and
     /// @p setup.threads are not used.
     RollingSummary
-    roll_patch(PatchConvolution &convolution, const Eigen::VectorXd &tread,
+    roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
                const PatchRoadHeights &road, const StaticContact &start,
                const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe);
   } // namespace contact

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -22,7 +22,7 @@ namespace greentread
       double              indentation = 0.;
       bool                static_start = true;
       convolution::Method convolution = convolution::Method::modal_recursive;
-      ShapePrecision      shape_precision = ShapePrecision::single_precision; // Convolution/Shape precision
+      convolution::ShapePrecision      shape_precision = convolution::ShapePrecision::single_precision; // convolution::Convolution/Shape precision
       unsigned int        direct_kernel = 0;
       unsigned int        frames = 40;
       double              stress_reference = 100.;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/convolution/convolution.h>
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -70,7 +70,7 @@ namespace greentread
      */
     std::unique_ptr<Convolution>
     create(const ConvolutionParameters &parameters,
-           const ModalModel            &model,
+           const modal::ModalModel            &model,
            double                       dt,
            unsigned int                 n_steps,
            const ImpulseResponse       *exact = nullptr);

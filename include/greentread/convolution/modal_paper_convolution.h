@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/convolution/convolution.h>
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 
 #include <complex>
 #include <vector>
@@ -38,7 +38,7 @@ namespace greentread
       /// Growth factor past which the run is stopped (no digit left).
       static constexpr double limit_growth = 4.5e15;
 
-      ModalPaperConvolution(const ModalModel &model, double dt);
+      ModalPaperConvolution(const modal::ModalModel &model, double dt);
 
       Response
       history() override;
@@ -68,7 +68,7 @@ namespace greentread
     private:
       struct Mode
       {
-        ModalTerm::Kind      kind;
+        modal::ModalTerm::Kind      kind;
         std::complex<double> lambda, residue;
         double               residue_t;
         double               scale;          // 2 for a pair, 1 otherwise

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/convolution/convolution.h>
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 
 #include <Eigen/Core>
 
@@ -33,7 +33,7 @@ namespace greentread
       /**
        * @throws NumericalError if the model has a pole with Re(lambda) > 0.
        */
-      ModalRecursiveConvolution(const ModalModel &model, double dt);
+      ModalRecursiveConvolution(const modal::ModalModel &model, double dt);
 
       Response
       history() override;

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/convolution/modal_model.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/modal/modal_model.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/pole_polish.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -95,7 +95,7 @@ namespace greentread
      */
     struct Identification
     {
-      convolution::ModalModel model;
+      modal::ModalModel model;
       /// N_m, modes in the chosen model (pairs and real poles).
       unsigned int n_modes = 0;
       /// E of Eq. (50) of the chosen model, a fraction.
@@ -140,7 +140,7 @@ namespace greentread
      * @throws InputError if the FRF is too short for the order asked.
      */
     Identification
-    identify(const FrequencyResponse &frf, const IdentificationParameters &parameters);
+    identify(const base::FrequencyResponse &frf, const IdentificationParameters &parameters);
 
     /**
      * @brief E of Eq. (50): \f$\int|\hat g - \tilde g|\,d\omega / \int|\hat
@@ -148,8 +148,8 @@ namespace greentread
      * residual terms. The line at 0 Hz is skipped when lower != 0.
      */
     double
-    modal_error(const FrequencyResponse     &frf,
-                const convolution::ModalModel &model,
+    modal_error(const base::FrequencyResponse     &frf,
+                const modal::ModalModel &model,
                 double                         lower = 0.,
                 double                         upper = 0.);
   } // namespace modal
@@ -169,7 +169,7 @@ namespace greentread
      * threads have stopped.
      */
     std::vector<Identification>
-    identify_all(const std::function<FrequencyResponse(std::size_t)> &get,
+    identify_all(const std::function<base::FrequencyResponse(std::size_t)> &get,
                  std::size_t                                          count,
                  const IdentificationParameters                      &parameters,
                  bool                                                 show_progress = true);
@@ -183,7 +183,7 @@ namespace greentread
      * identified once and the result used for both; @p reused counts them.
      */
     std::vector<Identification>
-    identify_pairs(const FrequencyResponseMatrix                            &green,
+    identify_pairs(const base::FrequencyResponseMatrix                            &green,
                    const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                    const IdentificationParameters                           &parameters,
                    std::size_t                                              &reused,

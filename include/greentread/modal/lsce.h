@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 
 #include <Eigen/Core>
 
@@ -48,7 +48,7 @@ namespace greentread
      * over-specified order absorbs into poles near the band edge (rejected).
      */
     ImpulseResponse<double>
-    impulse_response(const FrequencyResponse &frf, unsigned int last_line = 0);
+    impulse_response(const base::FrequencyResponse &frf, unsigned int last_line = 0);
 
     /**
      * @brief The complex impulse response of the sub-band of lines
@@ -58,7 +58,7 @@ namespace greentread
      * appears in it as \f$z = e^{(\lambda - j\omega_a)\Delta t}\f$.
      */
     ImpulseResponse<std::complex<double>>
-    band_impulse_response(const FrequencyResponse &frf,
+    band_impulse_response(const base::FrequencyResponse &frf,
                           unsigned int             first_line,
                           unsigned int             last_line);
 

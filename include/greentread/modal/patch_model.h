@@ -1,8 +1,8 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/convolution/modal_model.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/modal/modal_model.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/identification.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -85,7 +85,7 @@ namespace greentread
     {
       /// LSCE poles and fitted residues (Appendix A): the paper's path.
       identified,
-      /// The ring's own modes with a static residual (modal/mode_synthesis.h).
+      /// The ring's own modes with a static residual (synthesis/mode_synthesis.h).
       fe_modes
     };
 
@@ -188,7 +188,7 @@ namespace greentread
 
       /// The model of one pair, as used by the one-point convolutions
       /// (without G_r, which an impulse convolution cannot carry).
-      convolution::ModalModel
+      modal::ModalModel
       pair_model(unsigned int i, unsigned int j) const;
 
       /// \f$\hat g_{ij}(\omega)\f$ of the model.
@@ -206,7 +206,7 @@ namespace greentread
      * the least-squares problem is rank deficient.
      */
     PatchModel
-    fit_patch_model(const FrequencyResponseMatrix  &green,
+    fit_patch_model(const base::FrequencyResponseMatrix  &green,
                     const IdentificationParameters &identification,
                     const PatchModelParameters     &parameters,
                     bool                            show_progress);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 
 #include <complex>
 #include <vector>
@@ -51,7 +51,7 @@ namespace greentread
      * refinement does not lower the misfit, the poles as given.
      */
     std::vector<PolishPole>
-    polish_poles(const FrequencyResponse       &frf,
+    polish_poles(const base::FrequencyResponse       &frf,
                  const std::vector<PolishPole> &poles,
                  bool                           lower,
                  bool                           upper,

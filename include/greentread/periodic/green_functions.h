@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/periodic/green_solvers.h>
 
 #include <deal.II/base/mpi.h>
@@ -65,7 +65,7 @@ namespace greentread
      * @throws NumericalError on every rank if any rank fails, with the first
      * failure's message.
      */
-    modal::FrequencyResponseMatrix
+    base::FrequencyResponseMatrix
     compute_green_functions(const PeriodicCell &cell,
                             const ContactPatch &patch,
                             Method              method,

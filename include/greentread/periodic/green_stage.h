@@ -5,7 +5,7 @@
 #include <greentread/fe/inflation.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/periodic/green_functions.h>
 
 #include <deal.II/base/mpi.h>
@@ -70,7 +70,7 @@ namespace greentread
     /// The Green's functions of a stage run, and how they were obtained.
     struct GreenStageResult
     {
-      modal::FrequencyResponseMatrix green;
+      base::FrequencyResponseMatrix green;
       bool                           reused = false;
       GreenRunReport                 report;
     };

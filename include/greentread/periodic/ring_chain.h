@@ -11,7 +11,7 @@
  * @file
  * The numbering of a chain of reference cells: the full ring of the
  * `full-ring` Green's functions, the contact cells of Eq. (49), and the
- * time-domain reference of greentread/periodic/newmark_ring.h.
+ * time-domain reference of greentread/reference/newmark_ring.h.
  */
 
 namespace greentread

@@ -43,7 +43,7 @@ namespace greentread
     private:
       /// Stages geometry, fe, periodic: the Green's functions, read from
       /// @p h5 when its key is @p key, computed and saved otherwise.
-      modal::FrequencyResponseMatrix
+      base::FrequencyResponseMatrix
       green_stage(const std::filesystem::path &h5, const std::string &key,
                   const base::ParameterRecord &record) const;
 
@@ -51,7 +51,7 @@ namespace greentread
       /// or the ring's own modes, each saved beside @p h5 and reused when its
       /// key matches.
       modal::PatchModel
-      modal_stage(const modal::FrequencyResponseMatrix &G, const std::string &green_key,
+      modal_stage(const base::FrequencyResponseMatrix &G, const std::string &green_key,
                   const std::filesystem::path &directory,
                   const base::ParameterRecord &record) const;
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -120,7 +120,7 @@ namespace greentread
        * \f$|\xi - 1| \le 10^{-8}\f$ (there the split residues would lose
        * more digits to cancellation than the merge costs).
        */
-      convolution::ModalModel
+      modal::ModalModel
       modal_model() const;
 
       /**

@@ -4,7 +4,7 @@
 #include <greentread/contact/kinematic_contact.h>
 #include <greentread/convolution/convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/identification.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/sdof/exact_solution.h>
@@ -78,7 +78,7 @@ namespace greentread
      */
     struct IdentifiedGreen
     {
-      modal::FrequencyResponse frf;
+      base::FrequencyResponse frf;
       modal::Identification    identification;
       double                   pole_error = 0.;
     };
@@ -103,7 +103,7 @@ namespace greentread
                      const convolution::ConvolutionParameters &parameters,
                      double                                    dt,
                      unsigned int                              n_steps,
-                     const convolution::ModalModel            *model = nullptr);
+                     const modal::ModalModel            *model = nullptr);
 
     /**
      * @brief Run the contact problem: gravity and contact load convolved with
@@ -150,12 +150,12 @@ namespace greentread
              const contact::ContactParameters          &contact,
              const convolution::ConvolutionParameters &convolution,
              bool                                      show_progress = false,
-             const convolution::ModalModel            *model         = nullptr);
+             const modal::ModalModel            *model         = nullptr);
 
     /**
      * @brief The oscillator's FRF (Eq. 3) on lines 0, df, ..., up to f_max.
      */
-    modal::FrequencyResponse
+    base::FrequencyResponse
     frequency_response(const Oscillator &oscillator, double f_max, double df);
   } // namespace sdof
 } // namespace greentread

@@ -1,22 +1,22 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/periodic/shared_pattern.h>
+#include <greentread/synthesis/shared_pattern.h>
 
 #include <algorithm>
 #include <string>
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     namespace internal
     {
-      SharedPattern::SharedPattern(const std::vector<const SparseComplex *> &matrices)
+      SharedPattern::SharedPattern(const std::vector<const periodic::SparseComplex *> &matrices)
           : count(matrices.size())
       {
         if (matrices.empty())
           return;
-        std::vector<Eigen::SparseMatrix<Complex, Eigen::RowMajor>> rows;
-        for (const SparseComplex *A : matrices)
+        std::vector<Eigen::SparseMatrix<periodic::Complex, Eigen::RowMajor>> rows;
+        for (const periodic::SparseComplex *A : matrices)
           rows.emplace_back(*A);
         const auto &first = rows.front();
         n                 = first.rows();
@@ -93,10 +93,10 @@ namespace greentread
                   }
                 for (std::size_t a = 0; a < wanted; ++a)
                   for (Eigen::Index c = 0; c < w; ++c)
-                    (*out[a])(i, first + c) = Complex(re[a][c], im[a][c]);
+                    (*out[a])(i, first + c) = periodic::Complex(re[a][c], im[a][c]);
               }
           }
       }
     } // namespace internal
-  }   // namespace periodic
+  }   // namespace synthesis
 } // namespace greentread

@@ -1,19 +1,19 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/serial_blas.h>
-#include <greentread/periodic/newmark_ring.h>
+#include <greentread/reference/newmark_ring.h>
 
 #include <cmath>
 
 namespace greentread
 {
-  namespace periodic
+  namespace reference
   {
     namespace
     {
       /// Factorise @p A, or say which matrix could not be.
       void
-      factorise(Eigen::UmfPackLU<SparseReal> &lu, const SparseReal &A, const std::string &what)
+      factorise(Eigen::UmfPackLU<periodic::SparseReal> &lu, const periodic::SparseReal &A, const std::string &what)
       {
         // No iterative refinement: the set-up's solves are checked against
         // the backward-error bound instead, and refinement tripled a step's cost.
@@ -29,7 +29,7 @@ namespace greentread
       /// Solve A X = B and check the normwise backward error, as the
       /// Green's solvers do.
       Eigen::MatrixXd
-      checked_solve(const Eigen::UmfPackLU<SparseReal> &lu, const SparseReal &A,
+      checked_solve(const Eigen::UmfPackLU<periodic::SparseReal> &lu, const periodic::SparseReal &A,
                     const Eigen::MatrixXd &B, const std::string &what)
       {
         Eigen::MatrixXd X;
@@ -55,8 +55,8 @@ namespace greentread
 
 
 
-    NewmarkRing::NewmarkRing(const PeriodicCell &cell, const ContactPatch &patch, const double dt_)
-      : contact::PatchConvolution(patch.points.size(), dt_)
+    NewmarkRing::NewmarkRing(const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch, const double dt_)
+      : convolution::PatchConvolution(patch.points.size(), dt_)
       , ring{cell.n_face, cell.n_interior, cell.n_cells, cell.n_cells}
     {
       if (!(dt > 0.) || !std::isfinite(dt))
@@ -110,7 +110,7 @@ namespace greentread
 
 
     void
-    NewmarkRing::advance(const contact::PatchLoad &load)
+    NewmarkRing::advance(const convolution::PatchLoad &load)
     {
       if (!have_history)
         {
@@ -142,5 +142,5 @@ namespace greentread
       a.setZero();
       have_history = false;
     }
-  } // namespace periodic
+  } // namespace reference
 } // namespace greentread

@@ -1,6 +1,6 @@
-#include <greentread/contact/mode_patch_convolution.h>
-#include <greentread/contact/pole_weights.h>
-#include <greentread/contact/shape_kernels.h>
+#include <greentread/convolution/mode_patch_convolution.h>
+#include <greentread/convolution/pole_weights.h>
+#include <greentread/convolution/shape_kernels.h>
 
 #include <greentread/modal/patch_model.h>
 
@@ -15,7 +15,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     namespace
     {
@@ -618,5 +618,5 @@ namespace greentread
         return std::make_unique<ModePatchConvolution<float>>(model, dt, n_threads, J);
       return std::make_unique<ModePatchConvolution<double>>(model, dt, n_threads, J);
     }
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

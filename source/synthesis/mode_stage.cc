@@ -1,8 +1,8 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/modal_sources_digest.h>
-#include <greentread/periodic/mode_stage.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/synthesis/mode_stage.h>
+#include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     std::string
     mode_stage_key(const dealii::ParameterHandler &prm, const std::string &green_key)
@@ -28,20 +28,20 @@ namespace greentread
 
 
 
-    modal::ModeSynthesis
+    synthesis::ModeSynthesis
     run_mode_stage(const ModeStageInputs                &inputs,
-                   const modal::FrequencyResponseMatrix &green,
+                   const base::FrequencyResponseMatrix &green,
                    const std::filesystem::path          &file,
                    const std::string                    &key,
                    const base::ParameterRecord          &record,
                    const bool                            reuse,
                    const bool                            print_timings,
                    const MPI_Comm                        comm,
-                   modal::ModalLines                    *lines)
+                   synthesis::ModalLines                    *lines)
     {
-      modal::ModeSynthesis synthesis;
-      if (reuse && modal::read_modal_model_key(file.string()) == key &&
-          base::read_saved_stage(file, [&] { synthesis = modal::read_modal_model(file.string()); }))
+      synthesis::ModeSynthesis synthesis;
+      if (reuse && synthesis::read_modal_model_key(file.string()) == key &&
+          base::read_saved_stage(file, [&] { synthesis = synthesis::read_modal_model(file.string()); }))
         {
           std::cout << "Reusing " << file.string()
                     << ": same Green's functions and mode cut-off\n";
@@ -50,7 +50,7 @@ namespace greentread
       const auto t0 = std::chrono::steady_clock::now();
       std::cout << "Stage modal: the ring's own modes up to "
                 << format_number(inputs.cutoff_hz) << " Hz, per circumferential wavenumber\n";
-      const InflatedTyre tyre(inputs.geometry, inputs.materials, inputs.inflation, inputs.patch);
+      const periodic::InflatedTyre tyre(inputs.geometry, inputs.materials, inputs.inflation, inputs.patch);
       const unsigned int P = green.n_points();
       if (tyre.patch.points.size() != P)
         throw NumericalError("modal stage: the tyre has " +
@@ -69,7 +69,7 @@ namespace greentread
 
       // G_r from the static line (the direct solve at 0 Hz), its relaxation
       // from the others.
-      synthesis = modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+      synthesis = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
                                     modes.shapes_imag, green, lines);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
@@ -78,7 +78,7 @@ namespace greentread
           synthesis.dispersion.damping_ratio.push_back(modes.branch_damping[k]);
         }
       if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-        modal::write_modal_model(file, synthesis, record, key);
+        synthesis::write_modal_model(file, synthesis, record, key);
       const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - t0;
       std::cout << "  " << synthesis.n_modes() << " ring modes from "
                 << modes.branches.size() << " wavenumbers (" << modes.n_solves
@@ -92,5 +92,5 @@ namespace greentread
       std::cout << '\n';
       return synthesis;
     }
-  } // namespace periodic
+  } // namespace synthesis
 } // namespace greentread

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/periodic/bloch_modes.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/contact_patch.h>
 
 #include <deal.II/base/mpi.h>
@@ -39,7 +39,7 @@
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     /// The ring's modes up to a cut-off, at the contact points.
     struct RingModes
@@ -80,8 +80,8 @@ namespace greentread
      * @throws NumericalError on every rank if any search fails.
      */
     RingModes
-    ring_modes(const PeriodicCell &cell,
-               const ContactPatch &patch,
+    ring_modes(const periodic::PeriodicCell &cell,
+               const periodic::ContactPatch &patch,
                const ModeSearch   &search,
                MPI_Comm            comm,
                bool                show_progress,
@@ -106,8 +106,8 @@ namespace greentread
      */
     PointModes
     coupled_point_modes(const BlochModes   &modes,
-                        const PeriodicCell &cell,
-                        const ContactPatch &patch,
+                        const periodic::PeriodicCell &cell,
+                        const periodic::ContactPatch &patch,
                         bool                couple);
 
     /**
@@ -116,6 +116,6 @@ namespace greentread
      * a cos and a sin one otherwise. Returns [mode][point].
      */
     Eigen::MatrixXd
-    point_shapes(const BlochModes &modes, const PeriodicCell &cell, const ContactPatch &patch);
-  } // namespace periodic
+    point_shapes(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch);
+  } // namespace synthesis
 } // namespace greentread

@@ -9,12 +9,12 @@
 /**
  * @file
  * Products of the Bloch cell's sparse matrices with tall blocks, for the
- * mode search (periodic/bloch_modes.h).
+ * mode search (synthesis/bloch_modes.h).
  */
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     namespace internal
     {
@@ -35,7 +35,7 @@ namespace greentread
         SharedPattern() = default;
 
         /// @throws NumericalError if the patterns differ.
-        explicit SharedPattern(const std::vector<const SparseComplex *> &matrices);
+        explicit SharedPattern(const std::vector<const periodic::SparseComplex *> &matrices);
 
         Eigen::Index
         size() const
@@ -60,5 +60,5 @@ namespace greentread
         std::vector<double> values;
       };
     } // namespace internal
-  }   // namespace periodic
+  }   // namespace synthesis
 } // namespace greentread

@@ -5,7 +5,7 @@
 /**
  * @file
  * The two products of the rank-one modal update
- * (greentread/contact/mode_patch_convolution.h) on one block of shape rows, as
+ * (greentread/convolution/mode_patch_convolution.h) on one block of shape rows, as
  * plain loops: step by step (one to four load vectors, one or two sums) and
  * in time blocks (J load vectors and J sums, register tiles).
  *
@@ -16,7 +16,7 @@
  * built for them, chosen once at run time.
  *
  * The shapes are double or float (ShapePrecision in
- * greentread/contact/patch_convolution.h): the update is memory bound, and
+ * greentread/convolution/patch_convolution.h): the update is memory bound, and
  * single precision halves the bytes read per step. The products run in the
  * shapes' precision: for float shapes each dot product (P terms) and each
  * call's sum over its rows are formed in float, and added to the results in
@@ -25,7 +25,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     /**
      * @brief forces[n_loads r + g] = sum_p shapes[r P + p] loads[g P + p], for
@@ -87,5 +87,5 @@ namespace greentread
                               const Shape  *weights,
                               unsigned int  J,
                               double       *out);
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

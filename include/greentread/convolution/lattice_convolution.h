@@ -9,7 +9,7 @@
  * The product of a lattice's translation-invariant, even kernel with a
  * field on the lattice, by FFT: what makes the tread's local compliance on a
  * contact grid of tens of thousands of points affordable without its dense
- * matrix. Implemented in source/contact/lattice_convolution.cc (FFTW 3).
+ * matrix. Implemented in source/convolution/lattice_convolution.cc (FFTW 3).
  *
  * On an nx x ny lattice (point p = i_x ny + i_y), the matrix
  * \f$L_{pq} = T(|i_x - j_x|, |i_y - j_y|)\f$ is block Toeplitz with Toeplitz
@@ -23,7 +23,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     /**
      * @brief \f$y = L x\f$ for the block Toeplitz matrix of an even kernel
@@ -59,5 +59,5 @@ namespace greentread
       std::unique_ptr<Plans> plans;
       Eigen::MatrixXd        kernel;
     };
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

@@ -1,6 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/progress.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/multithread_info.h>
 
@@ -17,7 +17,7 @@
 
 namespace greentread
 {
-  namespace modal
+  namespace synthesis
   {
     namespace
     {
@@ -65,7 +65,7 @@ namespace greentread
       /**
        * The modes' part of g(w), sum_k psi_k psi_k^T d_k(w), of the modes
        * (@p frequency_hz, @p damping_ratio, @p shapes + j @p shapes_imag).
-       * Per mode the factors of Re and Im of psi psi^T (shape_sums()):
+       * Per mode the factors of Re and Im of psi psi^T (modal::shape_sums()):
        * d1 = 1 / (w_k^2 - w^2 + 2 j xi w_k w), and for a complex shape
        * d2 = j (c - c'), c = 1 / (2 j w_d (j w - l)), c' = -1 / (2 j w_d (j w - conj l)).
        */
@@ -95,7 +95,7 @@ namespace greentread
             re2(k) = d2.real();
             im2(k) = d2.imag();
           }
-        const auto       sums = shape_sums(shapes, shapes_imag, {{re1, re2}, {im1, im2}});
+        const auto       sums = modal::shape_sums(shapes, shapes_imag, {{re1, re2}, {im1, im2}});
         Eigen::MatrixXcd g(shapes.cols(), shapes.cols());
         g.real() = sums[0];
         g.imag() = sums[1];
@@ -260,7 +260,7 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    static_line(const FrequencyResponseMatrix &green)
+    static_line(const base::FrequencyResponseMatrix &green)
     {
       const unsigned int P = green.n_points();
       Eigen::MatrixXd    G0(P, P);
@@ -274,7 +274,7 @@ namespace greentread
 
     double
     fit_residual_relaxation(const ModeSynthesis           &model,
-                            const FrequencyResponseMatrix &direct,
+                            const base::FrequencyResponseMatrix &direct,
                             const ModalLines              *lines)
     {
       const bool kept = lines != nullptr && lines->matches(direct);
@@ -356,7 +356,7 @@ namespace greentread
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
                const Eigen::MatrixXd         &shapes_imag,
-               const FrequencyResponseMatrix &direct,
+               const base::FrequencyResponseMatrix &direct,
                ModalLines                    *lines)
     {
       ModeSynthesis model =
@@ -377,7 +377,7 @@ namespace greentread
 
     SynthesisErrors
     compare(const ModeSynthesis           &model,
-            const FrequencyResponseMatrix &direct,
+            const base::FrequencyResponseMatrix &direct,
             const ModalLines              *lines)
     {
       const bool kept = lines != nullptr && lines->matches(direct);
@@ -439,5 +439,5 @@ namespace greentread
       errors.p90    = sorted[std::min(sorted.size() - 1, sorted.size() * 9 / 10)];
       return errors;
     }
-  } // namespace modal
+  } // namespace synthesis
 } // namespace greentread

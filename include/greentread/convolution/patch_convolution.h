@@ -15,12 +15,12 @@
  * The convolution of every g_ij of a patch with the point loads, step by step
  * (Section 5): the exact modal recursion and the direct sum, its reference.
  * Conventions as in greentread/contact/patch_contact.h. Implemented in
- * source/contact/patch_convolution.cc.
+ * source/convolution/patch_convolution.cc.
  */
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     /// The loads of one step at every point, components as in StepLoad.
     struct PatchLoad
@@ -165,5 +165,5 @@ namespace greentread
     std::unique_ptr<PatchConvolution>
     make_direct_patch_convolution(const modal::PatchModel &model, double dt,
                                   unsigned int n_kernel);
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

@@ -1,7 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/progress.h>
 #include <greentread/base/serial_blas.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/synthesis/ring_modes.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -19,7 +19,7 @@
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     namespace
     {
@@ -50,7 +50,7 @@ namespace greentread
       /// a(r, q): Bloch mode r seen by the unit load of point q,
       /// sum over q's entries (n, s, w) of w e^{i phi n} psi_r(s).
       Eigen::MatrixXcd
-      bloch_point_values(const BlochModes &modes, const PeriodicCell &cell, const ContactPatch &patch)
+      bloch_point_values(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch)
       {
         const double     phi = 2. * M_PI * modes.wavenumber / cell.n_cells;
         Eigen::MatrixXcd a   = Eigen::MatrixXcd::Zero(modes.omega.size(), patch.points.size());
@@ -65,7 +65,7 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    point_shapes(const BlochModes &modes, const PeriodicCell &cell, const ContactPatch &patch)
+    point_shapes(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch)
     {
       const unsigned int     N = cell.n_cells, k = modes.wavenumber, P = patch.points.size();
       const Eigen::Index     m = modes.omega.size();
@@ -86,8 +86,8 @@ namespace greentread
 
     PointModes
     coupled_point_modes(const BlochModes   &modes,
-                        const PeriodicCell &cell,
-                        const ContactPatch &patch,
+                        const periodic::PeriodicCell &cell,
+                        const periodic::ContactPatch &patch,
                         const bool          couple)
     {
       using Complex         = std::complex<double>;
@@ -119,8 +119,8 @@ namespace greentread
       // (s^2 I + s B + W^2) x = 0 in the modal coordinates, B = Psi^H C Psi,
       // linearised with z = [W x; s x]: s z = [[0, W], [-W, -B]] z.
       Eigen::MatrixXcd L = Eigen::MatrixXcd::Zero(2 * m, 2 * m);
-      L.topRightCorner(m, m).diagonal()   = modes.omega.cast<Complex>();
-      L.bottomLeftCorner(m, m).diagonal() = -modes.omega.cast<Complex>();
+      L.topRightCorner(m, m).diagonal()   = modes.omega.cast<periodic::Complex>();
+      L.bottomLeftCorner(m, m).diagonal() = -modes.omega.cast<periodic::Complex>();
       L.bottomRightCorner(m, m)           = -B;
       Eigen::VectorXcd lambda;
       Eigen::MatrixXcd z;
@@ -163,11 +163,11 @@ namespace greentread
           if (d < 0 || best > 1e-6 * std::abs(lambda(u)))
             return diagonal();
           taken[d]       = true;
-          const Complex l  = lambda(u);
+          const periodic::Complex l  = lambda(u);
           const double  wd = l.imag();
           // The residue of (s^2 I + s B + W^2)^-1 at l is x y^H / mu.
           const Eigen::VectorXcd q2 = 2. * l * x.col(u) + modes.modal_damping * x.col(u);
-          const Complex          mu = x.col(d).dot(q2);
+          const periodic::Complex          mu = x.col(d).dot(q2);
           const Eigen::VectorXcd psi1 = a.transpose() * x.col(u);
           const Eigen::VectorXcd psi2 = (a.transpose() * x.col(d)).conjugate();
           out.omega.segment(per * i, per).setConstant(std::abs(l));
@@ -178,18 +178,18 @@ namespace greentread
             {
               // (1/N) psi1 psi2^T / mu, with psi2 = alpha psi1.
               const double           size  = psi1.squaredNorm();
-              const Complex          alpha = size > 0. ? psi1.dot(psi2) / size : Complex(0.);
+              const periodic::Complex          alpha = size > 0. ? psi1.dot(psi2) / size : periodic::Complex(0.);
               const Eigen::VectorXcd shape =
-                std::sqrt(Complex(0., 2. * wd) * alpha / (double(N) * mu)) * psi1;
+                std::sqrt(periodic::Complex(0., 2. * wd) * alpha / (double(N) * mu)) * psi1;
               out.shapes.row(i)      = shape.real().transpose();
               out.shapes_imag.row(i) = shape.imag().transpose();
               continue;
             }
           // k and N - k together: (1/N)(psi1 psi2^T + psi2 psi1^T) / mu
           // = (p p^T + q q^T) / (2 N mu), p = psi1 + psi2, q = (psi1 - psi2) / j.
-          const Complex          scale = std::sqrt(Complex(0., wd) / (double(N) * mu));
+          const periodic::Complex          scale = std::sqrt(periodic::Complex(0., wd) / (double(N) * mu));
           const Eigen::VectorXcd p     = scale * (psi1 + psi2);
-          const Eigen::VectorXcd q     = scale * (psi1 - psi2) / Complex(0., 1.);
+          const Eigen::VectorXcd q     = scale * (psi1 - psi2) / periodic::Complex(0., 1.);
           out.shapes.row(2 * i)          = p.real().transpose();
           out.shapes_imag.row(2 * i)     = p.imag().transpose();
           out.shapes.row(2 * i + 1)      = q.real().transpose();
@@ -234,8 +234,8 @@ namespace greentread
 
 
     RingModes
-    ring_modes(const PeriodicCell &cell,
-               const ContactPatch &patch,
+    ring_modes(const periodic::PeriodicCell &cell,
+               const periodic::ContactPatch &patch,
                const ModeSearch   &search,
                const MPI_Comm      comm,
                const bool          show_progress,
@@ -345,5 +345,5 @@ namespace greentread
         result.shapes_imag.resize(0, 0);
       return result;
     }
-  } // namespace periodic
+  } // namespace synthesis
 } // namespace greentread

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/periodic/contact_patch.h>
 #include <greentread/road/patch_road.h>
@@ -18,10 +18,10 @@
  * @file
  * The fast pipeline against the finite-element transient (issue 17): one
  * rolling case on a coarse ring, run by any fast path (a patch model and a
- * convolution) and by the reference periodic::NewmarkRing, with the same
+ * convolution) and by the reference reference::NewmarkRing, with the same
  * points, road, static start and contact law, and the difference of their
  * contact forces. Used by benchmarks/fe_transient and unit/fe_transient.
- * Implemented in source/analysis/transient_comparison.cc.
+ * Implemented in source/reference/transient_comparison.cc.
  */
 
 namespace greentread
@@ -31,7 +31,7 @@ namespace greentread
     struct InflatedTyre;
   }
 
-  namespace analysis
+  namespace reference
   {
     /// The case: ring, contact points, fast-path inputs, rolling.
     struct TransientCaseSetup
@@ -43,7 +43,7 @@ namespace greentread
       periodic::PatchRequest patch;
       /// The Green's functions' lines, for the LSCE fit and the static start [Hz].
       double       frequency_step = 50., max_frequency = 5000.;
-      unsigned int lsce_modes     = 30; ///< 'Identification/Maximum number of modes'
+      unsigned int lsce_modes     = 30; ///< 'modal::Identification/Maximum number of modes'
       double       speed_kmh      = 90.;
       double       distance       = 0.5;  ///< [m]
       double       static_load    = 600.; ///< [N]
@@ -172,14 +172,14 @@ namespace greentread
 
     private:
       TransientRun
-      run(contact::PatchConvolution &convolution, const std::string &road, double dt) const;
+      run(convolution::PatchConvolution &convolution, const std::string &road, double dt) const;
 
       const road::PatchRoad &
       road_named(const std::string &name) const;
 
       TransientCaseSetup                        setup;
       std::unique_ptr<periodic::InflatedTyre>   tyre;
-      modal::FrequencyResponseMatrix            green;
+      base::FrequencyResponseMatrix            green;
       Eigen::MatrixXd                           G0;
       std::vector<std::array<double, 3>>        points;
       Eigen::VectorXd                           tread;
@@ -189,5 +189,5 @@ namespace greentread
       unsigned int                              ring_dofs = 0;
       std::map<std::string, road::PatchRoad>    roads;
     };
-  } // namespace analysis
+  } // namespace reference
 } // namespace greentread

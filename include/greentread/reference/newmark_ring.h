@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/periodic/contact_patch.h>
 #include <greentread/periodic/periodic_cell.h>
 #include <greentread/periodic/ring_chain.h>
@@ -15,12 +15,12 @@
  * @file
  * The finite-element transient reference: the rolling contact computed with
  * no Green's functions, no modal model and no convolution. Implemented in
- * source/periodic/newmark_ring.cc.
+ * source/reference/newmark_ring.cc.
  */
 
 namespace greentread
 {
-  namespace periodic
+  namespace reference
   {
     /**
      * @brief The whole ring, all N cells of @p cell assembled as `full-ring`
@@ -45,11 +45,11 @@ namespace greentread
      * through \f$a_n\f$, so PatchInfluence::u[1] is zero. K_eff and K are
      * factorised once (UMFPACK); a step is one sparse solve.
      */
-    class NewmarkRing : public contact::PatchConvolution
+    class NewmarkRing : public convolution::PatchConvolution
     {
     public:
       /// @throws NumericalError if K or K_eff cannot be factorised.
-      NewmarkRing(const PeriodicCell &cell, const ContactPatch &patch, double dt);
+      NewmarkRing(const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch, double dt);
 
       /// \f$B^T K_{eff}^{-1} r_n\f$ and the velocity that goes with it.
       void
@@ -57,7 +57,7 @@ namespace greentread
 
       /// Take the end force of @p load: \f$u_{n+1}\f$, then \f$a_{n+1}\f$, \f$v_{n+1}\f$.
       void
-      advance(const contact::PatchLoad &load) override;
+      advance(const convolution::PatchLoad &load) override;
 
       /// The static state under @p q0: \f$K u = B q_0\f$, at rest.
       void
@@ -84,16 +84,16 @@ namespace greentread
       }
 
     private:
-      using SparseLU = Eigen::UmfPackLU<SparseReal>;
+      using SparseLU = Eigen::UmfPackLU<periodic::SparseReal>;
 
-      RingChain       ring;
-      SparseReal      K, C, M, K_eff;
-      SparseReal      loads, loads_t; // B and its transpose
+      periodic::RingChain       ring;
+      periodic::SparseReal      K, C, M, K_eff;
+      periodic::SparseReal      loads, loads_t; // B and its transpose
       SparseLU        effective, stiffness;
       Eigen::MatrixXd response;       // K_eff^{-1} B
       Eigen::MatrixXd static_w;
       Eigen::VectorXd u, v, a, u_free, rhs;
       bool            have_history = false;
     };
-  } // namespace periodic
+  } // namespace reference
 } // namespace greentread

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <greentread/base/frequency_response.h>
+
 #include <complex>
 #include <string>
 #include <vector>
@@ -12,7 +14,7 @@
 
 namespace greentread
 {
-  namespace convolution
+  namespace modal
   {
     /**
      * @brief One term of a pole-residue model.
@@ -101,5 +103,12 @@ namespace greentread
     private:
       std::vector<ModalTerm> term_list;
     };
-  } // namespace convolution
+    /**
+     * @brief The FRF of a modal model on the grid \f$k\,\Delta f\f$,
+     * k = 0 .. n_lines-1.
+     */
+    base::FrequencyResponse
+    sample(const modal::ModalModel &model, double df, unsigned int n_lines);
+
+  } // namespace modal
 } // namespace greentread

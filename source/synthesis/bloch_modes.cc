@@ -1,7 +1,7 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/periodic/bloch_modes.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
-#include <greentread/periodic/shared_pattern.h>
+#include <greentread/synthesis/shared_pattern.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
@@ -14,7 +14,7 @@
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     namespace
     {
@@ -222,11 +222,11 @@ namespace greentread
       }
 
       double
-      row_sum_norm(const SparseComplex &matrix)
+      row_sum_norm(const periodic::SparseComplex &matrix)
       {
         Eigen::VectorXd sums = Eigen::VectorXd::Zero(matrix.rows());
         for (Eigen::Index c = 0; c < matrix.outerSize(); ++c)
-          for (SparseComplex::InnerIterator it(matrix, c); it; ++it)
+          for (periodic::SparseComplex::InnerIterator it(matrix, c); it; ++it)
             sums(it.row()) += std::abs(it.value());
         return sums.maxCoeff();
       }
@@ -241,13 +241,13 @@ namespace greentread
        * unless an eigenvalue lies within that of @p sigma.
        */
       Eigen::Index
-      count_below(const SparseComplex &K, const SparseComplex &M, const double sigma,
+      count_below(const periodic::SparseComplex &K, const periodic::SparseComplex &M, const double sigma,
                   const std::string &which)
       {
         for (const double nudge : {0., 1e-9, -1e-9})
           {
-            const SparseComplex A = K - (sigma * (1. + nudge)) * M;
-            Eigen::SimplicialLDLT<SparseComplex, Eigen::Lower> ldlt(A);
+            const periodic::SparseComplex A = K - (sigma * (1. + nudge)) * M;
+            Eigen::SimplicialLDLT<periodic::SparseComplex, Eigen::Lower> ldlt(A);
             if (ldlt.info() != Eigen::Success)
               continue;
             const auto  &d        = ldlt.vectorD();
@@ -270,7 +270,7 @@ namespace greentread
       /// The problem of one wavenumber: K, C, M folded with its phase.
       struct Problem
       {
-        SparseComplex K, C, M;
+        periodic::SparseComplex K, C, M;
         /// K and M together, M and C alone (products with tall blocks).
         internal::SharedPattern KM, MM, CC;
         double                  norm_K, norm_M;
@@ -305,15 +305,15 @@ namespace greentread
                    const ModeSearch &search,
                    const unsigned    seed)
       {
-        const SparseComplex &K = problem.K, &M = problem.M;
+        const periodic::SparseComplex &K = problem.K, &M = problem.M;
         Slice                slice;
         if (expected == 0)
           {
             slice.shapes.resize(K.rows(), 0);
             return slice;
           }
-        const SparseComplex A = K - shift * M;
-        Eigen::SparseLU<SparseComplex, Eigen::COLAMDOrdering<int>> lu;
+        const periodic::SparseComplex A = K - shift * M;
+        Eigen::SparseLU<periodic::SparseComplex, Eigen::COLAMDOrdering<int>> lu;
         lu.analyzePattern(A);
         lu.factorize(A);
         if (lu.info() != Eigen::Success)
@@ -329,7 +329,7 @@ namespace greentread
         Dense                                  X(n, b);
         for (Eigen::Index j = 0; j < b; ++j)
           for (Eigen::Index i = 0; i < n; ++i)
-            X(i, j) = Complex(uniform(random), uniform(random));
+            X(i, j) = periodic::Complex(uniform(random), uniform(random));
 
         // The start is T X, not X: every vector of the Krylov space is then
         // in the range of T, where the modes are. With a singular M (mass
@@ -451,17 +451,17 @@ namespace greentread
 
 
     BlochModes
-    bloch_modes(const PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
+    bloch_modes(const periodic::PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
     {
       const std::string which = "Bloch wavenumber " + std::to_string(k);
       if (!(search.cutoff > 0.) || search.block == 0 || search.slices == 0)
         throw NumericalError("bloch_modes: the cut-off must be positive and the block size "
                              "and the number of slices at least 1 (" + which + ")");
       const double phi = 2. * M_PI * k / cell.n_cells;
-      BlochCell    bloch(cell);
-      const auto   part = [&](const Complex a, const Complex c, const Complex m) {
+      periodic::BlochCell    bloch(cell);
+      const auto   part = [&](const periodic::Complex a, const periodic::Complex c, const periodic::Complex m) {
         bloch.set_combination(a, c, m);
-        return SparseComplex(bloch.assemble(phi));
+        return periodic::SparseComplex(bloch.assemble(phi));
       };
       Problem problem;
       problem.K      = part(1., 0., 0.);
@@ -547,5 +547,5 @@ namespace greentread
         modes.damping_ratio(j) = modes.modal_damping(j, j).real() / (2. * modes.omega(j));
       return modes;
     }
-  } // namespace periodic
+  } // namespace synthesis
 } // namespace greentread

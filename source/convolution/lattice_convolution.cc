@@ -1,5 +1,5 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/contact/lattice_convolution.h>
+#include <greentread/convolution/lattice_convolution.h>
 
 #include <fftw3.h>
 
@@ -9,7 +9,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     /// The padded work arrays and FFTW's plans on them (row-major, 2 nx x 2 ny).
     struct LatticeConvolution::Plans
@@ -113,5 +113,5 @@ namespace greentread
           L(p, q) = kernel(std::abs(int(p / ny) - int(q / ny)), std::abs(int(p % ny) - int(q % ny)));
       return L;
     }
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

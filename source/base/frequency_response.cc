@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
+#include <greentread/base/parameters.h>
 
 #include <deal.II/base/hdf5.h>
 
@@ -13,18 +14,10 @@
 
 namespace greentread
 {
-  namespace modal
+  namespace base
   {
     namespace
     {
-      std::string
-      trim(const std::string &s)
-      {
-        const auto begin = s.find_first_not_of(" \t\r\n");
-        if (begin == std::string::npos)
-          return "";
-        return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
-      }
 
 
 
@@ -135,19 +128,6 @@ namespace greentread
                      << '\n';
       record.write_comments(out.stream());
       out.commit();
-    }
-
-
-
-    FrequencyResponse
-    sample(const convolution::ModalModel &model, const double df, const unsigned int n_lines)
-    {
-      FrequencyResponse frf;
-      frf.df = df;
-      frf.values.resize(n_lines);
-      for (unsigned int k = 0; k < n_lines; ++k)
-        frf.values[k] = model.frequency_response(2. * M_PI * k * df);
-      return frf;
     }
 
 
@@ -413,5 +393,5 @@ namespace greentread
           .write(green.values);
       });
     }
-  } // namespace modal
+  } // namespace base
 } // namespace greentread

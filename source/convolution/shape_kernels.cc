@@ -1,4 +1,4 @@
-#include <greentread/contact/shape_kernels.h>
+#include <greentread/convolution/shape_kernels.h>
 
 #include <cstdint>
 #include <stdexcept>
@@ -12,7 +12,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     namespace
     {
@@ -459,5 +459,5 @@ namespace greentread
     template void
     add_weighted_shapes(const float *, std::size_t, std::size_t, const double *, unsigned int,
                         double *);
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <greentread/contact/patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/modal/patch_model.h>
 
 #include <memory>
@@ -13,12 +13,12 @@
  * force is updated in time blocks: one pass over the shapes per block of J
  * steps, with J - 1 lag kernels (N_p x N_p) for the loads inside the block.
  * make_modal_patch_convolution() chooses it for a rank-one model. Implemented
- * in source/contact/mode_patch_convolution.cc.
+ * in source/convolution/mode_patch_convolution.cc.
  */
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     /**
      * @brief The rank-one recursion of @p model at @p dt, its terms split over
@@ -33,5 +33,5 @@ namespace greentread
     make_rank_one_patch_convolution(const modal::PatchModel &model, double dt,
                                     unsigned int n_threads, ShapePrecision precision,
                                     unsigned int block_steps = 0);
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

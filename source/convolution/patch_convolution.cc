@@ -1,7 +1,7 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/contact/mode_patch_convolution.h>
-#include <greentread/contact/patch_convolution.h>
-#include <greentread/contact/pole_weights.h>
+#include <greentread/convolution/mode_patch_convolution.h>
+#include <greentread/convolution/patch_convolution.h>
+#include <greentread/convolution/pole_weights.h>
 
 #include <deal.II/base/thread_management.h>
 
@@ -10,7 +10,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     namespace
     {
@@ -274,5 +274,24 @@ namespace greentread
     {
       return std::make_unique<DirectPatchConvolution>(model, dt, n_kernel);
     }
-  } // namespace contact
+
+
+
+    void
+    add_influence(const PatchInfluence &psi, const unsigned int g, const Eigen::VectorXd &x,
+                  Eigen::VectorXd &y)
+    {
+      if (psi.add_u)
+        psi.add_u(g, x, y);
+      else
+      {
+        // y += M x from the columns where x is not zero (the loads of the
+        // points in contact: a few percent of a fine grid's).
+        const Eigen::MatrixXd &M = psi.u[g];
+        for (Eigen::Index j = 0; j < x.size(); ++j)
+          if (x[j] != 0.)
+            y += x[j] * M.col(j);
+      }
+    }
+  } // namespace convolution
 } // namespace greentread

@@ -2,8 +2,8 @@
 
 #include <greentread/base/exceptions.h>
 #include <greentread/convolution/exponential_integrals.h>
-#include <greentread/contact/patch_convolution.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/convolution/patch_convolution.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/modal/patch_model.h>
 
 #include <deal.II/base/thread_management.h>
@@ -18,7 +18,7 @@
 /**
  * @file
  * The per-pole weights that the patch convolutions share
- * (source/contact/patch_convolution.cc, source/contact/
+ * (source/convolution/patch_convolution.cc, source/contact/
  * mode_patch_convolution.cc): the exact recursion's weights for a load linear
  * over the step, the residues in full or rank-one form, and the one-step
  * influences. Internal to the contact stage.
@@ -26,7 +26,7 @@
 
 namespace greentread
 {
-  namespace contact
+  namespace convolution
   {
     namespace internal
     {
@@ -181,5 +181,5 @@ namespace greentread
         }
       };
     } // namespace internal
-  } // namespace contact
+  } // namespace convolution
 } // namespace greentread

@@ -1,15 +1,15 @@
 #include <greentread/analysis/third_octave.h>
-#include <greentread/analysis/transient_comparison.h>
+#include <greentread/reference/transient_comparison.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/progress.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/modal/identification.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/periodic/green_functions.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/periodic/newmark_ring.h>
-#include <greentread/periodic/ring_modes.h>
+#include <greentread/reference/newmark_ring.h>
+#include <greentread/synthesis/ring_modes.h>
 #include <greentread/fe/inflation.h>
 #include <greentread/fe/material.h>
 
@@ -19,7 +19,7 @@
 
 namespace greentread
 {
-  namespace analysis
+  namespace reference
   {
     namespace
     {
@@ -64,7 +64,7 @@ namespace greentread
       {
         const double record = b.size() * dt;
         double       low = 0., high = 0.;
-        for (const auto &band : third_octave_bands(250., 5000.))
+        for (const auto &band : analysis::third_octave_bands(250., 5000.))
           {
             if (low == 0. && (band.upper - band.lower) * record >= 1.)
               low = band.nominal;
@@ -73,8 +73,8 @@ namespace greentread
           }
         if (low == 0. || high < low)
           return NAN;
-        const auto sa = third_octave_spectrum(a, dt, 1., low, high);
-        const auto sb = third_octave_spectrum(b, dt, 1., low, high);
+        const auto sa = analysis::third_octave_spectrum(a, dt, 1., low, high);
+        const auto sb = analysis::third_octave_spectrum(b, dt, 1., low, high);
         double     worst = 0.;
         for (std::size_t k = 0; k < sa.level.size(); ++k)
           worst = std::max(worst, std::abs(sa.level[k] - sb.level[k]));
@@ -126,7 +126,7 @@ namespace greentread
       green = periodic::compute_green_functions(tyre->periodic_cell, patch, periodic::Method::bloch,
                                                 setup.frequency_step, n_lines, MPI_COMM_SELF,
                                                 false, report);
-      G0    = modal::static_line(green);
+      G0    = synthesis::static_line(green);
       for (const auto &p : patch.points)
         points.push_back({{p.x, p.y, p.radius}});
       tread  = contact::tread_heights(points);
@@ -151,7 +151,7 @@ namespace greentread
         }
 
       // The reference's static compliance against the Green's functions' 0 Hz line.
-      const periodic::NewmarkRing ring(tyre->periodic_cell, patch, road_time_step());
+      const reference::NewmarkRing ring(tyre->periodic_cell, patch, road_time_step());
       static_difference =
         (ring.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       ring_dofs = ring.n_dofs();
@@ -221,15 +221,15 @@ namespace greentread
     TransientCase::mode_model(const double cutoff_hz) const
     {
       const auto            start = std::chrono::steady_clock::now();
-      periodic::ModeSearch  search;
+      synthesis::ModeSearch  search;
       search.cutoff = 2. * M_PI * cutoff_hz;
-      const periodic::RingModes modes =
-        periodic::ring_modes(tyre->periodic_cell, tyre->patch, search, MPI_COMM_SELF, false);
-      const modal::ModeSynthesis synthesis =
-        modal::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green);
+      const synthesis::RingModes modes =
+        synthesis::ring_modes(tyre->periodic_cell, tyre->patch, search, MPI_COMM_SELF, false);
+      const synthesis::ModeSynthesis synthesis =
+        synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green);
       PathModel path;
       path.name    = "modes to " + format_number(cutoff_hz / 1000.) + " kHz";
-      path.model   = modal::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);
+      path.model   = synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);
       path.seconds = base::seconds_since(start);
       return path;
     }
@@ -248,7 +248,7 @@ namespace greentread
 
 
     TransientRun
-    TransientCase::run(contact::PatchConvolution &convolution, const std::string &name,
+    TransientCase::run(convolution::PatchConvolution &convolution, const std::string &name,
                        const double dt) const
     {
       const road::PatchRoad          &road    = road_named(name);
@@ -297,10 +297,10 @@ namespace greentread
     {
       const unsigned int n_steps = static_cast<unsigned int>(std::lround(3. * pulse / dt));
       const Eigen::VectorXd Q    = Eigen::VectorXd::LinSpaced(points.size(), 10., 60.);
-      const auto            drive = [&](contact::PatchConvolution &c) {
+      const auto            drive = [&](convolution::PatchConvolution &c) {
         std::vector<Eigen::VectorXd> u;
         Eigen::VectorXd              uh, vh;
-        contact::PatchLoad           load(points.size());
+        convolution::PatchLoad           load(points.size());
         for (unsigned int k = 0; k < n_steps; ++k)
           {
             const double t = (k + 1) * dt;
@@ -315,7 +315,7 @@ namespace greentread
           }
         return u;
       };
-      periodic::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
+      reference::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
       const auto            reference = drive(ring);
       double                peak      = 0.;
       for (const auto &u : reference)
@@ -340,7 +340,7 @@ namespace greentread
     TransientCase::reference(const std::string &road, const double dt) const
     {
       const auto            start = std::chrono::steady_clock::now();
-      periodic::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
+      reference::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
       const double          setup_seconds = base::seconds_since(start);
       TransientRun          result        = run(ring, road, dt);
       result.seconds += setup_seconds;
@@ -361,5 +361,5 @@ namespace greentread
       result.seconds += setup_seconds;
       return result;
     }
-  } // namespace analysis
+  } // namespace reference
 } // namespace greentread

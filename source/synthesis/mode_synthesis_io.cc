@@ -1,5 +1,5 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/hdf5.h>
 
@@ -13,12 +13,12 @@
 
 namespace greentread
 {
-  namespace modal
+  namespace synthesis
   {
-    PatchModel
+    modal::PatchModel
     to_patch_model(const ModeSynthesis &synthesis, const Eigen::MatrixXd &errors, const double f_max)
     {
-      PatchModel         model;
+      modal::PatchModel         model;
       const Eigen::Index P = synthesis.shapes.cols();
       model.points         = synthesis.points;
       model.residual_relaxation = synthesis.residual_relaxation;
@@ -94,12 +94,12 @@ namespace greentread
 
 
 
-    PatchModel
-    full_form(const PatchModel &model)
+    modal::PatchModel
+    full_form(const modal::PatchModel &model)
     {
       if (!model.is_rank_one())
         return model;
-      PatchModel full = model;
+      modal::PatchModel full = model;
       full.shapes.resize(0, 0);
       full.shapes_imag.resize(0, 0);
       full.factor.clear();
@@ -171,7 +171,7 @@ namespace greentread
     std::string
     read_modal_model_key(const std::string &file)
     {
-      return read_hdf5_stage_key(file, modal_datasets);
+      return base::read_hdf5_stage_key(file, modal_datasets);
     }
 
 
@@ -250,5 +250,5 @@ namespace greentread
         }
       return s;
     }
-  } // namespace modal
+  } // namespace synthesis
 } // namespace greentread

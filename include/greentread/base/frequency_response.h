@@ -1,7 +1,6 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/convolution/modal_model.h>
 
 #include <array>
 #include <complex>
@@ -27,7 +26,7 @@ namespace dealii
 
 namespace greentread
 {
-  namespace modal
+  namespace base
   {
     /**
      * @brief One FRF: values at \f$f_k = k\,\Delta f\f$, k = 0 .. n-1.
@@ -65,13 +64,6 @@ namespace greentread
     write_frf_csv(const std::filesystem::path  &file,
                   const FrequencyResponse      &frf,
                   const base::ParameterRecord &record);
-
-    /**
-     * @brief The FRF of a modal model on the grid \f$k\,\Delta f\f$,
-     * k = 0 .. n_lines-1.
-     */
-    FrequencyResponse
-    sample(const convolution::ModalModel &model, double df, unsigned int n_lines);
 
     /**
      * @brief Many FRFs g_ij(f) between points: the contents of a Green's
@@ -160,5 +152,5 @@ namespace greentread
      */
     std::string
     read_hdf5_stage_key(const std::string &file, const std::vector<std::string> &datasets);
-  } // namespace modal
+  } // namespace base
 } // namespace greentread

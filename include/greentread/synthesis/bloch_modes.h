@@ -18,7 +18,7 @@
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     /// The modes of one wavenumber below a cut-off.
     struct BlochModes
@@ -105,6 +105,6 @@ namespace greentread
      * cell, naming the wavenumber.
      */
     BlochModes
-    bloch_modes(const PeriodicCell &cell, unsigned int k, const ModeSearch &search);
-  } // namespace periodic
+    bloch_modes(const periodic::PeriodicCell &cell, unsigned int k, const ModeSearch &search);
+  } // namespace synthesis
 } // namespace greentread

@@ -1,5 +1,5 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/convolution/modal_model.h>
+#include <greentread/modal/modal_model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 namespace greentread
 {
-  namespace convolution
+  namespace modal
   {
     void
     ModalModel::add_pair(const std::complex<double> lambda,
@@ -139,5 +139,17 @@ namespace greentread
         r = std::max(r, std::abs(term.lambda));
       return r;
     }
-  } // namespace convolution
+
+
+    base::FrequencyResponse
+    sample(const ModalModel &model, const double df, const unsigned int n_lines)
+    {
+      base::FrequencyResponse frf;
+      frf.df = df;
+      frf.values.resize(n_lines);
+      for (unsigned int k = 0; k < n_lines; ++k)
+        frf.values[k] = model.frequency_response(2. * M_PI * k * df);
+      return frf;
+    }
+  } // namespace modal
 } // namespace greentread

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/modal/frequency_response.h>
-#include <greentread/modal/mode_synthesis.h>
+#include <greentread/base/frequency_response.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/periodic/green_stage.h>
 
 #include <deal.II/base/mpi.h>
@@ -14,16 +14,16 @@
 /**
  * @file
  * The modal stage of `Patch model/Source = fe modes` as a saved stage: the
- * ring's modes up to the cut-off (periodic/ring_modes.h) at the contact
+ * ring's modes up to the cut-off (synthesis/ring_modes.h) at the contact
  * points, with the static residual from the Green's functions' 0 Hz line
- * (modal/mode_synthesis.h), read from modal_model.h5 when its key matches
+ * (synthesis/mode_synthesis.h), read from modal_model.h5 when its key matches
  * and the file reads in full, computed and written otherwise.
- * Implemented in source/periodic/mode_stage.cc.
+ * Implemented in source/synthesis/mode_stage.cc.
  */
 
 namespace greentread
 {
-  namespace periodic
+  namespace synthesis
   {
     /**
      * @brief The key saved with modal_model.h5: the Green's stage's key
@@ -40,7 +40,7 @@ namespace greentread
       const geometry::GeometryParameters &geometry;
       const fe::MaterialParameters       &materials;
       const fe::InflationParameters      &inflation;
-      const PatchRequest                 &patch;
+      const periodic::PatchRequest                 &patch;
       /// Keep the modes up to this [Hz].
       double cutoff_hz = 0.;
     };
@@ -55,15 +55,15 @@ namespace greentread
      * @throws NumericalError if the points of the tyre built here are not
      * those of @p green (a Green's file from other parameters).
      */
-    modal::ModeSynthesis
+    synthesis::ModeSynthesis
     run_mode_stage(const ModeStageInputs                &inputs,
-                   const modal::FrequencyResponseMatrix &green,
+                   const base::FrequencyResponseMatrix &green,
                    const std::filesystem::path          &file,
                    const std::string                    &key,
                    const base::ParameterRecord          &record,
                    bool                                  reuse,
                    bool                                  print_timings,
                    MPI_Comm                              comm,
-                   modal::ModalLines                    *lines = nullptr);
-  } // namespace periodic
+                   synthesis::ModalLines                    *lines = nullptr);
+  } // namespace synthesis
 } // namespace greentread

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <greentread/base/output.h>
-#include <greentread/modal/frequency_response.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/modal/patch_model.h>
 
 #include <Eigen/Dense>
@@ -34,19 +34,19 @@
  * default loss factor), the scale of a contact time step.
  *
  * **Complex shapes.** With a damping that is not proportional the modes
- * are coupled (periodic/ring_modes.h); the synthesis then holds complex
+ * are coupled (synthesis/ring_modes.h); the synthesis then holds complex
  * shapes psi_k = shapes + j shapes_imag, and mode k contributes
  *   psi psi^T / (2 j w_d (j w - l)) - conj(psi) conj(psi)^T / (2 j w_d (j w - conj(l))),
  * l = w_k (-xi_k + j sqrt(1 - xi_k^2)), w_d = Im l, which for a real psi is
  * the term above. A mode with a complex shape has xi_k < 1.
- * Implemented in source/modal/mode_synthesis.cc (the synthesis and its
- * errors) and source/modal/mode_synthesis_io.cc (the rank-one patch model
+ * Implemented in source/synthesis/mode_synthesis.cc (the synthesis and its
+ * errors) and source/synthesis/mode_synthesis_io.cc (the rank-one patch model
  * and modal_model.h5).
  */
 
 namespace greentread
 {
-  namespace modal
+  namespace synthesis
   {
     /// The ring's Bloch frequencies per circumferential wavenumber.
     struct Dispersion
@@ -118,7 +118,7 @@ namespace greentread
     /// The 0 Hz line of @p green as a real n_p x n_p matrix: the structure's
     /// static compliance G(0) [m/N].
     Eigen::MatrixXd
-    static_line(const FrequencyResponseMatrix &green);
+    static_line(const base::FrequencyResponseMatrix &green);
 
     /**
      * @brief The synthesis from the modes (@p omega [rad/s], @p damping_ratio,
@@ -148,7 +148,7 @@ namespace greentread
       double                        df = 0.;
 
       bool
-      matches(const FrequencyResponseMatrix &direct) const
+      matches(const base::FrequencyResponseMatrix &direct) const
       {
         return g.size() == direct.n_lines && df == direct.df;
       }
@@ -166,7 +166,7 @@ namespace greentread
                const Eigen::VectorXd         &damping_ratio,
                const Eigen::MatrixXd         &shapes,
                const Eigen::MatrixXd         &shapes_imag,
-               const FrequencyResponseMatrix &direct,
+               const base::FrequencyResponseMatrix &direct,
                ModalLines                    *lines = nullptr);
 
     /**
@@ -181,7 +181,7 @@ namespace greentread
      */
     double
     fit_residual_relaxation(const ModeSynthesis           &model,
-                            const FrequencyResponseMatrix &direct,
+                            const base::FrequencyResponseMatrix &direct,
                             const ModalLines              *lines = nullptr);
 
     /**
@@ -201,7 +201,7 @@ namespace greentread
      * and @p f_max are copied.
      * @throws NumericalError for a mode with w_k <= 0 or a negative damping ratio.
      */
-    PatchModel
+    modal::PatchModel
     to_patch_model(const ModeSynthesis &synthesis, const Eigen::MatrixXd &errors, double f_max);
 
     /**
@@ -209,8 +209,8 @@ namespace greentread
      * (\f$R_k = c_k\phi_k\phi_k^T\f$): the identified model's form, for checks
      * of the rank-one path against the full one. A full model is returned as is.
      */
-    PatchModel
-    full_form(const PatchModel &model);
+    modal::PatchModel
+    full_form(const modal::PatchModel &model);
 
     /**
      * @brief Write @p synthesis as modal_model.h5 (temporary name, renamed when
@@ -257,7 +257,7 @@ namespace greentread
      */
     SynthesisErrors
     compare(const ModeSynthesis           &model,
-            const FrequencyResponseMatrix &direct,
+            const base::FrequencyResponseMatrix &direct,
             const ModalLines              *lines = nullptr);
-  } // namespace modal
+  } // namespace synthesis
 } // namespace greentread

@@ -1,0 +1,43 @@
+# The folders follow the pipeline: a file of one stage may include its own
+# stage and earlier ones, never a later one. Run as
+#   cmake -DTOP=<source dir> -P check_include_order.cmake
+# and it fails naming every include that runs against the pipeline.
+set(order base geometry fe periodic modal synthesis convolution road contact sdof analysis
+          reference scenes)
+set(violations "")
+foreach(stage IN LISTS order)
+  list(FIND order ${stage} rank)
+  file(GLOB files ${TOP}/source/${stage}/*.cc ${TOP}/include/greentread/${stage}/*.h)
+  if(NOT files)
+    message(FATAL_ERROR "no files under source/${stage} or include/greentread/${stage}: "
+                        "the stage list in this script is stale")
+  endif()
+  foreach(file IN LISTS files)
+    file(STRINGS ${file} includes REGEX "^#include <greentread/[a-z_]+/")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^#include <greentread/([a-z_]+)/.*" "\\1" other "${line}")
+      list(FIND order ${other} other_rank)
+      if(other_rank EQUAL -1)
+        string(APPEND violations "\n  ${file}: ${line} (folder '${other}' is not in the pipeline)")
+      elseif(other_rank GREATER rank)
+        string(APPEND violations "\n  ${file}: ${line} (${stage} comes before ${other})")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+# Every folder is in the list.
+file(GLOB folders LIST_DIRECTORIES true ${TOP}/source/*)
+foreach(folder IN LISTS folders)
+  if(IS_DIRECTORY ${folder})
+    get_filename_component(name ${folder} NAME)
+    list(FIND order ${name} r)
+    if(r EQUAL -1)
+      string(APPEND violations "\n  source/${name}: a folder that is not in the pipeline's order")
+    endif()
+  endif()
+endforeach()
+if(violations)
+  message(FATAL_ERROR "includes against the pipeline (${order}):${violations}")
+endif()
+list(JOIN order " < " chain)
+message(STATUS "every include follows the pipeline: ${chain}")
