@@ -39,7 +39,7 @@ fi
 # run NAME ARGS...: both roads at 90 km/h over 1.2 m on a fresh copy of the saved stages.
 run() {
   echo "  running $1 ..." >&2
-  run_saved "$1" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
+  run_saved "$1" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds (kph)=90" \
     --set "Rolling/Distance=1.2" --set "Contact grid/Solver=$solver" "${@:2}"
 }
 

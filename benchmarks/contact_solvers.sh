@@ -41,7 +41,7 @@ for s in "${grids[@]}"; do
   for solver in pivoting "projected CG"; do
     name="s${s}_${solver// /_}"
     echo "  running $name ..." >&2
-    run_saved "$name" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds=90" \
+    run_saved "$name" --set "Road texture/Roads=road-A, road-B" --set "Rolling/Speeds (kph)=90" \
       --set "Rolling/Distance=1.2" --set "Contact grid/Subdivisions=$s" \
       --set "Contact grid/Solver=$solver"
   done

@@ -58,7 +58,7 @@ band_difference() {
 
 v=25           # m/s: 90 km/h
 sample=0.000384 # m: Road texture/Spacing's default, the step of Time step = auto
-common=(--set "Road texture/Roads=road-A" --set "Rolling/Speeds=90" --set "Rolling/Distance=1.2288")
+common=(--set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=90" --set "Rolling/Distance=1.2288")
 
 echo "Time step: road-A at 90 km/h over 1.2288 m (3200 road samples: every dt below a whole number of steps, every record 49.15 ms), band levels against dt = 1/20 of a road sample"
 echo "| dt | road samples per step | run time [s] | steps not converged | max level difference, bands to 1 kHz [dB] | all bands [dB] |"
@@ -87,14 +87,14 @@ case_row() {
   IFS='|' read -r seconds contact force failed pen <<< "$(summary "$name")"
   echo "| $label | $contact | $force | $failed | $pen | $seconds |"
 }
-run rough --set "Road texture/Roads=sinusoid" --set "Road texture/Sinusoid amplitude=0.003" \
-  --set "Road texture/Sinusoid wavelength=0.05" --set "Rolling/Speeds=90"
+run rough --set "Road texture/Roads=sinusoid" --set "Road/Sinusoid/Amplitude=0.003" \
+  --set "Road/Sinusoid/Wavelength=0.05" --set "Rolling/Speeds (kph)=90"
 case_row "very rough: sinusoid, 3 mm amplitude, 5 cm wavelength, 90 km/h" rough
-run fast --set "Road texture/Roads=road-A" --set "Rolling/Speeds=130"
+run fast --set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=130"
 case_row "130 km/h, road-A" fast
-run light_A --set "Road texture/Roads=road-A" --set "Rolling/Speeds=90" --set "Rolling/Static load=0.01"
+run light_A --set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=90" --set "Rolling/Static load=0.01"
 case_row "barely touching: 0.01 N, road-A, 90 km/h" light_A
-run light_B --set "Road texture/Roads=road-B" --set "Rolling/Speeds=90" --set "Rolling/Static load=0.01"
+run light_B --set "Road texture/Roads=road-B" --set "Rolling/Speeds (kph)=90" --set "Rolling/Static load=0.01"
 case_row "barely touching: 0.01 N, road-B, 90 km/h" light_B
 case_row "dt = 20 road samples (307 us), road-A, 90 km/h, 1.2288 m" dt_20
 case_row "dt = 1/20 road sample (0.768 us), road-A, 90 km/h, 1.2288 m" reference

@@ -257,7 +257,7 @@ main(int argc, char **argv)
                     "Green's functions/Frequency step=500",
                     "Patch model/Mode cutoff=4000",
                     "Road texture/Roads=road-A",
-                    "Rolling/Speeds=90",
+                    "Rolling/Speeds (kph)=90",
                     "Rolling/Distance=1.1",
                     "Contact grid/Subdivisions=2",
                     "Time stepping/Time step=1e-4"};

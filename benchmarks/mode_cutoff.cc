@@ -12,7 +12,7 @@
 // serves every row.
 //
 //   mode_cutoff --model DIR/modal_model.h5   the saved stages of a run of the
-//                                            tire-road-contact scene with
+//                                            tyre-road-contact scene with
 //                                            'Patch model/Source = fe modes'
 //                                            (green_functions.h5 beside it)
 //   mode_cutoff [--quick]                    the tests' coarse tyre (16 cells,

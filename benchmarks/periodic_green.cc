@@ -202,7 +202,7 @@ main(int argc, char **argv)
       line("bloch", bloch);
     }
   std::printf("\nThe default scene solves for 10 x 12 points (more right-hand sides than "
-              "these 3 x 3) at 257 frequencies; the tire-green scene prints its own time per "
+              "these 3 x 3) at 257 frequencies; the tyre-green scene prints its own time per "
               "frequency.\n");
   return 0;
 }

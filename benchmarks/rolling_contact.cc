@@ -5,7 +5,7 @@
 // the difference in contact stress and in one-third-octave band levels.
 //
 // The patch model is the default tyre's identified one (--model
-// output/tire_road_contact/patch_model.h5, written by prm/tire_road_contact.prm
+// output/tyre_road_contact/patch_model.h5, written by prm/tyre_road_contact.prm
 // with --set "Patch model/Source=identified") or, without one, a
 // synthetic model of the same size: 10 x 12 points and 120 modes from 100 Hz
 // to 4 kHz with imaginary residues and a local compliance.

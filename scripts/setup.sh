@@ -29,7 +29,7 @@ packages=(
   calculix-ccx          # independent check of the tyre model (tests/unit/test_calculix.cc)
   numdiff               # deal.II-style regression tests
   gnuplot-nox           # PNG plots
-  openmpi-bin           # mpirun: the tire-green scene and its MPI test
+  openmpi-bin           # mpirun: the tyre-green scene and its MPI test
   libsuitesparse-dev    # UMFPACK headers: the full-ring reference solve
   libfftw3-dev          # FFTW 3: the tread's layer on fine contact grids
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
@@ -67,7 +67,7 @@ esac
 case "$mode" in
   run)
     echo "== running the built-in default scene, the main job (tyre on road-A and road-B, 50-90 km/h)"
-    echo "   (the same as greentread prm/tire_road_contact.prm, writing to output/)"
+    echo "   (the same as greentread prm/tyre_road_contact.prm, writing to output/)"
     cd "$top"
     "$build_dir/greentread"
     ;;

@@ -11,6 +11,7 @@
 #include <greentread/base/parameters.h>
 #include <greentread/config.h>
 #include <greentread/scenes/scene.h>
+#include <greentread/scenes/scene_input.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/revision.h>
@@ -35,7 +36,7 @@ namespace
     "\n"
     "Runs the scene SCENE.prm; without one, the built-in default scene: the main\n"
     "job, the tyre rolling on two road textures at 50, 70 and 90 km/h (the same as\n"
-    "prm/tire_road_contact.prm, writing to output/).\n"
+    "prm/tyre_road_contact.prm, writing to output/).\n"
     "\n"
     "Options:\n"
     "  --set \"Path=value\"   override one parameter after the file is read, e.g.\n"
@@ -112,8 +113,9 @@ main(int argc, char **argv)
         greentread::base::parse_scene_file(prm, scene_file);
       for (const auto &assignment : overrides)
         greentread::base::apply_override(prm, assignment);
+      greentread::scenes::apply_renamed_parameters(prm, std::cerr);
 
-      auto scene = greentread::scenes::create_scene(prm);
+      auto scene = greentread::scenes::create_scene(prm, scene_file);
       scene->run();
     }
   // Bad input and numerical failures are found by every rank alike (the

@@ -38,12 +38,12 @@ namespace greentread
       {
         prm.declare_entry("Time step", "auto", dealii::Patterns::Anything(),
                           "Time step dt: a number from 1e-8 to 1e-2, or 'auto', the scene's own "
-                          "choice: in tire-road-contact the road's sampling interval divided by "
+                          "choice: in tyre-road-contact the road's sampling interval divided by "
                           "the speed (one road sample per step, as the paper); in sdof 1e-5 s "
                           "(Table A.2 uses 1e-4 and 1e-5 s). Unit: s.");
         prm.declare_entry("End time", "0.2", base::RangePattern::positive("s"),
                           "Scene sdof: the duration of the run, at least one time step and at "
-                          "most 2e8 of them (tire-road-contact rolls 'Rolling/Distance'). "
+                          "most 2e8 of them (tyre-road-contact rolls 'Rolling/Distance'). "
                           "Unit: s. 0.2 s is two road periods of Section 3.");
       }
       prm.leave_subsection();

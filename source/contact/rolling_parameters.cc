@@ -13,7 +13,7 @@ namespace greentread
       using base::RangePattern;
       prm.enter_subsection("Rolling");
       {
-        prm.declare_entry("Speeds", "50, 70, 90", dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
+        prm.declare_entry("Speeds (kph)", "50, 70, 90", dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
                           "Rolling speeds V0 in km/h, a comma-separated list (1 to 400).");
         prm.declare_entry("Distance", "2", base::RangePattern::closed(0.01, 20., "m"),
                           "Distance rolled in each run (the paper: 2 m).");
@@ -47,10 +47,10 @@ namespace greentread
       prm.enter_subsection("Rolling");
       {
         speeds.clear();
-        for (const auto &s : base::split_list(prm.get("Speeds")))
+        for (const auto &s : base::split_list(prm.get("Speeds (kph)")))
           speeds.push_back(std::stod(s));
         if (speeds.empty())
-          throw InputError("parameter 'Rolling/Speeds' is empty; allowed: a list of speeds in "
+          throw InputError("parameter 'Rolling/Speeds (kph)' is empty; allowed: a list of speeds in "
                            "km/h from 1 to 400");
         distance             = prm.get_double("Distance");
         static_load      = prm.get_double("Static load");
@@ -65,7 +65,7 @@ namespace greentread
       prm.enter_subsection("Convolution");
       convolution = convolution::parse_method(
         prm.get("Method"), {convolution::Method::direct, convolution::Method::modal_recursive},
-        "in scene tire-road-contact (the paper's modal form overflows over a rolling run)");
+        "in scene tyre-road-contact (the paper's modal form overflows over a rolling run)");
       shape_precision = prm.get("Shape precision") == "single" ? convolution::ShapePrecision::single_precision :
                                                                  convolution::ShapePrecision::double_precision;
       prm.leave_subsection();

@@ -54,12 +54,12 @@ namespace greentread
           "steps. 'modal-paper': Eqs. (12)-(15) as printed, with exp(+xi w t) factors that "
           "grow and overflow on long or heavily damped runs (detected and reported). "
           "'modal-recursive': one decaying state per pole with exact weights for a load "
-          "linear over the step; exact for any run length. Scene tire-road-contact: "
+          "linear over the step; exact for any run length. Scene tyre-road-contact: "
           "'direct' (the sum over every past step with the patch model's kernels, the "
           "reference) or 'modal-recursive'.");
         prm.declare_entry(
           "Shape precision", "single", dealii::Patterns::Selection("double|single"),
-          "Scene tire-road-contact with 'Patch model/Source' = fe modes and 'Method' = "
+          "Scene tyre-road-contact with 'Patch model/Source' = fe modes and 'Method' = "
           "modal-recursive: the precision in which the rolling update keeps the mode shapes at "
           "the points. The update reads every shape once per step and is limited by memory "
           "bandwidth; 'single' halves the bytes (each value rounded to 6e-8 of itself, the "

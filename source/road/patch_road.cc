@@ -2,6 +2,7 @@
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/road/patch_road.h>
+#include <greentread/road/road_profile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,10 +23,11 @@ namespace greentread
                           "The roads to roll over, a comma-separated list. Each is 'road-A' "
                           "(rough, surface-dressing-like, MPD about 1.9 mm) or 'road-B' (dense "
                           "asphalt, MPD about 0.7 mm), synthetic textures with the documented "
-                          "target spectra (README); 'sinusoid' (a sinusoid along x with "
-                          "'Sinusoid amplitude' and 'Sinusoid wavelength'); 'flat'; or a "
-                          "texture file: SDF (ISO 25178-71, ASCII or binary) or the plain "
-                          "height grid (README, 'File formats').");
+                          "target spectra (doc/methods/contact.md); 'sinusoid' (a sinusoid "
+                          "along x, subsection Road/Sinusoid); 'flat'; or a texture file: SDF "
+                          "(ISO 25178-71, ASCII or binary) or the plain height grid "
+                          "(doc/getting-started.md). A relative file name is looked for "
+                          "beside the scene file, then in the working directory.");
         prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0),
                           "Seed of the synthetic textures: the same seed gives the same road.");
         prm.declare_entry("Length", "2.304", base::RangePattern::closed(0.05, 20., "m"),
@@ -33,10 +35,6 @@ namespace greentread
         prm.declare_entry("Spacing", "0.000384", base::RangePattern::closed(1e-5, 5e-3, "m"),
                           "Sampling interval of the synthetic, sinusoidal and flat roads "
                           "(the paper's measured roads: 384 um).");
-        prm.declare_entry("Sinusoid amplitude", "0.001", base::RangePattern::closed(0., 0.05, "m"),
-                          "Amplitude of the 'sinusoid' road.");
-        prm.declare_entry("Sinusoid wavelength", "0.05", base::RangePattern::closed(1e-3, 10., "m"),
-                          "Wavelength of the 'sinusoid' road.");
         prm.declare_entry("Height scale", "1", base::RangePattern::closed(0., 100., "1"),
                           "Factor on every road's heights (presets, sinusoid and texture "
                           "files): 2 raises the texture spectrum by 6.02 dB at every "
@@ -51,6 +49,7 @@ namespace greentread
                           "under the point itself (bilinear).");
       }
       prm.leave_subsection();
+      SinusoidParameters::declare_parameters(prm);
     }
 
 
@@ -72,13 +71,15 @@ namespace greentread
         seed       = prm.get_integer("Seed");
         length     = prm.get_double("Length");
         spacing    = prm.get_double("Spacing");
-        amplitude  = prm.get_double("Sinusoid amplitude");
-        wavelength = prm.get_double("Sinusoid wavelength");
         height_scale = prm.get_double("Height scale");
         sampling   = prm.get("Between points") == "point" ? RoadSampling::point :
                                                              RoadSampling::envelope;
       }
       prm.leave_subsection();
+      SinusoidParameters sinusoid;
+      sinusoid.parse_parameters(prm);
+      amplitude  = sinusoid.amplitude;
+      wavelength = sinusoid.wavelength;
     }
 
 

@@ -57,7 +57,7 @@ namespace greentread
         key   = periodic::green_stage_key(prm, geometry.geo_file);
       });
       const auto &tyre = *built;
-      out << "GreenTread: scene 'tire-green', Green's functions of the inflated ring at the "
+      out << "GreenTread: scene 'tyre-green', Green's functions of the inflated ring at the "
              "contact points (Meftah et al. 2013, Section 4.2)\n"
           << tyre.describe(inflation.pressure) << "  frequencies 0 to "
           << format_number(green.max_frequency) << " Hz every " << format_number(green.frequency_step)

@@ -11,13 +11,15 @@
 #include <greentread/road/road_profile.h>
 #include <greentread/scenes/green_scene.h>
 #include <greentread/scenes/identify_scene.h>
-#include <greentread/scenes/road_scene.h>
 #include <greentread/scenes/scene.h>
+#include <greentread/scenes/scene_input.h>
 #include <greentread/scenes/sdof_scene.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
 #include <greentread/scenes/tyre_cell_scene.h>
 #include <greentread/sdof/oscillator.h>
 
 #include <algorithm>
+#include <iostream>
 
 namespace greentread
 {
@@ -26,21 +28,25 @@ namespace greentread
     void
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Scene", "tire-road-contact",
+      prm.declare_entry("Scene", "tyre-road-contact",
                         dealii::Patterns::Selection(
-                          "sdof|identify|geometry-study|tire-cell|tire-green|tire-road-contact"),
+                          "sdof|identify|geometry-study|tyre-cell|tyre-green|tyre-road-contact|"
+                          "tire-cell|tire-green|tire-road-contact"),
                         "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
                         "sinusoidal road (paper, Section 3), with its exact solution. "
                         "'identify': modal identification (LSCE, Appendix A) of FRFs. "
                         "'geometry-study': the tyre section and cell, masses and inflation. "
-                        "'tire-cell': the same and the cell matrices K, M, C, Kp. "
-                        "'tire-green': the Green's functions of the inflated ring at the "
+                        "'tyre-cell': the same and the cell matrices K, M, C, Kp. "
+                        "'tyre-green': the Green's functions of the inflated ring at the "
                         "contact points (Section 4.2), over the MPI ranks. "
-                        "'tire-road-contact': the whole pipeline, geometry to the contact "
-                        "stresses and their spectra on road textures (Section 5).");
+                        "'tyre-road-contact': the whole pipeline, geometry to the contact "
+                        "stresses and their spectra on road textures (Section 5). The "
+                        "spellings 'tire-cell', 'tire-green' and 'tire-road-contact' are "
+                        "deprecated: still read, with a warning, in this release.");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
-                        "paths are relative to the working directory.");
+                        "paths are relative to the working directory (input files, by "
+                        "contrast, are looked for first beside the scene file).");
       prm.declare_entry("Reuse saved results", "true", dealii::Patterns::Bool(),
                         "Reuse a stage's saved output (green_functions.h5, patch_model.h5) "
                         "when it was computed from the same parameters, input files and "
@@ -56,7 +62,7 @@ namespace greentread
     void
     GlobalParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      scene            = prm.get("Scene");
+      scene            = current_scene_name(prm.get("Scene"), std::cerr);
       output_directory = prm.get("Output directory");
       print_timings    = prm.get_bool("Print timings");
       reuse            = prm.get_bool("Reuse saved results");
@@ -81,6 +87,7 @@ namespace greentread
       road::RoadTextureParameters::declare_parameters(prm);
       contact::RollingParameters::declare_parameters(prm);
       contact::ContactGridParameters::declare_parameters(prm);
+      declare_renamed_parameters(prm);
     }
 
 
@@ -95,12 +102,12 @@ namespace greentread
                 "Identification"};
       if (scene == "identify")
         return {"Identification"};
-      if (scene == "geometry-study" || scene == "tire-cell")
+      if (scene == "geometry-study" || scene == "tyre-cell")
         return {"Geometry", "Materials", "Inflation"};
-      if (scene == "tire-green")
+      if (scene == "tyre-green")
         return {"Geometry", "Materials", "Inflation", "Green's functions"};
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
-              "Identification", "Patch model", "Road texture", "Rolling",
+              "Identification", "Patch model", "Road texture", "Road/Sinusoid", "Rolling",
               "Contact grid", "Time stepping/Time step", "Convolution/Method",
               "Convolution/Shape precision"};
     }
@@ -129,7 +136,9 @@ namespace greentread
             continue;
           const std::string section = entry.path.substr(0, slash);
           if (std::find(read.begin(), read.end(), section) != read.end() ||
-              std::find(read.begin(), read.end(), entry.path) != read.end())
+              std::any_of(read.begin(), read.end(), [&](const std::string &r) {
+                return entry.path == r || entry.path.rfind(r + "/", 0) == 0;
+              }))
             continue;
           std::string list;
           bool        reads_part = false;
@@ -149,25 +158,26 @@ namespace greentread
 
 
     std::unique_ptr<Scene>
-    create_scene(dealii::ParameterHandler &prm)
+    create_scene(dealii::ParameterHandler &prm, const std::string &scene_file)
     {
       GlobalParameters global;
       global.parse_parameters(prm);
       check_subsections(prm, global.scene);
+      resolve_input_files(prm, scene_file, subsections_read(global.scene));
       // Only the Green's functions are spread over MPI ranks.
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      if (n_ranks > 1 && global.scene != "tire-green")
+      if (n_ranks > 1 && global.scene != "tyre-green")
         throw InputError("scene '" + global.scene + "' runs on one process, and this run has " +
                          std::to_string(n_ranks) +
-                         " MPI ranks: run it without mpirun (only 'tire-green' uses MPI)");
-      if (global.scene == "tire-green")
+                         " MPI ranks: run it without mpirun (only 'tyre-green' uses MPI)");
+      if (global.scene == "tyre-green")
         return std::make_unique<GreenScene>(prm, global);
       // The Selection pattern has rejected any other name.
-      if (global.scene == "tire-road-contact")
-        return std::make_unique<RoadContactScene>(prm, global);
+      if (global.scene == "tyre-road-contact")
+        return std::make_unique<TyreRoadContactScene>(prm, global);
       if (global.scene == "identify")
         return std::make_unique<IdentifyScene>(prm, global);
-      if (global.scene == "geometry-study" || global.scene == "tire-cell")
+      if (global.scene == "geometry-study" || global.scene == "tyre-cell")
         return std::make_unique<TyreCellScene>(prm, global);
       return std::make_unique<SdofScene>(prm, global);
     }

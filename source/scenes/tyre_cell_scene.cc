@@ -41,7 +41,7 @@ namespace greentread
     TyreCellScene::TyreCellScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
       : prm(prm_)
       , global(global_)
-      , full(global_.scene == "tire-cell")
+      , full(global_.scene == "tyre-cell")
     {
       geometry.parse_parameters(prm);
       materials.parse_parameters(prm);
@@ -84,7 +84,7 @@ namespace greentread
       const auto masses =
         analysis::write_mass_report(directory / "mass_report.csv", *cell, model, materials, record);
       if (full)
-        fe::write_abaqus(directory / "tire_cell.inp", cell->cell(), model.mapping(), materials, record);
+        fe::write_abaqus(directory / "tyre_cell.inp", cell->cell(), model.mapping(), materials, record);
 
       std::cout << "GreenTread: scene '" << global.scene << "', the tyre's periodic cell "
                 << "(Meftah et al. 2013, Section 4)\n"
@@ -110,7 +110,7 @@ namespace greentread
                   << " s" << (full ? ", Kp " + format_printf("%.3g", kp_time) + " s" : std::string()) << "\n";
       std::cout << "Wrote section.vtu" << (plotted ? ", section.png" : "")
                 << ", inflated_cell.vtu, inflated_cell.pvd, mass_report.csv"
-                << (full ? ", tire_cell.inp" : "") << " in " << directory.string() << "\n";
+                << (full ? ", tyre_cell.inp" : "") << " in " << directory.string() << "\n";
     }
   } // namespace scenes
 } // namespace greentread

@@ -24,9 +24,10 @@ namespace greentread
         prm.declare_entry("Gravity", "9.81", base::RangePattern::non_negative("m/s^2"),
                           "Gravitational acceleration g pressing the mass onto the road "
                           "(the load -M g of Eq. 30). Unit: m/s^2.");
-        prm.declare_entry("Speed", "0.1", base::RangePattern::positive("m/s"),
+        prm.declare_entry("Speed (kph)", "0.36", base::RangePattern::positive("km/h"),
                           "Speed V0 at which the oscillator travels over the road. "
-                          "Unit: m/s. Paper, Section 3: 0.1 m/s.");
+                          "Unit: km/h, as every speed of GreenTread. Paper, Section 3: "
+                          "0.1 m/s = 0.36 km/h.");
         prm.declare_entry("Green's function", "analytic",
                           dealii::Patterns::Selection("analytic|identified"),
                           "'analytic': the closed-form g(t) and its exact modal form. "
@@ -54,7 +55,7 @@ namespace greentread
         stiffness     = prm.get_double("Stiffness");
         damping_ratio = prm.get_double("Damping ratio");
         gravity       = prm.get_double("Gravity");
-        speed         = prm.get_double("Speed");
+        speed         = prm.get_double("Speed (kph)") * 1000. / 3600.; // m/s (0.36 -> 0.1 exactly)
         identified_green  = prm.get("Green's function") == "identified";
         frf_max_frequency = prm.get_double("FRF maximum frequency");
         frf_line_spacing  = prm.get_double("FRF line spacing");

@@ -1,4 +1,4 @@
-# The tire-green scene with two MPI ranks against one process, the stage
+# The tyre-green scene with two MPI ranks against one process, the stage
 # cache, and 'identify' on a CSV it wrote.
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
@@ -18,8 +18,8 @@ function(run_checked name)
   set(output "${out}" PARENT_SCOPE)
 endfunction()
 
-run_checked("serial run" ${PROGRAM} --set "Scene=tire-green" --set "Output directory=serial" ${common})
-run_checked("mpirun -np 2" ${MPIEXEC} -np 2 ${PROGRAM} --set "Scene=tire-green"
+run_checked("serial run" ${PROGRAM} --set "Scene=tyre-green" --set "Output directory=serial" ${common})
+run_checked("mpirun -np 2" ${MPIEXEC} -np 2 ${PROGRAM} --set "Scene=tyre-green"
   --set "Output directory=parallel" ${common})
 if(NOT output MATCHES "Run time on 2 MPI rank")
   message(FATAL_ERROR "the parallel run did not use 2 ranks:\n${output}")
@@ -30,11 +30,11 @@ message(STATUS "serial against 2 ranks: ${output}")
 
 # The same parameters again: the saved Green's functions are reused; a
 # changed one is recomputed.
-run_checked("second run" ${PROGRAM} --set "Scene=tire-green" --set "Output directory=serial" ${common})
+run_checked("second run" ${PROGRAM} --set "Scene=tyre-green" --set "Output directory=serial" ${common})
 if(NOT output MATCHES "Reusing .*green_functions.h5")
   message(FATAL_ERROR "the second run did not reuse the saved Green's functions:\n${output}")
 endif()
-run_checked("changed run" ${PROGRAM} --set "Scene=tire-green" --set "Output directory=serial" ${common}
+run_checked("changed run" ${PROGRAM} --set "Scene=tyre-green" --set "Output directory=serial" ${common}
   --set "Inflation/Pressure=2.2e5")
 if(output MATCHES "Reusing")
   message(FATAL_ERROR "a changed pressure reused the old Green's functions:\n${output}")
@@ -59,7 +59,7 @@ if(NOT CMAKE_MATCH_1 LESS 1)
 endif()
 message(STATUS "identify on green_7_7.csv: E = ${CMAKE_MATCH_1}")
 
-# Under mpirun, every scene but tire-green is refused on every rank, with a
+# Under mpirun, every scene but tyre-green is refused on every rank, with a
 # message that says which scene uses MPI, and a non-zero exit.
 execute_process(COMMAND ${MPIEXEC} -np 2 ${PROGRAM} --set "Scene=sdof"
   --set "Output directory=refused" WORKING_DIRECTORY ${WORKDIR}
@@ -67,7 +67,7 @@ execute_process(COMMAND ${MPIEXEC} -np 2 ${PROGRAM} --set "Scene=sdof"
 if(rc EQUAL 0)
   message(FATAL_ERROR "mpirun -np 2 of the sdof scene succeeded:\n${out}\n${err}")
 endif()
-if(NOT err MATCHES "only 'tire-green' uses MPI")
+if(NOT err MATCHES "only 'tyre-green' uses MPI")
   message(FATAL_ERROR "mpirun -np 2 of the sdof scene did not say why it was refused:\n${out}\n${err}")
 endif()
 file(GLOB_RECURSE left ${WORKDIR}/refused/*)

@@ -1,7 +1,7 @@
 // rank_failure: run under mpirun -np 2 (tests/green/check_mpi.cmake).
 //
 // The MPI failure rule the frequency loop of the Green's stage and the
-// tire-green scene use (throw_if_any_rank_failed, base/exceptions.h): a
+// tyre-green scene use (throw_if_any_rank_failed, base/exceptions.h): a
 // failure on one rank only must reach every rank, as the same exception
 // with the lowest failing rank's message, so that no rank waits for the
 // others in a collective call. Each case is checked on every rank; the exit

@@ -1,7 +1,7 @@
 #pragma once
 
 // One rolling run of a patch model over a texture through the recipe the
-// tire-road-contact scene uses (contact/rolling.h: envelope sampling, a start
+// tyre-road-contact scene uses (contact/rolling.h: envelope sampling, a start
 // from the static contact that carries the load at x = 0, the indentation
 // held), with the model's own static compliance: shared by the checks on
 // a synthetic patch (test_patch_contact.cc) and on a real tyre

@@ -1,5 +1,5 @@
 // The built-in default scene is the main job: `greentread` with no scene file
-// runs what prm/tire_road_contact.prm runs, parameter for parameter. The
+// runs what prm/tyre_road_contact.prm runs, parameter for parameter. The
 // .prm is the documented, commented form of the defaults; this test keeps
 // the two from drifting apart (a drift would also make a default run miss
 // the .prm run's saved Green's functions). And the keys that decide when the
@@ -12,7 +12,7 @@
 #include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/synthesis/mode_stage.h>
-#include <greentread/scenes/road_scene.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
 #include <greentread/scenes/scene.h>
 
 #include <filesystem>
@@ -29,12 +29,12 @@ using namespace greentread;
 
 BOOST_AUTO_TEST_SUITE(main_job)
 
-BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tire_road_contact)
+BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tyre_road_contact)
 {
   dealii::ParameterHandler defaults, main_job;
   scenes::declare_parameters(defaults);
   scenes::declare_parameters(main_job);
-  base::parse_scene_file(main_job, GREENTREAD_SOURCE_DIR "/prm/tire_road_contact.prm");
+  base::parse_scene_file(main_job, GREENTREAD_SOURCE_DIR "/prm/tyre_road_contact.prm");
 
   std::map<std::string, std::string> from_file;
   for (const auto &[path, value] : base::ParameterRecord::from(main_job, "").entries)
@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tire_road_contact)
     {
       BOOST_TEST_REQUIRE(from_file.count(path) == 1u, path);
       if (path == "Output directory")
-        continue; // output/ by default, output/tire_road_contact for the .prm
+        continue; // output/ by default, output/tyre_road_contact for the .prm
       BOOST_TEST(from_file[path] == value,
                  path << ": the .prm has '" << from_file[path] << "', the default is '" << value
                       << "'");
@@ -52,7 +52,7 @@ BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tire_road_contact)
     }
   BOOST_TEST_MESSAGE(compared << " parameters: the default equals the main job's .prm");
   BOOST_TEST(compared > 100u);
-  BOOST_TEST(defaults.get("Scene") == "tire-road-contact");
+  BOOST_TEST(defaults.get("Scene") == "tyre-road-contact");
 }
 
 BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
@@ -83,7 +83,7 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
 
   // Unchanged: another path to the same file, other outputs, later stages.
   BOOST_TEST((keys({}, copy.string()) == reference));
-  BOOST_TEST((keys({"Output directory=elsewhere", "Rolling/Speeds=130",
+  BOOST_TEST((keys({"Output directory=elsewhere", "Rolling/Speeds (kph)=130",
                     "Road texture/Roads=road-B", "Green's functions/Pairs=0:0"},
                    geo) == reference));
 

@@ -1,7 +1,7 @@
-// The main job's scene (tire-road-contact) as a user runs it: the program
-// itself, on the main job's tyre (tests/road/default_mesh.prm: the default
+// The main job's scene (tyre-road-contact) as a user runs it: the program
+// itself, on the main job's tyre (tests/tyre_road_contact/default_mesh.prm: the default
 // mesh and 10 x 12 points, Green's functions every 50 Hz), reusing the
-// stages road/default_mesh saved. Each check compares the output files with what physics
+// stages tyre_road_contact/default_mesh saved. Each check compares the output files with what physics
 // says, not with an earlier run:
 // - a sinusoidal road of wavelength lambda at speed V puts the stress
 //   spectrum's highest band at V / lambda;
@@ -97,7 +97,7 @@ namespace
   };
 
   /// One run of the program on the main job's tyre, in a scratch directory that
-  /// starts with road/default_mesh's saved stages.
+  /// starts with tyre_road_contact/default_mesh's saved stages.
   struct Run
   {
     Spectrum spectrum;
@@ -119,10 +119,10 @@ namespace
     if (prepare)
       prepare(dir);
     std::string command = std::string("\"") + GREENTREAD_PROGRAM + "\" \"" + GREENTREAD_SOURCE_DIR +
-                          "/tests/road/default_mesh.prm\" --set \"Output directory=" + dir.string() +
+                          "/tests/tyre_road_contact/default_mesh.prm\" --set \"Output directory=" + dir.string() +
                           "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
                           "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=" + road +
-                          "\" --set \"Rolling/Speeds=" + std::to_string(speed_kmh) + "\"";
+                          "\" --set \"Rolling/Speeds (kph)=" + std::to_string(speed_kmh) + "\"";
     for (const auto &s : settings)
       command += " --set \"" + s + "\"";
     command += " > \"" + (dir / "screen.txt").string() + "\" 2>&1";
@@ -178,8 +178,8 @@ BOOST_AUTO_TEST_CASE(a_sinusoidal_road_peaks_at_speed_over_wavelength)
       const auto   run = run_scene("sinusoid-" + std::to_string(int(1e3 * lambda)) + "-" +
                                    std::to_string(int(V)),
                                  "sinusoid", V,
-                                 {"Road texture/Sinusoid amplitude=0.0002",
-                                  "Road texture/Sinusoid wavelength=" + std::to_string(lambda)});
+                                 {"Road/Sinusoid/Amplitude=0.0002",
+                                  "Road/Sinusoid/Wavelength=" + std::to_string(lambda)});
       BOOST_TEST(std::abs(run.spectrum.top_band() / band_of(f) - 1.) < 1e-9,
                  "road frequency " << f << " Hz");
     }
@@ -194,8 +194,8 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
   {
     // A 20 um sinusoid of 4 cm at 90 km/h: its band, 630 Hz.
     const std::vector<std::string> sinus = {"Rolling/Static load=3000",
-                                            "Road texture/Sinusoid amplitude=0.00002",
-                                            "Road texture/Sinusoid wavelength=0.04"};
+                                            "Road/Sinusoid/Amplitude=0.00002",
+                                            "Road/Sinusoid/Wavelength=0.04"};
     auto doubled = sinus;
     doubled.push_back("Road texture/Height scale=2");
     const auto a    = run_scene("sinusoid-1", "sinusoid", 90., sinus);
@@ -241,8 +241,8 @@ BOOST_AUTO_TEST_CASE(a_finer_contact_grid_carries_the_load_and_stays_linear)
   // the road's band, +6.02 dB for twice the heights, the mean force the
   // load, and the total force's spectrum written beside the stress's.
   const std::vector<std::string> sinus = {"Rolling/Static load=3000",
-                                          "Road texture/Sinusoid amplitude=0.00002",
-                                          "Road texture/Sinusoid wavelength=0.04",
+                                          "Road/Sinusoid/Amplitude=0.00002",
+                                          "Road/Sinusoid/Wavelength=0.04",
                                           "Contact grid/Subdivisions=2"};
   auto doubled = sinus;
   doubled.push_back("Road texture/Height scale=2");
@@ -280,7 +280,7 @@ BOOST_AUTO_TEST_CASE(the_centroid_rises_with_speed_and_the_mean_force_is_the_loa
 
 BOOST_AUTO_TEST_CASE(the_patch_fit_to_the_tyre_stays_within_its_bounds)
 {
-  // E of Eq. (50) of every pair, as road/default_mesh's patch model reports it
+  // E of Eq. (50) of every pair, as tyre_road_contact/default_mesh's patch model reports it
   // (modal_errors.csv: i, j, E). The bounds are those measured when this
   // test was written (median 23.4%, 90th percentile 44.0%, worst 56.3%,
   // driving points 6.8%) plus a margin; a worse fit fails here.

@@ -1,5 +1,5 @@
 // Multi-point rolling contact on a real tyre's patch model: the one the test
-// road/coarse computes through the whole pipeline (a coarse 165/65 R13 tyre,
+// tyre_road_contact/coarse computes through the whole pipeline (a coarse 165/65 R13 tyre,
 // 4 x 3 points, its Green's functions and their LSCE fit). test_patch_contact.cc
 // checks the same code on a synthetic patch whose modes are known in closed
 // form; here the matrices are a tyre's. Checked:
@@ -40,8 +40,8 @@ namespace
     {
       const std::string file = GREENTREAD_COARSE_PATCH_MODEL;
       BOOST_TEST_REQUIRE(std::filesystem::exists(file),
-                         file << " is missing: it is written by the test road/coarse "
-                                 "(ctest runs it first; alone: ctest -R road/coarse)");
+                         file << " is missing: it is written by the test tyre_road_contact/coarse "
+                                 "(ctest runs it first; alone: ctest -R tyre_road_contact/coarse)");
       model = modal::read_patch_model(file);
       tread = contact::tread_heights(model.points);
       std::vector<road::WavelengthBand> bands;

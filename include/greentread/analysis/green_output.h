@@ -11,7 +11,7 @@
 
 /**
  * @file
- * The outputs of the Green's-function stage (scene tire-green): the contact
+ * The outputs of the Green's-function stage (scene tyre-green): the contact
  * points, the chosen pairs as CSV and plotted, and a summary on screen.
  */
 

@@ -15,7 +15,7 @@
 
 /**
  * @file
- * What the tire-road-contact scene writes for people to look at: the report
+ * What the tyre-road-contact scene writes for people to look at: the report
  * of each road, the outputs of each rolling run (time histories, a VTU time
  * series of the contact stress for ParaView, plots) and the spectra of all
  * runs. Implemented in source/analysis/rolling_output.cc.

@@ -12,7 +12,7 @@
 
 /**
  * @file
- * The outputs of the scenes geometry-study and tire-cell: the section by
+ * The outputs of the scenes geometry-study and tyre-cell: the section by
  * material, the inflated cell, and the masses of the layers against Pappus.
  */
 

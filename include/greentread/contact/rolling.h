@@ -14,7 +14,7 @@
 
 /**
  * @file
- * The one rolling recipe of a contact patch, shared by the tire-road-contact
+ * The one rolling recipe of a contact patch, shared by the tyre-road-contact
  * scene, the tests and the benchmarks: the static contact that carries the
  * load at the start position, then contact::roll() over the road with the
  * indentation held. Implemented in source/contact/rolling.cc.

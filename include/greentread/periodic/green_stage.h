@@ -20,8 +20,8 @@
  * The Green's-function stage with its cache: the inflated tyre (stages
  * geometry and fe), its periodic cell and contact points, and the Green's
  * functions, computed over the MPI ranks or read back from
- * green_functions.h5 when its key matches. Used by the scenes tire-green
- * and tire-road-contact.
+ * green_functions.h5 when its key matches. Used by the scenes tyre-green
+ * and tyre-road-contact.
  */
 
 namespace greentread

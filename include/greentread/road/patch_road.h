@@ -35,7 +35,7 @@ namespace greentread
       unsigned int             seed  = 1;
       double                   length = 2.304;
       double                   spacing = 0.384e-3;
-      double                   amplitude = 1e-3, wavelength = 0.05;
+      double                   amplitude = 5e-3, wavelength = 1e-2; // Road/Sinusoid
       /// Factor on every road's heights.
       double                   height_scale = 1.;
       RoadSampling             sampling = RoadSampling::envelope;

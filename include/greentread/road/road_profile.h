@@ -131,6 +131,22 @@ namespace greentread
     };
 
     /**
+     * @brief Subsection "Road/Sinusoid": the one sinusoidal road, read by the
+     * 1-DoF scene (its only profile) and by the rolling scene (its road
+     * 'sinusoid'). Declaring it twice is harmless.
+     */
+    struct SinusoidParameters
+    {
+      double amplitude  = 5e-3;
+      double wavelength = 1e-2;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
      * @brief Subsection "Road": which profile, and its parameters.
      */
     struct RoadParameters

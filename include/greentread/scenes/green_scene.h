@@ -11,7 +11,7 @@ namespace greentread
   namespace scenes
   {
     /**
-     * @brief Scene "tire-green": the Green's functions of the inflated ring
+     * @brief Scene "tyre-green": the Green's functions of the inflated ring
      * at the contact points (paper, Section 4.2, Eqs. 42-49), spread over
      * the MPI ranks.
      *

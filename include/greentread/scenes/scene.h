@@ -58,7 +58,7 @@ namespace greentread
      * @throws InputError for any parameter out of range.
      */
     std::unique_ptr<Scene>
-    create_scene(dealii::ParameterHandler &prm);
+    create_scene(dealii::ParameterHandler &prm, const std::string &scene_file = "");
 
     /**
      * @brief The subsections scene @p scene reads, in the order of its

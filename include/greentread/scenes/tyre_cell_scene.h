@@ -13,20 +13,20 @@ namespace greentread
   namespace scenes
   {
     /**
-     * @brief Scenes "geometry-study" and "tire-cell": the tyre's periodic
+     * @brief Scenes "geometry-study" and "tyre-cell": the tyre's periodic
      * cell (paper, Section 4, Tables A.3-A.4, Eq. 41).
      *
      * Both mesh the section of subsection Geometry with gmsh, revolve it
      * into the cell, assemble the stiffness and mass with quadratic elements
      * in deal.II, report the mass of every layer against Pappus, and solve
      * the static inflation (rim seat clamped, rotational periodicity, the
-     * pressure on the inner surface). "tire-cell" also assembles the damping
+     * pressure on the inner surface). "tyre-cell" also assembles the damping
      * C and the geometric stiffness Kp of the inflated state, and exports the
      * cell as an Abaqus file.
      *
      * Writes: section.vtu and section.png (the section with its materials),
      * inflated_cell.vtu and .pvd (displacement, von Mises stress),
-     * mass_report.csv, and for "tire-cell" tire_cell.inp.
+     * mass_report.csv, and for "tyre-cell" tyre_cell.inp.
      */
     class TyreCellScene : public Scene
     {

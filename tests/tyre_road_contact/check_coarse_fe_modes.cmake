@@ -1,4 +1,4 @@
-# The tire-road-contact scene on the coarse tyre of coarse.prm with the patch
+# The tyre-road-contact scene on the coarse tyre of coarse.prm with the patch
 # model from the ring's own modes ('Patch model/Source = fe modes'):
 # 1. the run writes modal_model.h5, dispersion.csv (its documented header) and
 #    its plot, modal_errors.csv, and rolls with every step converged;
@@ -52,7 +52,7 @@ foreach(value ${CMAKE_MATCH_1} ${CMAKE_MATCH_2})
   endif()
 endforeach()
 
-execute_process(COMMAND ${PROGRAM} ${common} --set "Rolling/Speeds=50"
+execute_process(COMMAND ${PROGRAM} ${common} --set "Rolling/Speeds (kph)=50"
   WORKING_DIRECTORY ${WORKDIR} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status EQUAL 0 OR NOT out MATCHES "Reusing [^\n]*modal_model.h5")
   message(FATAL_ERROR "the rerun did not reuse modal_model.h5 (${status}):\n${out}\n${err}")

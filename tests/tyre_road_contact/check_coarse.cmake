@@ -1,4 +1,4 @@
-# The tire-road-contact scene on the coarse tyre of coarse.prm:
+# The tyre-road-contact scene on the coarse tyre of coarse.prm:
 # 1. the whole pipeline runs and writes every output, every step converged;
 # 2. the output directory, copied elsewhere and used from another working
 #    directory with another speed (50 km/h) and another path to the same .geo file,
@@ -46,7 +46,7 @@ execute_process(
   COMMAND ${PROGRAM} ${SOURCE_DIR}/coarse.prm
     --set "Output directory=../copied"
     --set "Geometry/Geometry file=${geo_name}"
-    --set "Rolling/Speeds=50"
+    --set "Rolling/Speeds (kph)=50"
   WORKING_DIRECTORY ${WORKDIR}/elsewhere
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status EQUAL 0)

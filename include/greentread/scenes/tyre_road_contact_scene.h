@@ -29,13 +29,13 @@ namespace greentread
   namespace scenes
   {
     /**
-     * @brief Scene 'tire-road-contact': geometry -> fe -> periodic -> modal ->
+     * @brief Scene 'tyre-road-contact': geometry -> fe -> periodic -> modal ->
      * contact -> analysis, for each road and speed (Section 5).
      */
-    class RoadContactScene : public Scene
+    class TyreRoadContactScene : public Scene
     {
     public:
-      RoadContactScene(dealii::ParameterHandler &prm, const GlobalParameters &global);
+      TyreRoadContactScene(dealii::ParameterHandler &prm, const GlobalParameters &global);
 
       void
       run() override;

@@ -11,7 +11,7 @@
 #include <greentread/periodic/green_stage.h>
 #include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/mode_stage.h>
-#include <greentread/scenes/road_scene.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
 
 #include <deal.II/base/multithread_info.h>
 
@@ -52,7 +52,7 @@ namespace greentread
 
 
 
-    RoadContactScene::RoadContactScene(dealii::ParameterHandler &prm_,
+    TyreRoadContactScene::TyreRoadContactScene(dealii::ParameterHandler &prm_,
                                        const GlobalParameters   &global_)
       : prm(prm_)
       , global(global_)
@@ -140,13 +140,13 @@ namespace greentread
 
 
     void
-    RoadContactScene::run()
+    TyreRoadContactScene::run()
     {
       namespace fs     = std::filesystem;
       const auto start = std::chrono::steady_clock::now();
       const fs::path directory = base::prepare_output_directory(global.output_directory);
       const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
-      std::cout << "GreenTread: scene 'tire-road-contact', dynamic contact of the rolling tyre "
+      std::cout << "GreenTread: scene 'tyre-road-contact', dynamic contact of the rolling tyre "
                    "on road textures (Meftah et al. 2013, Section 5)\n";
 
       // Stages 1-3: geometry, fe, periodic: the Green's functions (saved).
@@ -213,7 +213,7 @@ namespace greentread
 
 
     base::FrequencyResponseMatrix
-    RoadContactScene::green_stage(const std::filesystem::path &h5,
+    TyreRoadContactScene::green_stage(const std::filesystem::path &h5,
                                   const std::string           &key,
                                   const base::ParameterRecord &record) const
     {
@@ -244,7 +244,7 @@ namespace greentread
 
 
     modal::PatchModel
-    RoadContactScene::modal_stage(const base::FrequencyResponseMatrix &G,
+    TyreRoadContactScene::modal_stage(const base::FrequencyResponseMatrix &G,
                                   const std::string                    &green_key,
                                   const std::filesystem::path          &directory,
                                   const base::ParameterRecord          &record) const
@@ -276,7 +276,7 @@ namespace greentread
 
 
     analysis::RunSpectrum
-    RoadContactScene::roll(const modal::PatchModel      &model,
+    TyreRoadContactScene::roll(const modal::PatchModel      &model,
                            const contact::ContactGrid   &grid,
                            const Eigen::MatrixXd        &G0,
                            const Eigen::VectorXd        &tread,
