@@ -33,7 +33,9 @@ namespace benchmark
   parse(int argc, char **argv, const std::string &name)
   {
     Options options;
-    options.output = "benchmark-output/" + name;
+    // Default: <build directory>/benchmark-output/<name> (set by CMake), so
+    // that a benchmark run does not write into the checkout.
+    options.output = std::filesystem::path(GREENTREAD_BENCHMARK_OUTPUT) / name;
     for (int i = 1; i < argc; ++i)
       if (std::strcmp(argv[i], "--quick") == 0)
         options.quick = true;

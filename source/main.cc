@@ -1,7 +1,7 @@
 // greentread: run a scene.
 //
 //   greentread [SCENE.prm] [--set "Section/Name=value"]...
-//   greentread --print-parameters | --help | --version
+//   greentread --print-parameters[=markdown] | --help | --version
 //
 // Everything else lives in the greentread_core library, so that the tests and
 // benchmarks run the same code.
@@ -31,10 +31,11 @@ namespace
   const char *usage =
     "Usage:\n"
     "  greentread [SCENE.prm] [--set \"Section/Name=value\"]...\n"
-    "  greentread --print-parameters\n"
+    "  greentread --print-parameters[=markdown]\n"
     "  greentread --help | --version\n"
     "\n"
-    "Runs the scene SCENE.prm; without one, the built-in default scene: the main\n"
+    "Runs the scene SCENE.prm (relative input files are looked for beside it,\n"
+    "then in the working directory); without one, the built-in default scene: the main\n"
     "job, the tyre rolling on two road textures at 50, 70 and 90 km/h (the same as\n"
     "prm/tyre_road_contact.prm, writing to output/).\n"
     "\n"
@@ -42,7 +43,7 @@ namespace
     "  --set \"Path=value\"   override one parameter after the file is read, e.g.\n"
     "                       --set \"Time stepping/Time step=1e-4\"; may be repeated\n"
     "  --print-parameters   every parameter with its default, allowed values, unit\n"
-    "                       and meaning\n"
+    "                       and meaning; =markdown gives doc/parameters.md\n"
     "  --help               this text\n"
     "  --version            versions of GreenTread and of the libraries it uses\n"
     "\n"
@@ -61,7 +62,7 @@ main(int argc, char **argv)
     {
       std::string              scene_file;
       std::vector<std::string> overrides;
-      bool                     print_parameters = false;
+      std::string              print_parameters;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -81,8 +82,10 @@ main(int argc, char **argv)
                         << greentread::base::blas_kernels() << '\n';
               return 0;
             }
-          else if (arg == "--print-parameters")
-            print_parameters = true;
+          else if (arg == "--print-parameters" || arg == "--print-parameters=text")
+            print_parameters = "text";
+          else if (arg == "--print-parameters=markdown")
+            print_parameters = "markdown";
           else if (arg == "--set")
             {
               if (i + 1 >= argc)
@@ -104,9 +107,14 @@ main(int argc, char **argv)
 
       dealii::ParameterHandler prm;
       greentread::scenes::declare_parameters(prm);
-      if (print_parameters)
+      if (print_parameters == "text")
         {
           greentread::base::print_parameter_reference(prm, std::cout);
+          return 0;
+        }
+      if (print_parameters == "markdown")
+        {
+          greentread::base::print_parameter_markdown(prm, std::cout);
           return 0;
         }
       if (!scene_file.empty())

@@ -246,7 +246,7 @@ namespace greentread
         if (!problem.empty())
           throw InputError("Green's function file '" + file + "' cannot be read: " + problem +
                            "; expected the layout /frequency [n_f], /points [n_p][3], /green "
-                           "complex [n_f][n_p][n_p] (README, 'File formats')");
+                           "complex [n_f][n_p][n_p] (doc/getting-started.md, 'File formats')");
       }
     } // namespace
 

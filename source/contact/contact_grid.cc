@@ -21,8 +21,8 @@ namespace greentread
                         "compliance at the rectangles' scale, an elastic layer (the tread's "
                         "rubber and thickness on a rigid belt) what lies below it. 1: the "
                         "Green's functions' points (the paper's grid). The default 8 (0.75 x "
-                        "0.83 mm on the default patch, 7680 points) comes from the README's "
-                        "convergence study (benchmarks/contact_grid_study.sh).");
+                        "0.83 mm on the default patch, 7680 points) comes from the "
+                        "convergence study in doc/benchmarks.md (benchmarks/contact_grid_study.sh).");
       prm.declare_entry("Solver", "auto",
                         dealii::Patterns::Selection("auto|pivoting|projected CG"),
                         "The contact's complementarity solve at each step: 'auto' is "

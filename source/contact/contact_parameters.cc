@@ -26,7 +26,7 @@ namespace greentread
           "Law", "kinematic", dealii::Patterns::Selection("kinematic|penalty"),
           "Contact law. 'kinematic': Eqs. (16)-(28), the point rides on the road with its "
           "displacement and velocity matched; impacts by the impulse-completion rule "
-          "(README). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted position "
+          "(doc/methods/contact.md). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted position "
           "penetrates the road.");
         prm.declare_entry("Contact stiffness", "1e7", base::RangePattern::positive("N/m"),
                           "Penalty stiffness kc (Law = penalty only). Unit: N/m. "

@@ -17,7 +17,8 @@ namespace greentread
       {
         prm.declare_entry("Geometry file", "geometry/tyre_165_65_r13.geo",
                           dealii::Patterns::Anything(),
-                          "The gmsh .geo description of the section (relative to the working "
+                          "The gmsh .geo description of the section (a relative path is looked "
+                          "for beside the scene file, then in the working "
                           "directory). Its DefineConstant parameters 'Parameters/<name>' are "
                           "set from this subsection; a new design is a new file.");
         const auto length = [&](const char *name, const char *value, const char *doc) {

@@ -32,7 +32,7 @@ namespace greentread
         prm.declare_entry("Green's function file", "", dealii::Patterns::Anything(),
                           "Many FRFs: an HDF5 file with /frequency [n_f] (Hz), /points "
                           "[n_p][3] (m) and /green complex [n_f][n_p][n_p] (m/N), as written "
-                          "by the periodic stage (README, 'File formats').");
+                          "by the periodic stage (doc/getting-started.md, 'File formats').");
         prm.declare_entry("Pairs", "all", dealii::Patterns::Anything(),
                           "Which g_ij of the Green's function file to identify: 'all', "
                           "'diagonal', or a list 'i:j, i:j, ...' of 0-based point indices.");

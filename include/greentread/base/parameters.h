@@ -118,6 +118,15 @@ namespace greentread
     apply_override(dealii::ParameterHandler &prm, const std::string &assignment);
 
     /**
+     * @brief The same reference as Markdown, one table per subsection and the
+     * deprecated spellings last: doc/parameters.md is this output
+     * (`greentread --print-parameters=markdown`), and a test fails when the
+     * file differs from it.
+     */
+    void
+    print_parameter_markdown(const dealii::ParameterHandler &prm, std::ostream &out);
+
+    /**
      * @brief Write the reference of all parameters: path, default, allowed
      * values, and documentation (which carries the unit).
      */
