@@ -1,5 +1,6 @@
 #include <greentread/convolution/mode_patch_convolution.h>
 #include <greentread/convolution/pole_weights.h>
+#include <greentread/convolution/shape_sums.h>
 #include <greentread/convolution/shape_kernels.h>
 
 #include <greentread/modal/patch_model.h>
@@ -309,41 +310,7 @@ namespace greentread
           if constexpr (std::is_same_v<Shape, double>)
             return modal::shape_sums(w.shapes, w.shapes_imag, weights);
           else
-            {
-              constexpr Eigen::Index       chunk = 512;
-              const Eigen::Index           R     = shapes.rows();
-              std::vector<Eigen::MatrixXd> sums(weights.size(), Eigen::MatrixXd::Zero(n_p, n_p));
-              Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> X(chunk, n_p);
-              Eigen::MatrixXf part(n_p, n_p);
-              for (Eigen::Index r = 0; r < R; r += chunk)
-                {
-                  const Eigen::Index len = std::min(chunk, R - r);
-                  const auto         Sc  = shapes.middleRows(r, len);
-                  for (std::size_t s = 0; s < weights.size(); ++s)
-                    {
-                      // Rows a, b of a complex shape: X = [w1 a + w2 b; w2 a - w1 b].
-                      for (Eigen::Index i = 0; i < len; i += stride)
-                        {
-                          const Eigen::Index k  = (r + i) / stride;
-                          const float        w1 = float(weights[s].first(k)),
-                                      w2 = float(weights[s].second(k));
-                          if (stride == 1)
-                            X.row(i) = w1 * Sc.row(i);
-                          else
-                            {
-                              X.row(i)     = w1 * Sc.row(i) + w2 * Sc.row(i + 1);
-                              X.row(i + 1) = w2 * Sc.row(i) - w1 * Sc.row(i + 1);
-                            }
-                        }
-                      part.setZero();
-                      part.triangularView<Eigen::Lower>() += Sc.transpose() * X.topRows(len);
-                      sums[s].triangularView<Eigen::Lower>() += part.cast<double>();
-                    }
-                }
-              for (auto &sum : sums)
-                sum = sum.selfadjointView<Eigen::Lower>();
-              return sums;
-            }
+            return single_precision_shape_sums(shapes, stride, weights);
         }
 
         /// The lag kernels K_1 .. K_{J-1}, stacked: rows (m - 1) N_p .. of
