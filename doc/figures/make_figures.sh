@@ -6,6 +6,8 @@
 # BUILD_DIR (default build/) holds greentread and the benchmarks.
 # MAIN_JOB_OUTPUT is the output folder of a finished main job (build/greentread
 # writes output/); without it the main job is run here (about 14 minutes on 2 cores).
+# QUICK=1 keeps green_functions.png instead of running the tyre-green scene
+# (its 257 lines take 5 to 12 minutes).
 # converged_ring_road-A_90kmh.png comes from the converged_ring benchmark's
 # output (build/benchmark-output/converged_ring, about 90 minutes to make); it is
 # copied when that output exists and kept as it is otherwise.
@@ -37,8 +39,12 @@ figure identification_example.png "$tmp/identify/identification_worst.png"
 # The tyre section (Section 4) and the ring's Green's functions (Figure A.9).
 "$program" prm/geometry_study.prm --set "Output directory=$tmp/geometry_study" > /dev/null
 figure tyre_section.png "$tmp/geometry_study/section.png"
-"$program" prm/tyre_green.prm --set "Output directory=$tmp/tyre_green" > /dev/null
-figure green_functions.png "$tmp/tyre_green/green_functions.png"
+if [[ "${QUICK:-0}" != 1 ]]; then
+  "$program" prm/tyre_green.prm --set "Output directory=$tmp/tyre_green" > /dev/null
+  figure green_functions.png "$tmp/tyre_green/green_functions.png"
+else
+  echo "doc/figures/green_functions.png kept (QUICK=1)"
+fi
 
 # The main job (Section 5).
 if [[ -z "$main_out" ]]; then
