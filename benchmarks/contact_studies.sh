@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The contact scene's time-step study and its stiff and extreme cases, on the
-# main job's saved stages (README, "Tyre/road contact": the tables "Time step"
+# main job's saved stages (doc/benchmarks.md, contact_studies.sh: the tables "Time step"
 # and "Stiff and extreme cases"). Each run reuses green_functions.h5 and the
 # patch model from a copy of the main job's output directory, so only the
 # rolling is timed.

@@ -132,13 +132,18 @@ namespace greentread
           const std::string value = get(prm, r.old_path);
           if (value.empty())
             continue;
+          std::string allowed;
           for (const auto &e : base::list_parameters(prm))
-            if (e.path == r.new_path && e.value != e.default_value)
-              throw InputError("parameters '" + std::string(r.old_path) + "' = " + value +
-                               " and '" + r.new_path + "' = " + e.value +
-                               " are both set, and the first is the old spelling of the "
-                               "second; allowed: one of them ('" +
-                               r.new_path + "')");
+            if (e.path == r.new_path)
+              {
+                if (e.value != e.default_value)
+                  throw InputError("parameters '" + std::string(r.old_path) + "' = " + value +
+                                   " and '" + r.new_path + "' = " + e.value +
+                                   " are both set, and the first is the old spelling of the "
+                                   "second; allowed: one of them ('" +
+                                   r.new_path + "')");
+                allowed = e.allowed;
+              }
           const std::string converted = convert(r.old_path, value, r.factor);
           try
             {
@@ -148,8 +153,7 @@ namespace greentread
             {
               throw InputError("parameter '" + std::string(r.old_path) + "' = " + value +
                                " (the old spelling of '" + r.new_path + "' = " + converted +
-                               ") is not allowed; allowed: what '" + r.new_path +
-                               "' allows ('greentread --print-parameters')");
+                               ") is not allowed; allowed: " + allowed);
             }
           set(prm, r.old_path, "");
           warnings << "greentread: warning: parameter '" << r.old_path

@@ -43,7 +43,7 @@ endif()
 # 'identify' reads the driving point's CSV (point 7 = the patch centre): the
 # grid as written, and a fit. A point force on one tread node makes the
 # driving point mostly a local static compliance, which modes below f_max
-# carry poorly (E is 10-70%, see the README): E is only checked to be a
+# carry poorly (E is 10-70%, see doc/benchmarks.md): E is only checked to be a
 # number below 1, the format is what is tested here.
 run_checked("identify" ${PROGRAM} ${SOURCE_DIR}/prm/identify.prm --set "Output directory=identify"
   --set "Identification/FRF file=parallel/green_7_7.csv" --set "Print timings=false"

@@ -39,7 +39,7 @@ set(worst ${CMAKE_MATCH_4})
 if(NOT CMAKE_MATCH_1 EQUAL 144)
   message(FATAL_ERROR "E over ${CMAKE_MATCH_1} pairs, not the 144 of 12 points")
 endif()
-# Bound: measured largest E on this tyre (see README, 'The ring's own modes').
+# Bound: measured largest E on this tyre (see doc/methods/modal.md).
 if(worst GREATER ${WORST_BOUND})
   message(FATAL_ERROR "the synthesis' largest E is ${worst}%, above ${WORST_BOUND}%")
 endif()
