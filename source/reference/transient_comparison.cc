@@ -135,8 +135,8 @@ namespace greentread
 
       road::RoadTextureParameters parameters;
       parameters.sampling   = setup.sampling;
-      parameters.amplitude  = setup.sinusoid_amplitude;
-      parameters.wavelength = setup.sinusoid_wavelength;
+      parameters.sinusoid.amplitude  = setup.sinusoid_amplitude;
+      parameters.sinusoid.wavelength = setup.sinusoid_wavelength;
       spacing               = parameters.spacing;
       double y_min = 0., y_max = 0.;
       for (const auto &p : points)

@@ -2,7 +2,6 @@
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/road/patch_road.h>
-#include <greentread/road/road_profile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,10 +75,7 @@ namespace greentread
                                                              RoadSampling::envelope;
       }
       prm.leave_subsection();
-      SinusoidParameters sinusoid;
       sinusoid.parse_parameters(prm);
-      amplitude  = sinusoid.amplitude;
-      wavelength = sinusoid.wavelength;
     }
 
 
@@ -118,7 +114,8 @@ namespace greentread
       if (name == "sinusoid")
         for (unsigned int j = 0; j < t.ny; ++j)
           for (unsigned int i = 0; i < t.nx; ++i)
-            t.z[std::size_t(j) * t.nx + i] = amplitude * std::sin(2. * M_PI * i * spacing / wavelength);
+            t.z[std::size_t(j) * t.nx + i] =
+              sinusoid.amplitude * std::sin(2. * M_PI * i * spacing / sinusoid.wavelength);
       return t;
     }
 

@@ -82,10 +82,7 @@ namespace greentread
         profile = prm.get("Profile");
       }
       prm.leave_subsection();
-      SinusoidParameters sinusoid;
-      sinusoid.parse_parameters(prm);
-      amplitude  = sinusoid.amplitude;
-      wavelength = sinusoid.wavelength;
+      SinusoidParameters::parse_parameters(prm);
     }
 
 

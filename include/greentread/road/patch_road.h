@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/road/road_profile.h>
 #include <greentread/road/texture.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -35,7 +36,7 @@ namespace greentread
       unsigned int             seed  = 1;
       double                   length = 2.304;
       double                   spacing = 0.384e-3;
-      double                   amplitude = 5e-3, wavelength = 1e-2; // Road/Sinusoid
+      SinusoidParameters       sinusoid; ///< the road 'sinusoid' (Road/Sinusoid)
       /// Factor on every road's heights.
       double                   height_scale = 1.;
       RoadSampling             sampling = RoadSampling::envelope;

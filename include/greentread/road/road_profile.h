@@ -147,13 +147,12 @@ namespace greentread
     };
 
     /**
-     * @brief Subsection "Road": which profile, and its parameters.
+     * @brief Subsection "Road": which profile, and its parameters (those of
+     * the sinusoid, Road/Sinusoid, inherited).
      */
-    struct RoadParameters
+    struct RoadParameters : SinusoidParameters
     {
-      std::string profile    = "sinusoid";
-      double      amplitude  = 5e-3;
-      double      wavelength = 1e-2;
+      std::string profile = "sinusoid";
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
