@@ -33,6 +33,7 @@ packages=(
   libsuitesparse-dev    # UMFPACK headers: the full-ring reference solve
   libfftw3-dev          # FFTW 3: the tread's layer on fine contact grids
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
+  libspectra-dev        # Spectra: shift-invert Lanczos for the section's harmonic modes
   libsiconos-numerics-dev # Siconos' LCP solvers: the reference of tests/unit/test_lcp.cc
 )
 

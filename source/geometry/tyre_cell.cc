@@ -417,6 +417,47 @@ namespace greentread
                              "deal.II mesh (distorted cells?): " + info.str());
           }
       }
+
+      /// Give the section's boundary edges the ids of the cell faces swept
+      /// from them (rim seat, inner and tread surface; free otherwise), so
+      /// that the harmonic route (fe/harmonic_section.h) loads and holds the
+      /// section as the cell. A swept face and its edge have the same mean
+      /// (radius, axial) of their vertices.
+      void
+      label_section_boundary(const dealii::Triangulation<3> &cell,
+                             dealii::Triangulation<2>       &section)
+      {
+        double size = 0.;
+        for (const auto &v : section.get_vertices())
+          size = std::max(size, v.norm());
+        const double scale = 1e-7 * size;
+        const auto   key   = [scale](const double r, const double z) {
+          return std::make_pair(std::llround(r / scale), std::llround(z / scale));
+        };
+        std::map<std::pair<long long, long long>, dealii::types::boundary_id> ids;
+        for (const auto &c : cell.active_cell_iterators())
+          for (const auto &face : c->face_iterators())
+            if (face->at_boundary() && face->boundary_id() != periodic_first &&
+                face->boundary_id() != periodic_second)
+              {
+                double r = 0., z = 0.;
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    r += std::hypot(face->vertex(v)[0], face->vertex(v)[1]) / 4.;
+                    z += face->vertex(v)[2] / 4.;
+                  }
+                ids[key(r, z)] = face->boundary_id();
+              }
+        for (const auto &c : section.active_cell_iterators())
+          for (const auto &face : c->face_iterators())
+            if (face->at_boundary())
+              {
+                const auto m     = 0.5 * (face->vertex(0) + face->vertex(1));
+                const auto found = ids.find(key(m[0], m[1]));
+                face->set_boundary_id(found == ids.end() ? dealii::types::boundary_id(free_surface) :
+                                                           found->second);
+              }
+      }
     } // namespace
 
 
@@ -454,6 +495,7 @@ namespace greentread
 
       gmsh_session.run(file, "meshing the cell", [] { gmsh::model::mesh::generate(3); });
       make_cell(file, revolved, cell_triangulation);
+      label_section_boundary(cell_triangulation, section_triangulation);
       attach_cylindrical_manifold(cell_triangulation);
     }
 

@@ -243,6 +243,7 @@ namespace greentread
       // tread radius.
       const double R          = nodes.outer_radius;
       const double half_angle = 0.5 * request.length / R;
+      patch.arc               = patch.dx / R;
       const double step       = 0.5 * cell.angle;
       const double centre     = std::ceil(half_angle / step - 1e-9) * step;
       patch.n_contact_cells =

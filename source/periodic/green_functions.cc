@@ -32,12 +32,21 @@ namespace greentread
                           "long. Unit: Hz. The default, 4000 / 256, gives 64 ms responses on "
                           "a grid that suits FFTs.");
         prm.declare_entry("Method", "bloch",
-                          dealii::Patterns::Selection("bloch|doubling|full-ring"),
+                          dealii::Patterns::Selection("bloch|doubling|full-ring|harmonic"),
+                          "'harmonic': the section's circumferential harmonics, for an "
+                          "axisymmetric ring (no mesh along the ring; 'Number of cells' "
+                          "then only places the points). "
                           "'bloch': a discrete Fourier transform over the N identical cells, "
-                          "N/2 + 1 sparse cell solves per frequency (exact, the fastest). "
+                          "N/2 + 1 sparse cell solves per frequency (exact). "
                           "'doubling': the paper's recursive doubling of the condensed cell "
                           "(Eqs. 46-49; exact, dense). 'full-ring': all N cells in one sparse "
                           "solve (the reference; coarse meshes only).");
+        prm.declare_entry("Harmonic tolerance", "1e-3",
+                          base::RangePattern::closed(1e-8, 0.1, ""),
+                          "'Method' = harmonic: the harmonics 0 .. N - 1 are summed, N the "
+                          "first for which a bound of the neglected static tail is below "
+                          "this fraction of the smallest static driving point "
+                          "(doc/methods/green-functions.md). Unit: 1.");
         prm.declare_entry("Patch length", "0.06", base::RangePattern::positive("m"),
                           "L_c, the contact patch along the rolling direction x. Unit: m. "
                           "Section 5.2: 6 cm.");
@@ -72,6 +81,16 @@ namespace greentread
 
 
 
+    std::optional<HarmonicOptions>
+    GreenParameters::harmonic() const
+    {
+      if (method != "harmonic")
+        return std::nullopt;
+      return HarmonicOptions{harmonic_tolerance, 2. * M_PI * max_frequency};
+    }
+
+
+
     void
     GreenParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
@@ -80,6 +99,7 @@ namespace greentread
         max_frequency        = prm.get_double("Maximum frequency");
         frequency_step       = prm.get_double("Frequency step");
         method               = prm.get("Method");
+        harmonic_tolerance   = prm.get_double("Harmonic tolerance");
         patch.length         = prm.get_double("Patch length");
         patch.width          = prm.get_double("Patch width");
         patch.points_along   = prm.get_integer("Points along");
@@ -89,6 +109,10 @@ namespace greentread
         deflection_frequency = prm.get_double("Deflection shape frequency");
       }
       prm.leave_subsection();
+      if (method == "harmonic" && patch.load == PointLoad::node)
+        throw InputError("parameter 'Green's functions/Point load' = node is not allowed with "
+                         "'Method' = harmonic: a point force's harmonic series does not "
+                         "converge (its displacement is singular); allowed: tributary area");
       require_parameter(frequency_step <= max_frequency, "Green's functions/Frequency step",
                         frequency_step,
                         "at most 'Maximum frequency' = " + format_number(max_frequency) + " Hz");
@@ -150,7 +174,8 @@ namespace greentread
                             const unsigned int  n_lines,
                             const MPI_Comm      comm,
                             const bool          show_progress,
-                            GreenRunReport     &report)
+                            GreenRunReport     &report,
+                            const HarmonicRing *harmonic)
     {
       const auto         start   = std::chrono::steady_clock::now();
       const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
@@ -178,7 +203,7 @@ namespace greentread
       const auto work = [&]() {
         try
           {
-            auto             solver = make_green_solver(method, cell, patch);
+            auto             solver = make_green_solver(method, cell, patch, harmonic);
             SolveDiagnostics mine;
             for (unsigned int l = next++; l < lines.size(); l = next++)
               {

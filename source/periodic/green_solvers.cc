@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/serial_blas.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/periodic/harmonic_ring.h>
 #include <greentread/periodic/ring_chain.h>
 
 #include <Eigen/LU>
@@ -23,8 +24,10 @@ namespace greentread
         return Method::doubling;
       if (name == "full-ring")
         return Method::full_ring;
+      if (name == "harmonic")
+        return Method::harmonic;
       throw InputError("parameter 'Green's functions/Method' = " + name +
-                       " is not allowed; allowed: bloch, doubling, full-ring");
+                       " is not allowed; allowed: bloch, doubling, full-ring, harmonic");
     }
 
 
@@ -541,7 +544,8 @@ namespace greentread
 
 
     std::unique_ptr<GreenSolver>
-    make_green_solver(const Method method, const PeriodicCell &cell, const ContactPatch &patch)
+    make_green_solver(const Method method, const PeriodicCell &cell, const ContactPatch &patch,
+                      const HarmonicRing *harmonic)
     {
       switch (method)
         {
@@ -551,6 +555,10 @@ namespace greentread
             return std::make_unique<DoublingSolver>(cell, patch);
           case Method::full_ring:
             return std::make_unique<FullRingSolver>(cell, patch);
+          case Method::harmonic:
+            if (harmonic == nullptr)
+              throw NumericalError("make_green_solver: the harmonic method without its ring");
+            return std::make_unique<HarmonicGreenSolver>(*harmonic);
         }
       throw NumericalError("make_green_solver: unknown method");
     }

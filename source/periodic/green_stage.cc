@@ -45,17 +45,30 @@ namespace greentread
 
 
 
-    InflatedTyre::InflatedTyre(const geometry::GeometryParameters &geometry,
-                               const fe::MaterialParameters       &materials,
-                               const fe::InflationParameters      &inflation,
-                               const PatchRequest                 &patch_request)
+    InflatedTyre::InflatedTyre(const geometry::GeometryParameters   &geometry,
+                               const fe::MaterialParameters         &materials,
+                               const fe::InflationParameters        &inflation,
+                               const PatchRequest                   &patch_request,
+                               const std::optional<HarmonicOptions> &harmonic_options)
     {
+      if (!harmonic_options && geometry.degree > 2)
+        throw InputError("parameter 'Geometry/Element degree' = " +
+                         std::to_string(geometry.degree) +
+                         " is not allowed with a 3D cell; allowed: 1 or 2 (up to 4 with "
+                         "'Green's functions/Method' = harmonic)");
+      if (harmonic_options && materials.tread_surface_mass_inward)
+        throw InputError("parameter 'Materials/Tread pattern/Surface mass' = inward is not "
+                         "allowed with 'Green's functions/Method' = harmonic; allowed there: "
+                         "consistent");
       auto start   = std::chrono::steady_clock::now();
       cell         = std::make_unique<geometry::TyreCell>(geometry);
       mesh_seconds = base::seconds_since(start);
 
+      // With the harmonic method the 3D cell only places the points: it
+      // keeps quadratic elements whatever the section's degree.
       start = std::chrono::steady_clock::now();
-      model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
+      model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials(),
+                                                 std::min(geometry.degree, 2u));
       model->assemble();
       assembly_seconds = base::seconds_since(start);
 
@@ -70,6 +83,17 @@ namespace greentread
       if (materials.tread_surface_mass_inward)
         moved_mass_fraction = move_tread_mass_inward(periodic_cell);
       patch = place_contact_points(periodic_cell, patch_request);
+
+      if (harmonic_options)
+        {
+          start   = std::chrono::steady_clock::now();
+          section = std::make_unique<fe::HarmonicSection>(cell->section(), materials.materials(),
+                                                          geometry.degree);
+          section->inflate(inflation.pressure);
+          harmonic = std::make_unique<HarmonicRing>(*section, patch, harmonic_options->tolerance,
+                                                    harmonic_options->max_omega);
+          harmonic_seconds = base::seconds_since(start);
+        }
     }
 
 
@@ -88,7 +112,7 @@ namespace greentread
                                            format_printf("%.3g", 100. * moved_mass_fraction) +
                                            "% of the cell's) moved inward"
                                        : std::string()) +
-             "\n  " + patch.describe() + '\n';
+             "\n  " + patch.describe() + '\n' + (harmonic ? harmonic->describe() : std::string());
     }
 
 
@@ -149,7 +173,7 @@ namespace greentread
       result.green = compute_green_functions(tyre.periodic_cell, tyre.patch,
                                              parse_method(parameters.method),
                                              parameters.frequency_step, parameters.n_lines(), comm,
-                                             show_progress, result.report);
+                                             show_progress, result.report, tyre.harmonic.get());
       if (rank == 0)
         base::write_green_hdf5(h5, result.green, record, key);
       return result;
@@ -175,7 +199,11 @@ namespace greentread
                 std::to_string(report.threads) + " thread(s): mesh " +
                 format_printf("%.3g", tyre.mesh_seconds) + " s, assembly " +
                 format_printf("%.3g", tyre.assembly_seconds) + " s, inflation and Kp " +
-                format_printf("%.3g", tyre.inflation_seconds) + " s, Green's functions " +
+                format_printf("%.3g", tyre.inflation_seconds) + " s, " +
+                (tyre.harmonic ? "section and harmonics " +
+                                   format_printf("%.3g", tyre.harmonic_seconds) + " s, " :
+                                 std::string()) +
+                "Green's functions " +
                 format_printf("%.4g", report.seconds) + " s (" +
                 format_printf("%.3g", report.seconds * report.ranks * report.threads /
                                         parameters.n_lines()) +

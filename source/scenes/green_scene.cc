@@ -52,7 +52,8 @@ namespace greentread
       std::vector<std::pair<unsigned int, unsigned int>> pairs;
       std::string                                        key;
       collectively(comm, [&]() {
-        built = std::make_unique<periodic::InflatedTyre>(geometry, materials, inflation, green.patch);
+        built = std::make_unique<periodic::InflatedTyre>(geometry, materials, inflation,
+                                                         green.patch, green.harmonic());
         pairs = green.csv_pairs(built->patch);
         key   = periodic::green_stage_key(prm, geometry.geo_file);
       });

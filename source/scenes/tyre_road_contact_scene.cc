@@ -230,8 +230,10 @@ namespace greentread
                     << green.patch.points_along * green.patch.points_across << " points, 0 to "
                     << format_number(green.max_frequency) << " Hz (" << green.n_lines()
                     << " lines)\n";
-          const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch);
-          std::cout << "  " << tyre.patch.describe() << '\n';
+          const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch,
+                                            green.harmonic());
+          std::cout << "  " << tyre.patch.describe() << '\n'
+                    << (tyre.harmonic ? tyre.harmonic->describe() : std::string());
           const auto result = periodic::run_green_stage(tyre, green, key, h5, record, false,
                                               global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;
@@ -255,7 +257,7 @@ namespace greentread
                                         modal::patch_model_stage_key(prm, green_key), record,
                                         global.reuse, global.print_timings);
       const synthesis::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
-                                             patch_model.mode_cutoff};
+                                             patch_model.mode_cutoff, green.harmonic()};
       // The modes' part at every line, when the stage computes it (not
       // when it is reused): compare() then only adds the residual.
       synthesis::ModalLines          lines;

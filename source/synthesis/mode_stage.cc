@@ -2,6 +2,7 @@
 #include <greentread/base/parameters.h>
 #include <greentread/modal_sources_digest.h>
 #include <greentread/synthesis/mode_stage.h>
+#include <greentread/synthesis/harmonic_modes.h>
 #include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
@@ -49,8 +50,10 @@ namespace greentread
         }
       const auto t0 = std::chrono::steady_clock::now();
       std::cout << "Stage modal: the ring's own modes up to "
-                << format_number(inputs.cutoff_hz) << " Hz, per circumferential wavenumber\n";
-      const periodic::InflatedTyre tyre(inputs.geometry, inputs.materials, inputs.inflation, inputs.patch);
+                << format_number(inputs.cutoff_hz) << " Hz, per circumferential "
+                << (inputs.harmonic ? "harmonic of the section\n" : "wavenumber\n");
+      const periodic::InflatedTyre tyre(inputs.geometry, inputs.materials, inputs.inflation,
+                                        inputs.patch, inputs.harmonic);
       const unsigned int P = green.n_points();
       if (tyre.patch.points.size() != P)
         throw NumericalError("modal stage: the tyre has " +
@@ -65,7 +68,9 @@ namespace greentread
 
       ModeSearch search;
       search.cutoff = 2. * M_PI * inputs.cutoff_hz;
-      const RingModes modes = ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
+      const RingModes modes =
+        tyre.harmonic ? harmonic_ring_modes(*tyre.harmonic, search.cutoff, comm, true) :
+                        ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
 
       // G_r from the static line (the direct solve at 0 Hz), its relaxation
       // from the others.
@@ -81,12 +86,14 @@ namespace greentread
         synthesis::write_modal_model(file, synthesis, record, key);
       const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - t0;
       std::cout << "  " << synthesis.n_modes() << " ring modes from "
-                << modes.branches.size() << " wavenumbers (" << modes.n_solves
+                << modes.branches.size() << (tyre.harmonic ? " harmonics (" : " wavenumbers (")
+                << modes.n_solves
                 << " sparse solves, largest relative residual "
                 << format_printf("%.2g", modes.max_residual) << "), coupled by the damping";
       if (modes.uncoupled > 0)
         std::cout << " except at " << modes.uncoupled
-                  << " wavenumbers (a pole near critical damping: diagonal damping there)";
+                  << (tyre.harmonic ? " harmonics" : " wavenumbers")
+                  << " (a pole near critical damping: diagonal damping there)";
       if (print_timings)
         std::cout << ", " << format_printf("%.3g", seconds.count()) << " s";
       std::cout << '\n';

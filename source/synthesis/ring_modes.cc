@@ -67,11 +67,18 @@ namespace greentread
     Eigen::MatrixXd
     point_shapes(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch)
     {
-      const unsigned int     N = cell.n_cells, k = modes.wavenumber, P = patch.points.size();
-      const Eigen::Index     m = modes.omega.size();
-      const Eigen::MatrixXcd a = bloch_point_values(modes, cell, patch);
-      if (k == 0 || 2 * k == N)
-        return a.real() / std::sqrt(double(N));
+      const unsigned int k = modes.wavenumber, N = cell.n_cells;
+      return point_shapes(bloch_point_values(modes, cell, patch), N, k == 0 || 2 * k == N);
+    }
+
+
+
+    Eigen::MatrixXd
+    point_shapes(const Eigen::MatrixXcd &a, const double N, const bool real)
+    {
+      const Eigen::Index m = a.rows(), P = a.cols();
+      if (real)
+        return a.real() / std::sqrt(N);
       Eigen::MatrixXd shapes(2 * m, P);
       const double    scale = std::sqrt(2. / N);
       for (Eigen::Index r = 0; r < m; ++r)
@@ -90,13 +97,24 @@ namespace greentread
                         const periodic::ContactPatch &patch,
                         const bool          couple)
     {
-      using Complex         = std::complex<double>;
-      const unsigned int N  = cell.n_cells, k = modes.wavenumber;
-      const bool         real = k == 0 || 2 * k == N;
-      const Eigen::Index m = modes.omega.size(), P = patch.points.size(), per = real ? 1 : 2;
+      const unsigned int k = modes.wavenumber, N = cell.n_cells;
+      return coupled_point_modes(modes, bloch_point_values(modes, cell, patch), N,
+                                 k == 0 || 2 * k == N, couple);
+    }
+
+
+
+    PointModes
+    coupled_point_modes(const BlochModes       &modes,
+                        const Eigen::MatrixXcd &a,
+                        const double            N,
+                        const bool              real,
+                        const bool              couple)
+    {
+      const Eigen::Index m = modes.omega.size(), P = a.cols(), per = real ? 1 : 2;
       const auto         diagonal = [&]() {
         PointModes out;
-        out.shapes = point_shapes(modes, cell, patch);
+        out.shapes = point_shapes(a, N, real);
         out.shapes_imag.setZero(out.shapes.rows(), P);
         out.omega.resize(per * m);
         out.damping_ratio.resize(per * m);
@@ -148,7 +166,6 @@ namespace greentread
       out.damping_ratio.resize(per * m);
       out.shapes.resize(per * m, P);
       out.shapes_imag.resize(per * m, P);
-      const Eigen::MatrixXcd a = bloch_point_values(modes, cell, patch);
       for (Eigen::Index i = 0; i < m; ++i)
         {
           const Eigen::Index u    = up[i];
@@ -180,14 +197,14 @@ namespace greentread
               const double           size  = psi1.squaredNorm();
               const periodic::Complex          alpha = size > 0. ? psi1.dot(psi2) / size : periodic::Complex(0.);
               const Eigen::VectorXcd shape =
-                std::sqrt(periodic::Complex(0., 2. * wd) * alpha / (double(N) * mu)) * psi1;
+                std::sqrt(periodic::Complex(0., 2. * wd) * alpha / (N * mu)) * psi1;
               out.shapes.row(i)      = shape.real().transpose();
               out.shapes_imag.row(i) = shape.imag().transpose();
               continue;
             }
           // k and N - k together: (1/N)(psi1 psi2^T + psi2 psi1^T) / mu
           // = (p p^T + q q^T) / (2 N mu), p = psi1 + psi2, q = (psi1 - psi2) / j.
-          const periodic::Complex          scale = std::sqrt(periodic::Complex(0., wd) / (double(N) * mu));
+          const periodic::Complex          scale = std::sqrt(periodic::Complex(0., wd) / (N * mu));
           const Eigen::VectorXcd p     = scale * (psi1 + psi2);
           const Eigen::VectorXcd q     = scale * (psi1 - psi2) / periodic::Complex(0., 1.);
           out.shapes.row(2 * i)          = p.real().transpose();
@@ -241,9 +258,28 @@ namespace greentread
                const bool          show_progress,
                const bool          couple_damping)
     {
+      return gather_ring_modes(
+        cell.n_cells / 2 + 1, patch.points.size(),
+        [&](const unsigned int k) {
+          const BlochModes modes = bloch_modes(cell, k, search);
+          return std::make_pair(modes, coupled_point_modes(modes, cell, patch, couple_damping));
+        },
+        "wavenumbers", comm, show_progress, couple_damping);
+    }
+
+
+
+    RingModes
+    gather_ring_modes(const unsigned int         n_k,
+                      const unsigned int         P,
+                      const WavenumberModes     &modes_of,
+                      const std::string         &what,
+                      const MPI_Comm             comm,
+                      const bool                 show_progress,
+                      const bool                 couple_damping)
+    {
       const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-      const unsigned int N = cell.n_cells, P = patch.points.size(), n_k = N / 2 + 1;
 
       std::vector<unsigned int> mine;
       for (unsigned int k = rank; k < n_k; k += n_ranks)
@@ -257,8 +293,8 @@ namespace greentread
           {
             try
               {
-                const BlochModes modes = bloch_modes(cell, mine[i], search);
-                pack(modes, coupled_point_modes(modes, cell, patch, couple_damping), packed[i]);
+                const auto [modes, points] = modes_of(mine[i]);
+                pack(modes, points, packed[i]);
                 ++done;
               }
             catch (const std::exception &e)
@@ -276,7 +312,7 @@ namespace greentread
       if (show_progress && rank == 0)
         progress = std::make_unique<base::Progress>(
           "ring modes (" + (n_ranks == 1 ? std::string() : "rank 0's ") +
-            std::to_string(mine.size()) + " of " + std::to_string(n_k) + " wavenumbers)",
+            std::to_string(mine.size()) + " of " + std::to_string(n_k) + " " + what + ")",
           mine.size());
       base::run_on_threads(n_threads, work, done, mine.size(), progress.get(), [&]() {
                                  std::lock_guard<std::mutex> lock(mutex);

@@ -6,10 +6,17 @@
 #    computed (an independent solve per line): E of Eq. (50) within the bound
 #    below for every pair, G_r positive semidefinite and -Im g too;
 # 3. a second run reuses modal_model.h5 and says so.
+# With -DMETHOD=harmonic, the same through the section's harmonics.
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
 set(common ${SOURCE_DIR}/coarse.prm --set "Geometry/Geometry file=${GEO}"
     --set "Patch model/Source=fe modes" --set "Output directory=${WORKDIR}/run")
+# -DMETHOD=harmonic: the Green's functions and the modes from the section's
+# harmonics (which take tributary areas), the rest the same.
+if(METHOD)
+  list(APPEND common --set "Green's functions/Method=${METHOD}"
+    --set "Green's functions/Point load=tributary area")
+endif()
 execute_process(COMMAND ${PROGRAM} ${common}
   WORKING_DIRECTORY ${WORKDIR} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status EQUAL 0)

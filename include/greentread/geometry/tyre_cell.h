@@ -45,6 +45,8 @@ namespace greentread
       double       bulge_height       = 0.5;
       double       mesh_size          = 0.008;
       unsigned int n_cells            = 256;
+      /// 'Element degree': the Lagrange degree of the elements.
+      unsigned int degree             = 2;
       std::string  other_constants;
 
       static void
@@ -106,7 +108,8 @@ namespace greentread
         return cell_triangulation;
       }
 
-      /// The section in the (radius, axial) plane, with material ids.
+      /// The section in the (radius, axial) plane, with material ids and
+      /// the boundary ids of the cell faces swept from its edges.
       const dealii::Triangulation<2> &
       section() const
       {

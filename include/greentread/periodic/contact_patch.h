@@ -75,6 +75,9 @@ namespace greentread
       /// The spacing achieved along x (arc length on the tread) and across
       /// y [m]; with tributary areas, the size of every rectangle.
       double dx = 0., dy = 0.;
+      /// With tributary areas, the angle of every rectangle along the
+      /// ring, dx over the tread's outer radius [rad].
+      double arc = 0.;
       /// Cells spanned by the points, N_c.
       unsigned int n_contact_cells = 0;
 

@@ -2,6 +2,9 @@
 
 #include <greentread/base/frequency_response.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/periodic/harmonic_ring.h>
+
+#include <optional>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -28,6 +31,8 @@ namespace greentread
       double       max_frequency = 4000.;
       double       frequency_step = 15.625;
       std::string  method         = "bloch";
+      /// 'Harmonic tolerance': the harmonic method's tail bound.
+      double       harmonic_tolerance = 1e-3;
       PatchRequest patch;
       /// "auto" or "i,j; i,j; ...".
       std::string pairs = "auto";
@@ -42,6 +47,10 @@ namespace greentread
       /// Lines 0, df, ..., f_max.
       unsigned int
       n_lines() const;
+
+      /// What the `harmonic` method needs, or nothing for another method.
+      std::optional<HarmonicOptions>
+      harmonic() const;
 
       /// The pairs (i, j) to write as CSV for @p patch.
       std::vector<std::pair<unsigned int, unsigned int>>
@@ -73,6 +82,7 @@ namespace greentread
                             unsigned int        n_lines,
                             MPI_Comm            comm,
                             bool                show_progress,
-                            GreenRunReport     &report);
+                            GreenRunReport     &report,
+                            const HarmonicRing *harmonic = nullptr);
   } // namespace periodic
 } // namespace greentread

@@ -129,18 +129,26 @@ namespace greentread
     {
       bloch,
       doubling,
-      full_ring
+      full_ring,
+      harmonic
     };
 
-    /// "bloch", "doubling" or "full-ring".
+    /// "bloch", "doubling", "full-ring" or "harmonic".
     Method
     parse_method(const std::string &name);
 
+    class HarmonicRing;
+
     /**
-     * @brief A solver for @p method. @p cell and @p patch must outlive it.
+     * @brief The one selection point of the methods: a solver for
+     * @p method. @p cell, @p patch and @p harmonic must outlive it;
+     * @p harmonic is the ring of the `harmonic` method (periodic/harmonic_ring.h),
+     * which the other methods do not use.
+     * @throws NumericalError if @p method is `harmonic` and @p harmonic is null.
      */
     std::unique_ptr<GreenSolver>
-    make_green_solver(Method method, const PeriodicCell &cell, const ContactPatch &patch);
+    make_green_solver(Method method, const PeriodicCell &cell, const ContactPatch &patch,
+                      const HarmonicRing *harmonic = nullptr);
 
     /**
      * @brief The whole ring's response at @p omega to the unit load @p load

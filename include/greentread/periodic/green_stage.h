@@ -36,6 +36,9 @@ namespace greentread
     {
       std::unique_ptr<geometry::TyreCell> cell;
       std::unique_ptr<fe::ElasticModel>   model;
+      /// The section's harmonics and their ring, with the `harmonic` method.
+      std::unique_ptr<fe::HarmonicSection>    section;
+      std::unique_ptr<periodic::HarmonicRing> harmonic;
       PeriodicCell                        periodic_cell;
       ContactPatch                        patch;
       /// The largest radial growth of the tread under the inflation [m].
@@ -45,11 +48,14 @@ namespace greentread
       double moved_mass_fraction = 0.;
       /// Run times of meshing, assembly, inflation with Kp [s].
       double mesh_seconds = 0., assembly_seconds = 0., inflation_seconds = 0.;
+      /// The section's assembly, inflation and choice of harmonics [s].
+      double harmonic_seconds = 0.;
 
-      InflatedTyre(const geometry::GeometryParameters &geometry,
-                   const fe::MaterialParameters       &materials,
-                   const fe::InflationParameters      &inflation,
-                   const PatchRequest                 &patch_request);
+      InflatedTyre(const geometry::GeometryParameters   &geometry,
+                   const fe::MaterialParameters         &materials,
+                   const fe::InflationParameters        &inflation,
+                   const PatchRequest                   &patch_request,
+                   const std::optional<HarmonicOptions> &harmonic = std::nullopt);
 
       /// Two lines: the ring, its cell and inflation; the contact points.
       std::string

@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 /**
@@ -43,6 +44,9 @@ namespace greentread
       const periodic::PatchRequest                 &patch;
       /// Keep the modes up to this [Hz].
       double cutoff_hz = 0.;
+      /// With the `harmonic` method: the modes come from the section's
+      /// harmonics (synthesis/harmonic_modes.h), not from Bloch cells.
+      std::optional<periodic::HarmonicOptions> harmonic = std::nullopt;
     };
 
     /**

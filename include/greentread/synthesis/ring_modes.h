@@ -7,6 +7,9 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -109,6 +112,48 @@ namespace greentread
                         const periodic::PeriodicCell &cell,
                         const periodic::ContactPatch &patch,
                         bool                couple);
+
+    /**
+     * @brief The core of coupled_point_modes() for any ring: the modes'
+     * values @p a at the points (a(r, q): mode r seen by point q's unit load,
+     * complex), such that the ring's g holds (1 / N) a a^T for a @p real
+     * problem and (1 / N)(a a^H + conj(a a^H)) otherwise. For the Bloch
+     * cell N is the number of cells; for a harmonic of an axisymmetric
+     * ring (synthesis/harmonic_modes.h), 1 for n = 0 and 2 otherwise.
+     */
+    PointModes
+    coupled_point_modes(const BlochModes       &modes,
+                        const Eigen::MatrixXcd &a,
+                        double                  N,
+                        bool                    real,
+                        bool                    couple);
+
+    /// The diagonal form of the same: one real mode per row of @p a for a
+    /// @p real problem, a cos and a sin one otherwise. Returns [mode][point].
+    Eigen::MatrixXd
+    point_shapes(const Eigen::MatrixXcd &a, double N, bool real);
+
+    /// One wavenumber's (or harmonic's) modes and their ring modes at the
+    /// points.
+    using WavenumberModes =
+      std::function<std::pair<BlochModes, PointModes>(unsigned int k)>;
+
+    /**
+     * @brief The machinery of ring_modes() for any source of modes:
+     * wavenumbers 0 .. @p n_k - 1 by @p modes_of, k on rank k mod n_ranks
+     * of @p comm and on threads, gathered on every rank in the order of k
+     * and sorted by frequency. @p what names the wavenumbers in the
+     * progress line.
+     * @throws NumericalError on every rank if any fails.
+     */
+    RingModes
+    gather_ring_modes(unsigned int           n_k,
+                      unsigned int           P,
+                      const WavenumberModes &modes_of,
+                      const std::string     &what,
+                      MPI_Comm               comm,
+                      bool                   show_progress,
+                      bool                   couple_damping);
 
     /**
      * @brief The real ring modes that one Bloch wavenumber's @p modes give
