@@ -10,12 +10,14 @@
 // finest of its series, and the observed order p = log2(|g_1 - g_2| / |g_2 -
 // g_3|) over three levels halving the mesh.
 //
-//   harmonic_convergence [--quick] [--output DIR] [--part 1|2|3]
+//   harmonic_convergence [--quick] [--output DIR] [--part 1|2|3|4]
 //
 // Part 1: h-refinement, 8, 4 and 2 mm, quadratic elements. Part 2:
 // p-refinement on the 8 mm section (degrees 2, 3, 4) against part 1's finest.
-// Part 3: h-refinement with the .geo's 'Crown refinement=3' (the crown's
-// elements a third of the mesh size). --quick: part 1's 8 and 4 mm sections
+// Part 3: the .geo's 'Crown refinement=3' (the crown's elements a third of
+// the mesh size) on the 8 and 4 mm sections, against part 1's 2 mm section.
+// Part 4: quartic elements, the 8 mm section against the 4 mm one (Mesh size
+// halved): the converged default's check. --quick: part 1's 8 and 4 mm sections
 // only, at 0 Hz.
 
 #include <greentread/periodic/green_stage.h>
@@ -148,7 +150,7 @@ main(int argc, char **argv)
   if (!options.quick)
     h.push_back({0.002, 2});
   std::vector<Result> results;
-  if (part(1) || part(2))
+  if (part(1) || part(2) || part(3))
     {
       for (const auto &level : h)
         results.push_back(run(level, 1, frequencies));
@@ -165,13 +167,29 @@ main(int argc, char **argv)
       table("p-refinement on the 8 mm section, against the 2 mm quadratic one", p, by_degree,
             frequencies, false, csv);
     }
-  if (part(3) && !options.quick)
+  if (part(3) && !options.quick && !results.empty())
     {
-      std::vector<Result> graded;
-      for (const auto &level : h)
-        graded.push_back(run(level, 3, frequencies));
-      table("h-refinement (quadratic elements), crown refinement 3", h, graded, frequencies,
-            true, csv);
+      // The crown graded: its elements a third of the mesh size across the
+      // tread and through the tread pattern. Against the 2 mm section of
+      // part 1 (a 2 mm section graded so would take about an hour here).
+      std::vector<Level>  graded = {{0.008, 2}, {0.004, 2}, h.back()};
+      std::vector<Result> by_grading;
+      for (std::size_t l = 0; l + 1 < graded.size(); ++l)
+        by_grading.push_back(run(graded[l], 3, frequencies));
+      by_grading.push_back(results.back());
+      table("crown refinement 3 (8 and 4 mm), against the 2 mm quadratic section of part 1",
+            graded, by_grading, frequencies, false, csv);
+    }
+  if (part(4) && !options.quick)
+    {
+      // The quartic 8 mm section against the section twice as fine (Mesh
+      // size halved, the same degree): the test of a converged default.
+      std::vector<Level>  quartic = {{0.008, 4}, {0.004, 4}};
+      std::vector<Result> by_quartic;
+      for (const auto &level : quartic)
+        by_quartic.push_back(run(level, 1, frequencies));
+      table("quartic elements: the 8 mm section against the 4 mm one", quartic, by_quartic,
+            frequencies, false, csv);
     }
   std::printf("\nWritten: %s\n", (options.output / "harmonic_convergence.csv").c_str());
   return 0;
