@@ -101,6 +101,20 @@ namespace greentread
         {}
       };
 
+      /// Call @p add(free row, free column, i, j) for every pair of a cell's
+      /// DoFs @p local that are both free.
+      template <typename Add>
+      void
+      for_free_pairs(const std::vector<dealii::types::global_dof_index> &local,
+                     const std::vector<long>                            &free,
+                     const Add                                          &add)
+      {
+        for (unsigned int i = 0; i < local.size(); ++i)
+          for (unsigned int j = 0; j < local.size(); ++j)
+            if (free[local[i]] >= 0 && free[local[j]] >= 0)
+              add(free[local[i]], free[local[j]], i, j);
+      }
+
       Eigen::SparseMatrix<double>
       to_sparse(const Triplets &t, const unsigned int n)
       {
@@ -188,21 +202,17 @@ namespace greentread
                                     values.shape_value(j, q) * dV;
                   }
             }
-          for (unsigned int i = 0; i < per_cell; ++i)
-            for (unsigned int j = 0; j < per_cell; ++j)
-              {
-                const long fi = free[local[i]], fj = free[local[j]];
-                if (fi < 0 || fj < 0)
-                  continue;
-                ka.emplace_back(fi, fj, k.a(i, j));
-                kb.emplace_back(fi, fj, k.b(i, j));
-                kc.emplace_back(fi, fj, k.c(i, j));
-                ca.emplace_back(fi, fj, mat.beta * k.a(i, j));
-                cb.emplace_back(fi, fj, mat.beta * k.b(i, j));
-                cc.emplace_back(fi, fj, mat.beta * k.c(i, j));
-                m.emplace_back(fi, fj, mass(i, j));
-                cm.emplace_back(fi, fj, mat.alpha * mass(i, j));
-              }
+          for_free_pairs(local, free, [&](const long fi, const long fj, const unsigned int i,
+                                          const unsigned int j) {
+            ka.emplace_back(fi, fj, k.a(i, j));
+            kb.emplace_back(fi, fj, k.b(i, j));
+            kc.emplace_back(fi, fj, k.c(i, j));
+            ca.emplace_back(fi, fj, mat.beta * k.a(i, j));
+            cb.emplace_back(fi, fj, mat.beta * k.b(i, j));
+            cc.emplace_back(fi, fj, mat.beta * k.c(i, j));
+            m.emplace_back(fi, fj, mass(i, j));
+            cm.emplace_back(fi, fj, mat.alpha * mass(i, j));
+          });
         }
       K       = {to_sparse(ka, n), to_sparse(kb, n), to_sparse(kc, n)};
       C_beta  = {to_sparse(ca, n), to_sparse(cb, n), to_sparse(cc, n)};
@@ -328,16 +338,12 @@ namespace greentread
                     kp.c(i, j) += dealii::scalar_product(grad[i][1] * sigma, grad[j][1]) * dV;
                   }
             }
-          for (unsigned int i = 0; i < per_cell; ++i)
-            for (unsigned int j = 0; j < per_cell; ++j)
-              {
-                const long fi = free[local[i]], fj = free[local[j]];
-                if (fi < 0 || fj < 0)
-                  continue;
-                pa.emplace_back(fi, fj, kp.a(i, j));
-                pb.emplace_back(fi, fj, kp.b(i, j));
-                pc.emplace_back(fi, fj, kp.c(i, j));
-              }
+          for_free_pairs(local, free, [&](const long fi, const long fj, const unsigned int i,
+                                          const unsigned int j) {
+            pa.emplace_back(fi, fj, kp.a(i, j));
+            pb.emplace_back(fi, fj, kp.b(i, j));
+            pc.emplace_back(fi, fj, kp.c(i, j));
+          });
         }
       Kp = {to_sparse(pa, n), to_sparse(pb, n), to_sparse(pc, n)};
 
