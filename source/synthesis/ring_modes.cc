@@ -261,8 +261,10 @@ namespace greentread
       return gather_ring_modes(
         cell.n_cells / 2 + 1, patch.points.size(),
         [&](const unsigned int k) {
-          const BlochModes modes = bloch_modes(cell, k, search);
-          return std::make_pair(modes, coupled_point_modes(modes, cell, patch, couple_damping));
+          BlochModes modes  = bloch_modes(cell, k, search);
+          PointModes points = coupled_point_modes(modes, cell, patch, couple_damping);
+          // Moved, not copied: the shapes over [L, I] are megabytes per wavenumber.
+          return std::make_pair(std::move(modes), std::move(points));
         },
         "wavenumbers", comm, show_progress, couple_damping);
     }
