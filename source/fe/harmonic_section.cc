@@ -122,6 +122,61 @@ namespace greentread
         m.setFromTriplets(t.begin(), t.end());
         return m;
       }
+
+      using Sparse = Eigen::SparseMatrix<double>;
+
+      bool
+      same_pattern(const Sparse &x, const Sparse &y)
+      {
+        return x.isCompressed() && y.isCompressed() && x.rows() == y.rows() &&
+               x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
+               std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1,
+                          y.outerIndexPtr()) &&
+               std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr());
+      }
+
+      /**
+       * sum_k w_k A_k. The section's matrices are all assembled from the
+       * same pairs of unknowns, so they share one pattern, and the sum is
+       * then one pass over their values: Eigen's sparse sums, which merge
+       * the patterns term by term, took a fifth of the mode search (one
+       * K_n - s M per shift) and of the static harmonics. Terms with no
+       * entries (Kp before the inflation) are skipped; other patterns take
+       * Eigen's sums.
+       */
+      Sparse
+      combine(const std::vector<std::pair<double, const Sparse *>> &terms)
+      {
+        std::vector<std::pair<double, const Sparse *>> used;
+        for (const auto &t : terms)
+          if (t.first != 0. && t.second->nonZeros() > 0)
+            used.push_back(t);
+        if (used.empty())
+          return Sparse(terms.front().second->rows(), terms.front().second->cols());
+        bool shared = true;
+        for (const auto &t : used)
+          shared = shared && same_pattern(*t.second, *used.front().second);
+        if (!shared)
+          {
+            Sparse sum = used.front().first * *used.front().second;
+            for (std::size_t k = 1; k < used.size(); ++k)
+              sum = Sparse(sum + used[k].first * *used[k].second);
+            return sum;
+          }
+        Sparse       sum = *used.front().second;
+        double      *v   = sum.valuePtr();
+        const auto   nnz = sum.nonZeros();
+        for (Eigen::Index i = 0; i < nnz; ++i)
+          v[i] *= used.front().first;
+        for (std::size_t k = 1; k < used.size(); ++k)
+          {
+            const double  w = used[k].first;
+            const double *a = used[k].second->valuePtr();
+            for (Eigen::Index i = 0; i < nnz; ++i)
+              v[i] += w * a[i];
+          }
+        return sum;
+      }
     } // namespace
 
 
@@ -227,7 +282,17 @@ namespace greentread
     Eigen::SparseMatrix<double>
     HarmonicSection::stiffness(const unsigned int n) const
     {
-      return K.at(n) + Kp.at(n);
+      return shifted_stiffness(n, 0.);
+    }
+
+
+
+    Eigen::SparseMatrix<double>
+    HarmonicSection::shifted_stiffness(const unsigned int n, const double s) const
+    {
+      const double n1 = n, n2 = n1 * n1;
+      return combine({{1., &K.a}, {n1, &K.b}, {n2, &K.c}, {1., &Kp.a}, {n1, &Kp.b}, {n2, &Kp.c},
+                      {-s, &M}});
     }
 
 
@@ -235,7 +300,8 @@ namespace greentread
     Eigen::SparseMatrix<double>
     HarmonicSection::damping(const unsigned int n) const
     {
-      return C_alpha + C_beta.at(n);
+      const double n1 = n;
+      return combine({{1., &C_alpha}, {1., &C_beta.a}, {n1, &C_beta.b}, {n1 * n1, &C_beta.c}});
     }
 
 

@@ -93,7 +93,7 @@ namespace greentread
           add_harmonic();
         }
       const double shift = 2. * max_omega * max_omega;
-      while (!positive_definite(section.stiffness(n) - shift * section.mass()))
+      while (!positive_definite(section.shifted_stiffness(n, shift)))
         {
           const unsigned int target = std::min(max_harmonics, n + std::max(8u, n / 4));
           if (n >= max_harmonics)
@@ -163,9 +163,32 @@ namespace greentread
       const double             a        = ring.arc;
       Eigen::SparseLU<SparseC> lu;
       std::vector<double>      d;
+      // The three parts share the section's pattern (fe/harmonic_section.h):
+      // D_n is then one pass over their values, not two sparse sums.
+      const bool shared = [&]() {
+        for (const SparseC &p : parts)
+          if (!p.isCompressed() || p.nonZeros() != parts[0].nonZeros() ||
+              !std::equal(p.outerIndexPtr(), p.outerIndexPtr() + p.outerSize() + 1,
+                          parts[0].outerIndexPtr()) ||
+              !std::equal(p.innerIndexPtr(), p.innerIndexPtr() + p.nonZeros(),
+                          parts[0].innerIndexPtr()))
+            return false;
+        return true;
+      }();
+      SparseC D = parts[0];
       for (unsigned int n = 0; n < ring.n_harmonics; ++n)
         {
-          const SparseC D = parts[0] + double(n) * parts[1] + double(n) * double(n) * parts[2];
+          const double n1 = n, n2 = n1 * n1;
+          if (shared)
+            {
+              const Complex *a = parts[0].valuePtr(), *b = parts[1].valuePtr(),
+                            *c = parts[2].valuePtr();
+              Complex *v = D.valuePtr();
+              for (Eigen::Index i = 0; i < D.nonZeros(); ++i)
+                v[i] = a[i] + n1 * b[i] + n2 * c[i];
+            }
+          else
+            D = parts[0] + n1 * parts[1] + n2 * parts[2];
           if (n == 0)
             lu.analyzePattern(D);
           lu.factorize(D);
@@ -212,8 +235,7 @@ namespace greentread
             0., 3.);
           const double tail = 4. * d[n] / (M_PI * a * a * n * (1. + decay)) / smallest;
           if (tail <= ring.tolerance &&
-              positive_definite(ring.section.stiffness(n + 1) -
-                                2. * omega * omega * ring.section.mass()))
+              positive_definite(ring.section.shifted_stiffness(n + 1, 2. * omega * omega)))
             break;
         }
       return g;

@@ -453,20 +453,29 @@ namespace greentread
     BlochModes
     bloch_modes(const periodic::PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
     {
-      const std::string which = "Bloch wavenumber " + std::to_string(k);
-      if (!(search.cutoff > 0.) || search.block == 0 || search.slices == 0)
-        throw NumericalError("bloch_modes: the cut-off must be positive and the block size "
-                             "and the number of slices at least 1 (" + which + ")");
       const double phi = 2. * M_PI * k / cell.n_cells;
       periodic::BlochCell    bloch(cell);
       const auto   part = [&](const periodic::Complex a, const periodic::Complex c, const periodic::Complex m) {
         bloch.set_combination(a, c, m);
         return periodic::SparseComplex(bloch.assemble(phi));
       };
+      return hermitian_modes(part(1., 0., 0.), part(0., 1., 0.), part(0., 0., 1.), k,
+                             "Bloch wavenumber " + std::to_string(k), search);
+    }
+
+
+
+    BlochModes
+    hermitian_modes(periodic::SparseComplex K, periodic::SparseComplex C, periodic::SparseComplex M,
+                    const unsigned int k, const std::string &which, const ModeSearch &search)
+    {
+      if (!(search.cutoff > 0.) || search.block == 0 || search.slices == 0)
+        throw NumericalError("bloch_modes: the cut-off must be positive and the block size "
+                             "and the number of slices at least 1 (" + which + ")");
       Problem problem;
-      problem.K      = part(1., 0., 0.);
-      problem.C      = part(0., 1., 0.);
-      problem.M      = part(0., 0., 1.);
+      problem.K      = std::move(K);
+      problem.C      = std::move(C);
+      problem.M      = std::move(M);
       problem.KM     = internal::SharedPattern({&problem.K, &problem.M});
       problem.MM     = internal::SharedPattern({&problem.M});
       problem.CC     = internal::SharedPattern({&problem.C});

@@ -4,40 +4,132 @@
 
 #include <Eigen/SparseCholesky>
 
-#include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/MatOp/SymShiftInvert.h>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace greentread
 {
   namespace synthesis
   {
+    namespace
+    {
+      using Sparse = Eigen::SparseMatrix<double>;
+
+      /**
+       * The shift-invert operator in standard form: with M = B B^T
+       * (B = P^T L, the sparse Cholesky factor of M with its fill-reducing
+       * permutation), x -> B^T (K - s M)^{-1} B x. Its eigenvalues are
+       * 1 / (w^2 - s) with eigenvectors y = B^T U, and a Lanczos on it needs
+       * no products with M: Spectra's generalised driver spent a third of
+       * the search in them, several per step for its M-inner products.
+       */
+      class StandardShiftInvert
+      {
+      public:
+        using Scalar = double;
+
+        StandardShiftInvert(const Eigen::SimplicialLDLT<Sparse> &shifted_,
+                            const Eigen::SimplicialLLT<Sparse>  &mass_)
+          : shifted(shifted_)
+          , mass(mass_)
+        {}
+
+        Eigen::Index
+        rows() const
+        {
+          return mass.rows();
+        }
+        Eigen::Index
+        cols() const
+        {
+          return mass.cols();
+        }
+
+        void
+        perform_op(const double *x_in, double *y_out) const
+        {
+          const Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
+          Eigen::Map<Eigen::VectorXd>             y(y_out, rows());
+          Eigen::VectorXd                         z = mass.matrixL() * x;
+          z                                         = mass.permutationPinv() * z;
+          z                                         = shifted.solve(z);
+          z                                         = mass.permutationP() * z;
+          y.noalias()                               = mass.matrixU() * z;
+        }
+
+        /// U = B^{-T} y, M-orthonormal when the y are orthonormal.
+        Eigen::MatrixXd
+        shapes(const Eigen::MatrixXd &y) const
+        {
+          Eigen::MatrixXd u = mass.matrixU().solve(y);
+          return mass.permutationPinv() * u;
+        }
+
+      private:
+        const Eigen::SimplicialLDLT<Sparse> &shifted;
+        const Eigen::SimplicialLLT<Sparse>  &mass;
+      };
+
+      /// L D L^T of K_n - s M, nudged off a zero pivot; its negative
+      /// pivots count the eigenvalues below s (Sylvester). The pattern is
+      /// the same for every n and s: @p ldlt is analysed once.
+      void
+      factorise_shifted(const fe::HarmonicSection &section, const unsigned int n, const double s,
+                        Eigen::SimplicialLDLT<Sparse> &ldlt, bool &analysed)
+      {
+        for (const double nudge : {0., 1e-9, -1e-9})
+          {
+            const Sparse A = section.shifted_stiffness(n, s * (1. + nudge));
+            if (!analysed)
+              ldlt.analyzePattern(A);
+            analysed = true;
+            ldlt.factorize(A);
+            if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() != 0.).all())
+              return;
+          }
+        throw NumericalError("the modes of harmonic " + std::to_string(n) + ": K_n - s M at s = " +
+                             format_short(s) + " rad^2/s^2 could not be factorised (a zero pivot "
+                             "at every try)");
+      }
+
+      unsigned int
+      negative_pivots(const Eigen::SimplicialLDLT<Sparse> &ldlt)
+      {
+        return static_cast<unsigned int>((ldlt.vectorD().array() < 0.).count());
+      }
+    } // namespace
+
+
+
     unsigned int
     count_harmonic_modes(const fe::HarmonicSection &section, const unsigned int n,
                          const double cutoff)
     {
-      const Eigen::SparseMatrix<double> A =
-        section.stiffness(n) - cutoff * cutoff * section.mass();
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-      if (ldlt.info() != Eigen::Success)
-        throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                             ": K_n - w_c^2 M could not be factorised to count them (a mode "
-                             "exactly at the cut-off?)");
-      return static_cast<unsigned int>((ldlt.vectorD().array() < 0.).count());
+      Eigen::SimplicialLDLT<Sparse> ldlt;
+      bool                          analysed = false;
+      factorise_shifted(section, n, cutoff * cutoff, ldlt, analysed);
+      return negative_pivots(ldlt);
     }
 
 
 
     BlochModes
-    harmonic_modes(const fe::HarmonicSection &section, const unsigned int n, const double cutoff)
+    harmonic_modes(const fe::HarmonicSection &section, const unsigned int n, const double cutoff,
+                   const unsigned int modes_per_slice)
     {
       BlochModes modes;
       modes.wavenumber     = n;
-      const unsigned int m = count_harmonic_modes(section, n, cutoff);
+      const Sparse  K      = section.stiffness(n);
+      const Sparse &M      = section.mass();
+      const double  cut2   = cutoff * cutoff;
       const Eigen::Index size = section.size();
+      Eigen::SimplicialLDLT<Sparse> ldlt;
+      bool                          analysed = false;
+      factorise_shifted(section, n, cut2, ldlt, analysed);
+      const unsigned int m = negative_pivots(ldlt);
       if (m == 0)
         {
           modes.omega.resize(0);
@@ -50,50 +142,111 @@ namespace greentread
                              std::to_string(m) + " of the section's " + std::to_string(size) +
                              " eigenvalues lie below the cut-off; refine the section or lower "
                              "'Patch model/Mode cutoff'");
-      const Eigen::SparseMatrix<double> K = section.stiffness(n);
-      const Eigen::SparseMatrix<double> &M = section.mass();
-      using Op  = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
-      using BOp = Spectra::SparseSymMatProd<double>;
-      Op           op(K, M);
-      BOp          bop(M);
-      // The shift below zero keeps K - s M positive definite; the
-      // eigenvalues nearest it are the lowest, exactly the m counted.
-      const double       shift = -std::pow(cutoff / 20., 2);
-      const Eigen::Index ncv   = std::min<Eigen::Index>(size, std::max<Eigen::Index>(2 * m + 1, m + 20));
-      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, m, ncv,
-                                                                                     shift);
-      solver.init();
-      solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11, Spectra::SortRule::SmallestAlge);
-      if (solver.info() != Spectra::CompInfo::Successful)
+      Eigen::SimplicialLLT<Sparse> mass(M);
+      if (mass.info() != Eigen::Success)
         throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                             ": Spectra's shift-invert Lanczos did not converge on " +
-                             std::to_string(m) + " modes");
-      const Eigen::VectorXd lambda = solver.eigenvalues();
-      Eigen::MatrixXd       U      = solver.eigenvectors();
-      modes.n_solves               = static_cast<unsigned int>(solver.num_operations());
-      modes.krylov_dimension       = static_cast<unsigned int>(ncv);
+                             ": the section's mass matrix is not positive definite");
+
+      // Slices of [0, w_c^2], equal in w^2 (the modes' number grows about
+      // as w^2), each searched with its own shift and factorisation: the
+      // Lanczos work grows with the square of its basis, so k slices of
+      // m / k modes cost about 1/k of one search for all m. The first is
+      // shifted below zero (its lowest modes keep small relative
+      // residuals), so the modes nearest its shift are exactly the count
+      // below its top. Each other one is shifted to its middle: the modes
+      // nearest the shift are then those inside it, and a few more are
+      // asked for so that the ones at its ends converge fast; those
+      // outside it are dropped, and the count in it must be met exactly.
+      const unsigned int slices = std::max(1u, (m + modes_per_slice - 1) / modes_per_slice);
+      std::vector<double> top(slices);
+      std::vector<unsigned int> below(slices + 1, 0);
+      for (unsigned int j = 0; j < slices; ++j)
+        top[j] = cut2 * (j + 1) / slices;
+      below[slices] = m;
+      for (unsigned int j = 0; j + 1 < slices; ++j)
+        {
+          factorise_shifted(section, n, top[j], ldlt, analysed);
+          below[j + 1] = negative_pivots(ldlt);
+        }
+      std::vector<double> lambda;
+      Eigen::MatrixXd     U(size, m);
+      for (unsigned int j = 0; j < slices; ++j)
+        {
+          const unsigned int wanted = below[j + 1] - below[j];
+          if (wanted == 0)
+            continue;
+          const double low   = j == 0 ? -cut2 : top[j - 1];
+          const double shift = j == 0 ? -cut2 / 400. : 0.5 * (low + top[j]);
+          const unsigned int extra = j == 0 ? 0 : std::min<Eigen::Index>(wanted / 4 + 4, size - wanted - 2);
+          const Eigen::Index nev = wanted + extra;
+          const Eigen::Index ncv = std::min<Eigen::Index>(size, std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+          factorise_shifted(section, n, shift, ldlt, analysed);
+          StandardShiftInvert op(ldlt, mass);
+          Spectra::SymEigsSolver<StandardShiftInvert> solver(op, nev, ncv);
+          solver.init();
+          solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11, Spectra::SortRule::LargestAlge);
+          if (solver.info() != Spectra::CompInfo::Successful)
+            throw NumericalError("the modes of harmonic " + std::to_string(n) +
+                                 ": Spectra's shift-invert Lanczos did not converge on " +
+                                 std::to_string(nev) + " modes near " +
+                                 format_short(std::sqrt(std::max(shift, 0.)) / (2. * M_PI)) + " Hz");
+          modes.n_solves += static_cast<unsigned int>(solver.num_operations());
+          modes.krylov_dimension += static_cast<unsigned int>(ncv);
+          const Eigen::VectorXd nu     = solver.eigenvalues();
+          const Eigen::MatrixXd shapes = op.shapes(solver.eigenvectors());
+          unsigned int          kept   = 0;
+          for (Eigen::Index r = 0; r < nu.size(); ++r)
+            {
+              const double l = shift + 1. / nu(r);
+              if (!(l > low && l <= top[j] * (1. + 1e-12)))
+                continue;
+              if (lambda.size() == m)
+                break;
+              U.col(lambda.size()) = shapes.col(r);
+              lambda.push_back(l);
+              ++kept;
+            }
+          if (kept != wanted)
+            throw NumericalError("the modes of harmonic " + std::to_string(n) + ": " +
+                                 std::to_string(kept) + " eigenvalues found in (" +
+                                 format_short(std::max(low, 0.)) + ", " + format_short(top[j]) +
+                                 "] rad^2/s^2, where the inertia counts " +
+                                 std::to_string(wanted));
+        }
+
+      // Ascending, each residual checked.
+      std::vector<unsigned int> order(m);
+      for (unsigned int r = 0; r < m; ++r)
+        order[r] = r;
+      std::sort(order.begin(), order.end(),
+                [&](const unsigned int a, const unsigned int b) { return lambda[a] < lambda[b]; });
+      Eigen::MatrixXd V(size, m);
+      for (unsigned int r = 0; r < m; ++r)
+        V.col(r) = U.col(order[r]);
+      const Eigen::MatrixXd MV = M * V, KV = K * V;
       modes.omega.resize(m);
       for (unsigned int r = 0; r < m; ++r)
         {
-          if (!(lambda(r) > 0.) || lambda(r) > cutoff * cutoff * (1. + 1e-9))
+          const double l = lambda[order[r]];
+          if (!(l > 0.))
             throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                                 ": eigenvalue " + format_printf("%.6g", lambda(r)) +
+                                 ": eigenvalue " + format_printf("%.6g", l) +
                                  " found, not one of the " + std::to_string(m) +
                                  " counted in (0, w_c^2]");
-          U.col(r) /= std::sqrt(U.col(r).dot(M * U.col(r)));
-          const Eigen::VectorXd KU = K * U.col(r);
-          const double residual    = (KU - lambda(r) * (M * U.col(r))).norm() / KU.norm();
+          const double scale    = 1. / std::sqrt(V.col(r).dot(MV.col(r)));
+          V.col(r) *= scale;
+          const double residual = (KV.col(r) - l * MV.col(r)).norm() / KV.col(r).norm();
           if (!(residual < 1e-6))
             throw NumericalError("the modes of harmonic " + std::to_string(n) + ": mode " +
                                  std::to_string(r) + " has a relative residual of " +
                                  format_printf("%.2g", residual));
           modes.max_residual = std::max(modes.max_residual, residual);
-          modes.omega(r)     = std::sqrt(lambda(r));
+          modes.omega(r)     = std::sqrt(l);
         }
-      const Eigen::MatrixXd B = U.transpose() * (section.damping(n) * U);
+      const Eigen::MatrixXd B = V.transpose() * (section.damping(n) * V);
       modes.modal_damping     = B.cast<std::complex<double>>();
       modes.damping_ratio     = B.diagonal().cwiseQuotient(2. * modes.omega);
-      modes.shapes            = U.cast<std::complex<double>>();
+      modes.shapes            = V.cast<std::complex<double>>();
       return modes;
     }
 

@@ -9,6 +9,8 @@
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/harmonic_ring.h>
 #include <greentread/synthesis/harmonic_modes.h>
+
+#include <Eigen/Eigenvalues>
 #include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -219,6 +221,48 @@ BOOST_AUTO_TEST_CASE(modal_synthesis_matches_the_direct_sums)
       BOOST_CHECK_GT(errors[0] / errors[1], 3.);
       BOOST_CHECK_LT(errors[1], 0.01);
     }
+}
+
+// The sliced search (harmonic_modes: standard-form shift-invert Lanczos over
+// slices of the spectrum, each slice's count from the inertia) against a
+// dense generalised eigensolver (LAPACK-style, Eigen's
+// GeneralizedSelfAdjointEigenSolver) on the coarse inflated section, at
+// harmonics 0, 1, 5 and 20, with slices of 8 modes (many slices, so that
+// the slices' ends, their shifts in the middle and the dropping of the
+// modes outside them are all exercised) and with one slice.
+BOOST_AUTO_TEST_CASE(sliced_mode_search_matches_a_dense_solve)
+{
+  HarmonicTyre        tyre(64, 1e-3);
+  const double        cutoff = 2. * M_PI * 6000.;
+  const Eigen::MatrixXd M    = Eigen::MatrixXd(tyre.section.mass());
+  double              worst  = 0., worst_residual = 0.;
+  unsigned int        total  = 0;
+  for (const unsigned int n : {0u, 1u, 5u, 20u})
+    {
+      const Eigen::MatrixXd K = Eigen::MatrixXd(tyre.section.stiffness(n));
+      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(K, M, Eigen::EigenvaluesOnly);
+      std::vector<double> reference;
+      for (Eigen::Index r = 0; r < dense.eigenvalues().size(); ++r)
+        if (dense.eigenvalues()(r) <= cutoff * cutoff)
+          reference.push_back(std::sqrt(dense.eigenvalues()(r)));
+      for (const unsigned int per_slice : {8u, 100000u})
+        {
+          const auto modes = synthesis::harmonic_modes(tyre.section, n, cutoff, per_slice);
+          BOOST_REQUIRE_EQUAL(std::size_t(modes.omega.size()), reference.size());
+          for (std::size_t r = 0; r < reference.size(); ++r)
+            worst = std::max(worst, std::abs(modes.omega(r) / reference[r] - 1.));
+          worst_residual = std::max(worst_residual, modes.max_residual);
+          total += per_slice == 8u ? unsigned(reference.size()) : 0u;
+        }
+    }
+  std::cout << "sliced mode search: " << total << " modes at harmonics 0, 1, 5, 20 below 6 kHz, "
+            << "largest relative frequency difference from the dense solve " << worst
+            << ", largest residual " << worst_residual << '\n';
+  BOOST_CHECK_GT(total, 4u * 8u); // several slices per harmonic
+  // Measured 2.3e-10 and 2.1e-9 (the frequencies are accurate to about the
+  // residual's square, the dense solve's own rounding included).
+  BOOST_CHECK_LT(worst, 7e-10);
+  BOOST_CHECK_LT(worst_residual, 6e-9);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

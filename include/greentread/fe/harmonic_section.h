@@ -93,6 +93,10 @@ namespace greentread
       Eigen::SparseMatrix<double>
       stiffness(unsigned int n) const;
 
+      /// K_n + Kp_n - s M, in one pass over the shared pattern.
+      Eigen::SparseMatrix<double>
+      shifted_stiffness(unsigned int n, double s) const;
+
       /// C_n: each layer's alpha M + beta K_n.
       Eigen::SparseMatrix<double>
       damping(unsigned int n) const;

@@ -106,5 +106,15 @@ namespace greentread
      */
     BlochModes
     bloch_modes(const periodic::PeriodicCell &cell, unsigned int k, const ModeSearch &search);
+
+    /**
+     * @brief The search of bloch_modes() on any Hermitian pencil: the modes
+     * of (K, M) below the cut-off, with the damping C in their basis. K, C
+     * and M share one pattern; @p k seeds the start blocks and is stored as
+     * the wavenumber, @p which names the problem in errors.
+     */
+    BlochModes
+    hermitian_modes(periodic::SparseComplex K, periodic::SparseComplex C, periodic::SparseComplex M,
+                    unsigned int k, const std::string &which, const ModeSearch &search);
   } // namespace synthesis
 } // namespace greentread

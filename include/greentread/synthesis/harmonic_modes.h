@@ -34,8 +34,7 @@ namespace greentread
      * the search, by Sylvester's law of inertia (the negative pivots of
      * K_n - cutoff^2 M = L D L^T); the harmonics are taken up to the last
      * with a mode below it (8 in a row without one end the count). Each is
-     * solved by Spectra's shift-invert Lanczos (SymGEigsShiftSolver) for
-     * exactly that many modes, and each mode's residual is checked.
+     * solved by harmonic_modes(), and each mode's residual is checked.
      * @throws InputError if a harmonic the Green's functions do not sum
      *         (n >= ring.n_harmonics) has a mode below the cut-off, naming
      *         'Patch model/Mode cutoff'.
@@ -53,9 +52,20 @@ namespace greentread
      * [rad/s]: frequencies, damping ratios, the damping in the modal basis
      * and the M-normalised shapes over the section's unknowns (real, held
      * as complex for BlochModes).
+     *
+     * Spectra's Lanczos (SymEigsSolver) on the shift-invert operator in
+     * standard form, B^T (K_n - s M)^{-1} B with M = B B^T (no products with
+     * M inside the iteration), over slices of [0, cutoff^2] equal in w^2,
+     * about @p modes_per_slice modes each, every slice with its own shift
+     * and L D L^T factorisation. Each slice's count comes from the inertia
+     * at its ends and must be met exactly. The slice size was chosen by
+     * `benchmarks/harmonic_mode_search`.
+     * @throws NumericalError naming the harmonic if a factorisation or a
+     *         search fails, or a slice's count is not met.
      */
     BlochModes
-    harmonic_modes(const fe::HarmonicSection &section, unsigned int n, double cutoff);
+    harmonic_modes(const fe::HarmonicSection &section, unsigned int n, double cutoff,
+                   unsigned int modes_per_slice = 48);
 
     /// The number of eigenvalues of harmonic @p n below @p cutoff^2.
     unsigned int
