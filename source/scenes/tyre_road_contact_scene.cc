@@ -16,6 +16,11 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <sstream>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -181,8 +186,20 @@ namespace greentread
       std::cout << "  the model's static compliance differs from the structure's by "
                 << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
 
-      // Stages road and contact: every road at every speed.
-      std::vector<analysis::RunSpectrum> spectra;
+      // Stages road and contact: every road at every speed. The roads are
+      // made first; the runs are independent, so they go side by side, one
+      // per thread (each run's modal convolution then on the threads left
+      // over), and their spectra are kept in the order of the roads and
+      // speeds. A run on one thread is memory- and FFT-bound, and a second
+      // thread on its modal sums gained 10% (1.1 cores used): two runs at
+      // once use both cores.
+      struct RoadOfRuns
+      {
+        std::string     name;
+        road::Texture   texture;
+        road::PatchRoad patch_road;
+      };
+      std::vector<std::unique_ptr<RoadOfRuns>> road_list;
       for (const auto &road_name : roads.roads)
         {
           // The texture's width from the patch's, not the grid's: every
@@ -190,14 +207,47 @@ namespace greentread
           const double width = green.patch.width + 0.03;
           std::cout << "Road '" << road_name << "'\n";
           const auto          file    = texture_files.find(road_name);
-          const road::Texture texture =
-            file != texture_files.end() ? file->second : roads.make(road_name, width);
-          const road::PatchRoad patch_road(texture, grid.points, roads.sampling, road_name);
+          road::Texture       texture = file != texture_files.end() ? file->second : roads.make(road_name, width);
+          road::PatchRoad     patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
-          for (const double speed_kmh : rolling.speeds)
-            spectra.push_back(roll(model, grid, G0, tread, lattice, texture, patch_road,
-                                   road_name, speed_kmh, directory, record));
+          road_list.push_back(std::make_unique<RoadOfRuns>(
+            RoadOfRuns{road_name, std::move(texture), std::move(patch_road)}));
         }
+      const std::size_t  n_runs  = road_list.size() * rolling.speeds.size();
+      const unsigned int threads = dealii::MultithreadInfo::n_threads();
+      const unsigned int side_by_side =
+        static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
+      std::vector<analysis::RunSpectrum> spectra(n_runs);
+      std::vector<std::exception_ptr>    failures(n_runs);
+      std::atomic<std::size_t>           next{0};
+      std::atomic<unsigned int>          done{0};
+      std::atomic<bool>                  failed{false};
+      if (side_by_side > 1)
+        std::cout << "  " << n_runs << " runs, " << side_by_side << " at a time\n";
+      base::run_on_threads(
+        side_by_side,
+        [&]() {
+          for (std::size_t k; !failed && (k = next++) < n_runs;)
+            {
+              const RoadOfRuns &r = *road_list[k / rolling.speeds.size()];
+              try
+                {
+                  spectra[k] = roll(model, grid, G0, tread, lattice, r.texture, r.patch_road,
+                                    r.name, rolling.speeds[k % rolling.speeds.size()],
+                                    directory, record, std::max(1u, threads / side_by_side));
+                }
+              catch (...)
+                {
+                  failures[k] = std::current_exception();
+                  failed      = true;
+                }
+              ++done;
+            }
+        },
+        done, n_runs, nullptr, [&]() { return failed.load(); });
+      for (const auto &f : failures)
+        if (f)
+          std::rethrow_exception(f);
 
       // Stage analysis: the spectra per road (speeds) and per speed (roads).
       analysis::write_spectra(directory, spectra, roads.roads, rolling.speeds,
@@ -288,7 +338,8 @@ namespace greentread
                            const std::string            &road_name,
                            const double                  speed_kmh,
                            const std::filesystem::path  &directory,
-                           const base::ParameterRecord  &record) const
+                           const base::ParameterRecord  &record,
+                           const unsigned int            threads) const
     {
       const double V  = speed_kmh / 3.6;
       const double dt = rolling.time_step > 0. ? rolling.time_step : texture.dx / V;
@@ -300,9 +351,18 @@ namespace greentread
                          format_short(patch_road.usable_length()) +
                          " m once the patch is on it)");
       const std::string run = analysis::road_label(road_name) + "_" + analysis::speed_label(speed_kmh);
-      std::cout << "  run " << run << ": V0 = " << format_number(speed_kmh)
-                << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, "
-                << n_steps << " steps, " << convolution::to_string(rolling.convolution) << '\n';
+      // What the run prints goes out in whole blocks (runs go side by side).
+      std::ostringstream out;
+      const auto         print = [&out]() {
+        static std::mutex                 mutex;
+        const std::lock_guard<std::mutex> lock(mutex);
+        std::cout << out.str() << std::flush;
+        out.str("");
+      };
+      out << "  run " << run << ": V0 = " << format_number(speed_kmh)
+          << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, " << n_steps
+          << " steps, " << convolution::to_string(rolling.convolution) << '\n';
+      print();
       const auto t_run = std::chrono::steady_clock::now();
       const unsigned int n_p = grid.n_points();
 
@@ -320,10 +380,10 @@ namespace greentread
       setup.static_start  = rolling.static_start;
       setup.convolution   = rolling.convolution;
       setup.direct_kernel = rolling.direct_kernel;
-      setup.threads       = dealii::MultithreadInfo::n_threads();
+      setup.threads       = threads;
       setup.shape_precision = rolling.shape_precision;
       const auto equilibrium = contact::start_grid_contact(grid, G0, tread, road_heights, setup);
-      std::cout << "    static contact: indentation "
+      out << "    " << run << ": static contact: indentation "
                 << format_printf("%.4g", 1e3 * equilibrium.delta) << " mm, load "
                 << format_printf("%.4g", equilibrium.q.sum()) << " N, "
                 << equilibrium.n_contact << " of " << n_p << " points in contact\n";
@@ -338,7 +398,7 @@ namespace greentread
       base::Progress      progress("    " + run, n_steps);
       const auto observe = [&](const contact::RollingStep &step) {
         if (!step.report.converged && result.failed_steps < 5)
-          std::cout << "    step " << step.step << " (t = " << format_short(step.time)
+          out << "    step " << step.step << " (" << run << ", t = " << format_short(step.time)
                     << " s): the contact solve did not converge: " << step.report.message
                     << '\n';
         result.failed_steps += step.report.converged ? 0 : 1;
@@ -362,7 +422,7 @@ namespace greentread
       result.mean_force = impulse_total / (n_steps * dt);
       const double top_band = spectrum_top_band(dt);
       if (top_band < 5000.)
-        std::cout << "    the spectrum ends at the " << format_number(top_band)
+        out << "    the spectrum ends at the " << format_number(top_band)
                   << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)
                   << " us resolves up to " << format_printf("%.0f", 0.5 / dt) << " Hz\n";
       result.spectrum = analysis::third_octave_spectrum(
@@ -375,7 +435,7 @@ namespace greentread
         analysis::third_octave_spectrum(output.total_force(), dt, 1., 100., top_band);
       analysis::write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
                                         force_spectrum, "total contact force, N");
-      std::cout << "    mean total force " << format_printf("%.4g", result.mean_force)
+      out << "    " << run << ": mean total force " << format_printf("%.4g", result.mean_force)
                 << " N (static " << format_printf("%.4g", equilibrium.q.sum())
                 << " N), points in contact " << format_printf("%.0f", 100. * result.min_contact_fraction)
                 << "% to " << format_printf("%.0f", 100. * result.max_contact_fraction)
@@ -384,11 +444,12 @@ namespace greentread
                 << " m, steps the contact solve did not converge: " << result.failed_steps
                 << ", point-steps on the fallback: " << result.fallback_points << '\n';
       if (global.print_timings)
-        std::cout << "    " << format_printf("%.3g", result.seconds) << " s, "
+        out << "    " << run << ": " << format_printf("%.3g", result.seconds) << " s, "
                   << format_printf("%.3g", 1e3 * result.seconds / n_steps)
                   << " ms per step\n";
 
       output.finish("Road " + road_name + ", " + format_number(speed_kmh) + " km/h");
+      print();
       return {road_name, speed_kmh, result.spectrum, force_spectrum};
     }
   } // namespace scenes

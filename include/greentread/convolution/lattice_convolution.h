@@ -27,8 +27,10 @@ namespace greentread
   {
     /**
      * @brief \f$y = L x\f$ for the block Toeplitz matrix of an even kernel
-     * T on a lattice, by FFT. Not thread-safe (one work buffer); const
-     * products from one thread at a time.
+     * T on a lattice, by FFT. Const products may run on several threads at
+     * once (each thread has its own work arrays); the constructor plans the
+     * transforms (FFTW's planner is not thread-safe: construct from one
+     * thread at a time).
      */
     class LatticeConvolution
     {

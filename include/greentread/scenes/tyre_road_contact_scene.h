@@ -58,13 +58,16 @@ namespace greentread
       /// One run: road @p road_name at @p speed_kmh on the contact points of
       /// @p grid, from the static contact (the structure's static
       /// compliance @p G0 between the Green's functions' points, which the
-      /// grid splits), with its outputs; returns its spectrum.
+      /// grid splits), with its outputs; returns its spectrum. Its modal
+      /// convolution runs on @p threads threads. Runs may go side by side:
+      /// a run prints its lines in whole blocks.
       analysis::RunSpectrum
       roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
            const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
            const analysis::PatchLattice &lattice, const road::Texture &texture,
            const road::PatchRoad &patch_road, const std::string &road_name, double speed_kmh,
-           const std::filesystem::path &directory, const base::ParameterRecord &record) const;
+           const std::filesystem::path &directory, const base::ParameterRecord &record,
+           unsigned int threads) const;
 
       dealii::ParameterHandler          &prm;
       GlobalParameters                   global;
