@@ -125,16 +125,6 @@ namespace greentread
 
       using Sparse = Eigen::SparseMatrix<double>;
 
-      bool
-      same_pattern(const Sparse &x, const Sparse &y)
-      {
-        return x.isCompressed() && y.isCompressed() && x.rows() == y.rows() &&
-               x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
-               std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1,
-                          y.outerIndexPtr()) &&
-               std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr());
-      }
-
       /**
        * sum_k w_k A_k. The section's matrices are all assembled from the
        * same pairs of unknowns, so they share one pattern, and the sum is
@@ -356,14 +346,14 @@ namespace greentread
                   }
             }
 
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K.at(0));
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K.a);
       if (solver.info() != Eigen::Success)
         throw NumericalError("the section's inflation: the static stiffness (n = 0) could not "
                              "be factorised; is the section held at its rim seat?");
       const Eigen::VectorXd u = solver.solve(load);
-      if (!u.allFinite() || (K.at(0) * u - load).norm() > 1e-8 * load.norm())
+      if (!u.allFinite() || (K.a * u - load).norm() > 1e-8 * load.norm())
         throw NumericalError("the section's inflation: the static solve failed (residual " +
-                             format_printf("%.2g", (K.at(0) * u - load).norm() / load.norm()) +
+                             format_printf("%.2g", (K.a * u - load).norm() / load.norm()) +
                              ")");
 
       // Its stress at every quadrature point, and Kp of that prestress.

@@ -165,16 +165,8 @@ namespace greentread
       std::vector<double>      d;
       // The three parts share the section's pattern (fe/harmonic_section.h):
       // D_n is then one pass over their values, not two sparse sums.
-      const bool shared = [&]() {
-        for (const SparseC &p : parts)
-          if (!p.isCompressed() || p.nonZeros() != parts[0].nonZeros() ||
-              !std::equal(p.outerIndexPtr(), p.outerIndexPtr() + p.outerSize() + 1,
-                          parts[0].outerIndexPtr()) ||
-              !std::equal(p.innerIndexPtr(), p.innerIndexPtr() + p.nonZeros(),
-                          parts[0].innerIndexPtr()))
-            return false;
-        return true;
-      }();
+      const bool shared =
+        fe::same_pattern(parts[0], parts[1]) && fe::same_pattern(parts[0], parts[2]);
       SparseC D = parts[0];
       for (unsigned int n = 0; n < ring.n_harmonics; ++n)
         {

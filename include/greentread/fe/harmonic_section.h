@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <complex>
 #include <map>
@@ -45,17 +46,26 @@ namespace greentread
 {
   namespace fe
   {
-    /// A matrix of the harmonic n: a + n b + n^2 c.
+    /// A matrix of the harmonic n: a + n b + n^2 c (HarmonicSection's
+    /// sums form it).
     struct QuadraticInN
     {
       Eigen::SparseMatrix<double> a, b, c;
-
-      Eigen::SparseMatrix<double>
-      at(unsigned int n) const
-      {
-        return a + double(n) * b + double(n) * double(n) * c;
-      }
     };
+
+    /// Whether two compressed sparse matrices have the same pattern: the
+    /// section's matrices do (they are assembled from the same pairs of
+    /// unknowns), and their sums are then one pass over the values.
+    template <typename Scalar>
+    bool
+    same_pattern(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y)
+    {
+      return x.isCompressed() && y.isCompressed() && x.rows() == y.rows() &&
+             x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
+             std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1,
+                        y.outerIndexPtr()) &&
+             std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr());
+    }
 
     /**
      * @brief The section of a tyre as a ring of harmonics: its matrices over
