@@ -48,11 +48,13 @@ namespace greentread
         prm.declare_entry("Number of cells", "256", dealii::Patterns::Integer(3, 100000),
                           "N, cells in the ring: the cell is the section revolved by 2 pi / N. "
                           "Powers of two suit the recursive doubling of the periodic stage.");
-        prm.declare_entry("Element degree", "2", dealii::Patterns::Integer(1, 4),
+        prm.declare_entry("Element degree", "auto",
+                          dealii::Patterns::Selection("auto|1|2|3|4"),
                           "The Lagrange degree of the elements: 1 or 2 for the 3D cell "
                           "(trilinear elements lock with nu = 0.49), 1 to 4 on the section of "
                           "'Green's functions/Method' = harmonic, so that p-refinement can be "
-                          "set against h-refinement.");
+                          "set against h-refinement. 'auto': 4 on the section (within 2% of "
+                          "the section twice as fine, doc/benchmarks.md), 2 on a 3D cell.");
         prm.declare_entry("Other constants", "", dealii::Patterns::Anything(),
                           "More ONELAB numbers for a .geo of your own, 'Name=value, "
                           "Name=value' (SI units); each becomes 'Parameters/Name'.");
@@ -81,7 +83,7 @@ namespace greentread
         bulge_height       = prm.get_double("Bulge height");
         mesh_size          = prm.get_double("Mesh size");
         n_cells            = prm.get_integer("Number of cells");
-        degree             = prm.get_integer("Element degree");
+        degree = prm.get("Element degree") == "auto" ? 0 : prm.get_integer("Element degree");
         other_constants    = prm.get("Other constants");
       }
       prm.leave_subsection();

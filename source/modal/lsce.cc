@@ -61,7 +61,8 @@ namespace greentread
                          std::to_string(first + 2 * max_order + 1) +
                          " impulse-response samples and the FRF gives " + std::to_string(n) +
                          ". Lower 'Identification/Maximum number of modes', use fewer "
-                         "'Identification/Bands', or give more lines");
+                         "'Identification/Bands', or give more lines (a smaller 'Green's "
+                         "functions/Frequency step': 15.625 Hz gives 257 lines to 4 kHz)");
       // Three equations per unknown at most: enough to average noise, few
       // enough to keep one QR cheap.
       const unsigned int rows = std::min(n - first - max_order, 3 * max_order);

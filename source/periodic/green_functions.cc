@@ -26,16 +26,18 @@ namespace greentread
         prm.declare_entry("Maximum frequency", "4000", base::RangePattern::positive("Hz"),
                           "f_max, the last line of the grid. Unit: Hz. Paper, Section 5.1: "
                           "4000 Hz.");
-        prm.declare_entry("Frequency step", "15.625", base::RangePattern::positive("Hz"),
+        prm.declare_entry("Frequency step", "500", base::RangePattern::positive("Hz"),
                           "df, the line spacing: the grid is 0, df, ..., f_max, and f_max / df "
-                          "must be a whole number. The impulse responses LSCE fits are 1 / df "
-                          "long. Unit: Hz. The default, 4000 / 256, gives 64 ms responses on "
-                          "a grid that suits FFTs.");
-        prm.declare_entry("Method", "bloch",
+                          "must be a whole number. With 'Patch model/Source' = fe modes (the "
+                          "default) the lines only check the modal synthesis (E of Eq. 50): "
+                          "the default 500 Hz gives 9. With 'identified' the LSCE fit needs "
+                          "long impulse responses (1 / df): use 15.625 Hz = 4000 / 256 (64 ms, "
+                          "as prm/tyre_green.prm). Unit: Hz.");
+        prm.declare_entry("Method", "harmonic",
                           dealii::Patterns::Selection("bloch|doubling|full-ring|harmonic"),
                           "'harmonic': the section's circumferential harmonics, for an "
                           "axisymmetric ring (no mesh along the ring; 'Number of cells' "
-                          "then only places the points). "
+                          "then only places the points; the default). "
                           "'bloch': a discrete Fourier transform over the N identical cells, "
                           "N/2 + 1 sparse cell solves per frequency (exact). "
                           "'doubling': the paper's recursive doubling of the condensed cell "

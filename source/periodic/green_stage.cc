@@ -51,9 +51,9 @@ namespace greentread
                                const PatchRequest                   &patch_request,
                                const std::optional<HarmonicOptions> &harmonic_options)
     {
-      if (!harmonic_options && geometry.degree > 2)
+      if (!harmonic_options && geometry.cell_degree() > 2)
         throw InputError("parameter 'Geometry/Element degree' = " +
-                         std::to_string(geometry.degree) +
+                         std::to_string(geometry.cell_degree()) +
                          " is not allowed with a 3D cell; allowed: 1 or 2 (up to 4 with "
                          "'Green's functions/Method' = harmonic)");
       if (harmonic_options && materials.tread_surface_mass_inward)
@@ -68,7 +68,7 @@ namespace greentread
       // keeps quadratic elements whatever the section's degree.
       start = std::chrono::steady_clock::now();
       model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials(),
-                                                 std::min(geometry.degree, 2u));
+                                                 std::min(geometry.cell_degree(), 2u));
       model->assemble();
       assembly_seconds = base::seconds_since(start);
 
@@ -88,10 +88,12 @@ namespace greentread
         {
           start   = std::chrono::steady_clock::now();
           section = std::make_unique<fe::HarmonicSection>(cell->section(), materials.materials(),
-                                                          geometry.degree);
+                                                          geometry.section_degree());
           section->inflate(inflation.pressure);
           harmonic = std::make_unique<HarmonicRing>(*section, patch, harmonic_options->tolerance,
                                                     harmonic_options->max_omega);
+          if (harmonic_options->mode_cutoff > 0.)
+            check_mode_cutoff(*harmonic, harmonic_options->mode_cutoff);
           harmonic_seconds = base::seconds_since(start);
         }
     }

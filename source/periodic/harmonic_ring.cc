@@ -142,6 +142,21 @@ namespace greentread
 
 
 
+    void
+    check_mode_cutoff(const HarmonicRing &ring, const double cutoff)
+    {
+      for (unsigned int n = ring.n_harmonics; n < ring.n_harmonics + 8; ++n)
+        if (!positive_definite(ring.section.shifted_stiffness(n, cutoff * cutoff)))
+          throw InputError("parameter 'Patch model/Mode cutoff' = " +
+                           format_number(cutoff / (2. * M_PI)) + " Hz is not allowed: harmonic " +
+                           std::to_string(n) + " has a mode below it, and the Green's functions "
+                           "sum harmonics 0 to " + std::to_string(ring.n_harmonics - 1) +
+                           " only; allowed: a lower cut-off, or a smaller 'Green's "
+                           "functions/Harmonic tolerance' (more harmonics)");
+    }
+
+
+
     HarmonicGreenSolver::HarmonicGreenSolver(const HarmonicRing &ring)
       : ring(ring)
     {}

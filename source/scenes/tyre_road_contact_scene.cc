@@ -280,8 +280,13 @@ namespace greentread
                     << green.patch.points_along * green.patch.points_across << " points, 0 to "
                     << format_number(green.max_frequency) << " Hz (" << green.n_lines()
                     << " lines)\n";
+          // With the ring's own modes, their cut-off is checked against the
+          // harmonics as soon as they are chosen, before anything is written.
+          auto harmonic = green.harmonic();
+          if (harmonic && patch_model.source == modal::PatchModelSource::fe_modes)
+            harmonic->mode_cutoff = 2. * M_PI * patch_model.mode_cutoff;
           const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch,
-                                            green.harmonic());
+                                            harmonic);
           std::cout << "  " << tyre.patch.describe() << '\n'
                     << (tyre.harmonic ? tyre.harmonic->describe() : std::string());
           const auto result = periodic::run_green_stage(tyre, green, key, h5, record, false,

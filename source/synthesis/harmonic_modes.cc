@@ -260,7 +260,9 @@ namespace greentread
                         const bool                    couple_damping)
     {
       // The harmonics with a mode below the cut-off: every rank counts them
-      // (one factorisation each, cheap beside the search).
+      // (one factorisation each, cheap beside the search). With harmonics
+      // N to N + 7 free of modes below it, the count stops before N.
+      periodic::check_mode_cutoff(ring, cutoff);
       unsigned int n_k = 0;
       for (unsigned int n = 0, empty = 0; empty < 8; ++n)
         {
@@ -269,14 +271,6 @@ namespace greentread
               ++empty;
               continue;
             }
-          if (n >= ring.n_harmonics)
-            throw InputError("parameter 'Patch model/Mode cutoff' = " +
-                             format_number(cutoff / (2. * M_PI)) + " Hz is not allowed: harmonic " +
-                             std::to_string(n) + " has a mode below it, and the Green's "
-                             "functions sum harmonics 0 to " +
-                             std::to_string(ring.n_harmonics - 1) +
-                             " only; allowed: a lower cut-off, or a smaller 'Green's "
-                             "functions/Harmonic tolerance' (more harmonics)");
           empty = 0;
           n_k   = n + 1;
         }

@@ -7,7 +7,8 @@ set(common
   --set "Geometry/Mesh size=0.04" --set "Geometry/Number of cells=32"
   --set "Green's functions/Frequency step=50" --set "Green's functions/Points along=4"
   --set "Green's functions/Points across=3" --set "Green's functions/Patch length=0.08"
-  --set "Green's functions/Deflection shape frequency=-1")
+  --set "Green's functions/Deflection shape frequency=-1"
+  --set "Green's functions/Method=bloch")
 
 function(run_checked name)
   execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORKDIR}

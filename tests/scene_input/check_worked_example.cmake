@@ -19,12 +19,13 @@ endif()
 
 execute_process(
   COMMAND ${PROGRAM} ../my_study/my_study.prm
-    # Coarse: the mesh, the Green's functions' lines and points, the grid.
+    # Coarse: the mesh, the Green's functions' lines and points (node loads
+    # on the Bloch ring, the identified model), the grid.
     --set "Print timings=false"
     --set "Geometry/Mesh size=0.04" --set "Geometry/Number of cells=32"
     --set "Green's functions/Frequency step=50" --set "Green's functions/Patch length=0.08"
     --set "Green's functions/Points along=4" --set "Green's functions/Points across=3"
-    --set "Green's functions/Point load=node"
+    --set "Green's functions/Point load=node" --set "Green's functions/Method=bloch"
     --set "Patch model/Source=identified" --set "Identification/Maximum number of modes=30"
     --set "Contact grid/Subdivisions=1"
   WORKING_DIRECTORY ${base}/elsewhere

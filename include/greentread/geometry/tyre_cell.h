@@ -45,12 +45,28 @@ namespace greentread
       double       bulge_height       = 0.5;
       double       mesh_size          = 0.008;
       unsigned int n_cells            = 256;
-      /// 'Element degree': the Lagrange degree of the elements.
-      unsigned int degree             = 2;
+      /// 'Element degree': the Lagrange degree of the elements; 0 is 'auto'
+      /// (see section_degree() and cell_degree()).
+      unsigned int degree             = 0;
       std::string  other_constants;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+
+      /// The degree of the harmonic route's 2D section: 'auto' is quartic,
+      /// the converged default (doc/benchmarks.md, converged_ring).
+      unsigned int
+      section_degree() const
+      {
+        return degree == 0 ? 4 : degree;
+      }
+
+      /// The degree of a 3D cell: 'auto' is quadratic.
+      unsigned int
+      cell_degree() const
+      {
+        return degree == 0 ? 2 : degree;
+      }
 
       /**
        * @throws InputError for an impossible geometry (layers that overlap or

@@ -60,6 +60,10 @@ namespace greentread
       double tolerance = 1e-3;
       /// The highest line [rad/s].
       double max_omega = 0.;
+      /// 'Patch model/Mode cutoff' [rad/s] when the ring's modes will be
+      /// searched, 0 otherwise: checked by check_mode_cutoff() as soon as
+      /// the harmonics are chosen, before anything is written.
+      double mode_cutoff = 0.;
     };
 
     /**
@@ -116,6 +120,18 @@ namespace greentread
       std::string
       describe() const;
     };
+
+    /**
+     * @brief Refuses a mode cut-off @p cutoff [rad/s] that the harmonics
+     * @p ring sums cannot carry: the ring's modes are searched harmonic by
+     * harmonic up to 8 in a row without one below the cut-off, and the
+     * static residual G_r of their synthesis comes from the static sum, so
+     * harmonics N to N + 7 (N = ring.n_harmonics) must have no mode below
+     * it (each checked by the inertia of K_n - cutoff^2 M).
+     * @throws InputError naming 'Patch model/Mode cutoff' otherwise.
+     */
+    void
+    check_mode_cutoff(const HarmonicRing &ring, double cutoff);
 
     /**
      * @brief GreenSolver of the `harmonic` method: g(w) by the sum over the
