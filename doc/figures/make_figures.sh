@@ -9,7 +9,7 @@
 # QUICK=1 keeps green_functions.png instead of running the tyre-green scene
 # (its 257 lines take 5 to 12 minutes).
 # converged_ring_road-A_90kmh.png comes from the converged_ring benchmark's
-# output (build/benchmark-output/converged_ring, about 90 minutes to make); it is
+# output (build/benchmark-output/converged_ring, about 70 minutes to make); it is
 # copied when that output exists and kept as it is otherwise.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
