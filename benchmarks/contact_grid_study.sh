@@ -47,12 +47,12 @@ run() {
 # force|the stress's highest band and centroid|the force's highest band.
 figures() {
   awk -v road="$2" '
-    /run road-/ { on = index($0, "run " road "_") > 0 }
+    { on = index($0, "    " road "_90kmh: ") == 1 }   # a run prints its lines with its name first
     on && /mean total force/ {
       match($0, /mean total force [0-9.]+/); force = substr($0, RSTART + 17, RLENGTH - 17)
       match($0, /points in contact [0-9]+% to [0-9]+%/); contact = substr($0, RSTART + 18, RLENGTH - 18)
     }
-    on && / ms per step/ { seconds = $1; ms = $3 }
+    on && / ms per step/ { seconds = $2; ms = $4 }
     index($0, "  " road " at 90 km/h: stress highest band") == 1 {
       match($0, /stress highest band [0-9]+ Hz \([0-9.-]+ dB\), spectral centroid [0-9]+ Hz/)
       stress = substr($0, RSTART + 20, RLENGTH - 20)

@@ -25,8 +25,9 @@ trap 'rm -rf "$work"' EXIT
 
 # ms per step of road $2 in run $1.
 per_step() {
-  awk -v road="$2" '/run road-/ { on = index($0, "run " road "_") > 0 }
-                    on && / ms per step/ { print $3; exit }' "$work/$1.log"
+  # A run prints its lines with its name first: "    road-A_90kmh: 64.6 s, 20.7 ms per step".
+  awk -v road="$2" 'index($0, "    " road "_") == 1 && / ms per step/ { print $4; exit }' \
+    "$work/$1.log"
 }
 
 # Largest |level difference| [dB] between runs $1 and $2, road $3, spectrum kind $4.

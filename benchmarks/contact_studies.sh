@@ -29,7 +29,8 @@ run() { run_saved "$@"; }
 summary() {
   local log=$work/$1.log
   local seconds contact force failed pen
-  seconds=$(grep -oE '^    [0-9.]+ s, [0-9.]+ ms per step' "$log" | tail -1 | awk '{print $1}')
+  seconds=$(grep -oE '^    ([^ ]+: )?[0-9.]+ s, [0-9.]+ ms per step' "$log" | tail -1 |
+            awk '{print $(NF - 5)}')
   contact=$(grep -oE 'points in contact [0-9]+% to [0-9]+%' "$log" | tail -1 | sed 's/points in contact //')
   force=$(grep -oE 'mean total force [0-9.]+ N \(static [0-9.e+-]+ N\)' "$log" | tail -1 |
           sed 's/mean total force //')
