@@ -260,8 +260,9 @@ namespace greentread
                         const bool                    couple_damping)
     {
       // The harmonics with a mode below the cut-off: every rank counts them
-      // (one factorisation each, cheap beside the search). With harmonics
-      // N to N + 7 free of modes below it, the count stops before N.
+      // (one factorisation each, cheap beside the search). Harmonics N to
+      // N + 7 have none (checked first), so the count ends by N + 7 and every
+      // harmonic it keeps is one the Green's functions sum (n_k <= N).
       periodic::check_mode_cutoff(ring, cutoff);
       unsigned int n_k = 0;
       for (unsigned int n = 0, empty = 0; empty < 8; ++n)
