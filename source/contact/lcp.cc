@@ -153,6 +153,8 @@ namespace greentread
             {
               result.iterations  = iteration;
               result.converged   = true;
+              for (Eigen::Index i = 0; i < n; ++i)
+                result.projected = std::max(result.projected, -m * z[i] / scale);
               result.z = z.cwiseMax(0.);
               product(result.z, result.w);
               scale           = std::max(q_norm, m * result.z.lpNorm<Eigen::Infinity>());

@@ -129,6 +129,7 @@ namespace greentread
       report.lcp_matrix = matrix_free ? nullptr : &psi.u[2];
       report.lcp_q      = std::move(q);
       report.lcp_z      = std::move(lcp.z);
+      report.lcp_projected = lcp.projected;
       return report;
     }
 
@@ -258,6 +259,7 @@ namespace greentread
       report.lcp_matrix = &M;
       report.lcp_q      = std::move(q);
       report.lcp_z      = std::move(lcp.z);
+      report.lcp_projected = lcp.projected;
       return report;
     }
 

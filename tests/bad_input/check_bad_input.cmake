@@ -1,8 +1,13 @@
 # Run PROGRAM with ARGS in a fresh WORKDIR, writing to out/ unless ARGS sets
 # another output directory (overrides apply in order, the file first), and
-# check: non-zero exit, standard error matching EXPECT, no file left in out/.
+# check: non-zero exit, standard error matching EXPECT, nothing left in
+# WORKDIR (an empty out/ at most), and the file UNCHANGED, if given, as it
+# was: for a case whose output directory lies elsewhere, what it names.
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
+if(UNCHANGED)
+  file(SHA256 ${UNCHANGED} unchanged_before)
+endif()
 execute_process(
   COMMAND ${PROGRAM} --set "Output directory=out" ${ARGS}
   WORKING_DIRECTORY ${WORKDIR}
@@ -19,8 +24,15 @@ endif()
 if(NOT err MATCHES "^greentread: error: ")
   message(FATAL_ERROR "the message does not start with 'greentread: error: ':\n${err}")
 endif()
-file(GLOB_RECURSE left ${WORKDIR}/out/*)
+file(GLOB_RECURSE left LIST_DIRECTORIES true ${WORKDIR}/*)
+list(REMOVE_ITEM left ${WORKDIR}/out)
 if(left)
   message(FATAL_ERROR "output was left behind: ${left}")
+endif()
+if(UNCHANGED)
+  file(SHA256 ${UNCHANGED} unchanged_after)
+  if(NOT unchanged_after STREQUAL unchanged_before)
+    message(FATAL_ERROR "${UNCHANGED} was changed")
+  endif()
 endif()
 message(STATUS "exit ${status}: ${err}")

@@ -7,6 +7,7 @@
 // a synthetic patch (test_patch_contact.cc) and on a real tyre
 // (test_tyre_contact.cc).
 
+#include "complementarity.h"
 #include "frequency_synthesis.h"
 
 #include <greentread/contact/patch_contact.h>
@@ -81,7 +82,16 @@ namespace test
   /// What check_run() measured of one rolling run.
   struct RunCheck
   {
-    /// Most negative raw LCP force (before any clamp), relative to the largest.
+    /// The step's LCP measured here from its matrix, demand and force (the
+    /// worst over the steps, complementarity.h): the gap's lowest value and
+    /// the largest complementarity residual.
+    double lcp_gap = 0., lcp_complementarity = 0.;
+    /// What the projection removed from a converged LCP iterate, at worst
+    /// (LcpResult::projected).
+    double projected = 0.;
+    /// Most negative mean contact force of a step that the program rebuilds
+    /// from the load shapes and their magnitudes (RollingStep::force),
+    /// relative to the largest.
     double negative_force = 0.;
     /// Largest penetration max(d - u) of the synthesised displacement, and the
     /// largest |u - d| of a point that carries a force, relative to the
@@ -106,9 +116,17 @@ namespace test
     RunCheck                     c;
     std::vector<Eigen::VectorXd> q(1), d(1);
     roll([&](const greentread::contact::RollingStep &s) {
-      const double largest = std::max(s.report.lcp_z.maxCoeff(), 1e-300);
-      c.negative_force     = std::min(c.negative_force, s.report.lcp_z.minCoeff() / largest);
-      q.push_back(s.report.lcp_z.cwiseMax(0.));
+      const double largest = std::max(s.force.maxCoeff(), 1e-300);
+      c.negative_force     = std::min(c.negative_force, s.force.minCoeff() / largest);
+      if (s.report.lcp_matrix)
+        {
+          const Complementarity lcp =
+            complementarity(*s.report.lcp_matrix, s.report.lcp_q, s.report.lcp_z);
+          c.lcp_gap             = std::min(c.lcp_gap, lcp.gap);
+          c.lcp_complementarity = std::max({c.lcp_complementarity, lcp.natural, lcp.product});
+        }
+      c.projected = std::max(c.projected, s.report.lcp_projected);
+      q.push_back(s.report.lcp_z);
       d.push_back(s.d);
     }, q[0]);
     const auto u     = synthesise_displacements(model, dt, q);
@@ -131,8 +149,11 @@ namespace test
    * texture five times rougher (many points lose contact), 130 km/h, a tyre
    * that barely touches (0.01 N: some steps lose all contact), dt = 20 road
    * samples and dt = 1/20 of one (over @p fine_distance). Each run must
-   * converge at every step, have no raw LCP force below -1e-12 of the
-   * largest, keep the synthesised displacement on or above the road and
+   * converge at every step, have every step's LCP complementary and its gap
+   * non-negative when measured here from its matrix (to the pivoting
+   * solver's tolerance, 1e-10 of the scale, twice: once for the accepted
+   * iterate, once for its projection), have no mean contact force of a step
+   * below -1e-12 of the largest, keep the synthesised displacement on or above the road and
    * every loaded point on it (to @p tolerance of the displacement change),
    * and have a finite mean force.
    */
@@ -176,12 +197,18 @@ namespace test
                                   << 100. * s.min_contact_fraction << "% to "
                                   << 100. * s.max_contact_fraction << "%, mean force " << mean
                                   << " N (static " << c.run.load << " N), failed steps "
-                                  << s.failed_steps << "; raw LCP force down to "
+                                  << s.failed_steps << "; LCP measured here: gap down to "
+                                  << checked.lcp_gap << ", complementarity "
+                                  << checked.lcp_complementarity << ", projection "
+                                  << checked.projected << "; step force down to "
                                   << checked.negative_force
                                   << " of the largest; synthesised displacement: penetration "
                                   << checked.penetration << ", loaded points off the road "
                                   << checked.gap_in_contact << " of the displacement change");
         BOOST_TEST(s.failed_steps == 0u, "first failure: " << s.first_failure);
+        BOOST_TEST(checked.lcp_gap >= -2e-10);
+        BOOST_TEST(checked.lcp_complementarity <= 2e-10);
+        BOOST_TEST(checked.projected <= 1e-10);
         BOOST_TEST(checked.negative_force >= -1e-12);
         BOOST_TEST(checked.penetration <= tolerance);
         BOOST_TEST(checked.gap_in_contact <= tolerance);

@@ -57,13 +57,6 @@ namespace
         residue_error = std::max(residue_error, residue);
       }
   }
-
-  void
-  check_stable(const modal::Identification &id)
-  {
-    for (const auto &term : id.model.terms())
-      BOOST_REQUIRE(term.lambda.real() < 0.);
-  }
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(identification)
@@ -88,7 +81,6 @@ BOOST_AUTO_TEST_CASE(single_mode_recovered_to_1e_10)
       BOOST_TEST(id.n_modes == 1u);
       BOOST_TEST(pe < 1e-10);
       BOOST_TEST(re < 1e-10);
-      check_stable(id);
     }
 }
 
@@ -109,7 +101,6 @@ BOOST_AUTO_TEST_CASE(ten_modes_two_within_one_percent)
   BOOST_TEST(pe < 1e-8);
   BOOST_TEST(re < 1e-6);
   BOOST_TEST(id.error < 1e-6);
-  check_stable(id);
 }
 
 BOOST_AUTO_TEST_CASE(very_light_and_heavy_damping)
@@ -133,7 +124,6 @@ BOOST_AUTO_TEST_CASE(very_light_and_heavy_damping)
         BOOST_TEST(re < 1e-6);
         BOOST_TEST(id.error < 1e-6);
       }
-      check_stable(id);
     }
 }
 
@@ -162,7 +152,6 @@ BOOST_AUTO_TEST_CASE(real_pole)
         BOOST_TEST(pe < 1e-8);
         BOOST_TEST(re < 1e-6);
       }
-      check_stable(id);
     }
 }
 
@@ -207,7 +196,6 @@ BOOST_AUTO_TEST_CASE(modes_above_f_max)
         for (const auto &t : id.model.terms())
           BOOST_TEST(std::abs(t.lambda.imag()) / (2. * M_PI) < 4000.);
       }
-      check_stable(id);
     }
   BOOST_TEST(error[1] < 0.5 * error[0]);
 }
@@ -239,7 +227,6 @@ BOOST_AUTO_TEST_CASE(noise_at_40_dB)
   BOOST_TEST(id.error < 0.05);
   // The fit is about as good as the truth itself on these noisy data.
   BOOST_TEST(id.error < 1.5 * modal::modal_error(frf, truth));
-  check_stable(id);
 }
 
 BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
@@ -290,7 +277,6 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
                          << " (LSCE alone " << modal::modal_error(clean, plain.model)
                          << "), pole error " << pe << ", refinement "
                          << id.polish.iterations << " iterations");
-      check_stable(id);
     }
   BOOST_TEST(worst < 0.10);
   BOOST_TEST(worst_pole < 0.01);
@@ -311,7 +297,6 @@ BOOST_AUTO_TEST_CASE(pure_noise_is_reported_as_a_poor_fit)
                                           << id.poles.spurious);
   BOOST_TEST(std::isfinite(id.error));
   BOOST_TEST(id.error > 0.5);
-  check_stable(id);
 }
 
 BOOST_AUTO_TEST_CASE(error_of_eq_50_by_hand)

@@ -40,10 +40,9 @@ BOOST_AUTO_TEST_CASE(branches_follow_the_impact_time)
       BOOST_TEST_CONTEXT("tau / dt = " << c.tau_over_dt)
       {
         BOOST_TEST((step.branch == c.expected));
-        BOOST_TEST(step.load.impulse_start >= 0.);
-        BOOST_TEST(step.load.start >= 0.);
-        BOOST_TEST(step.load.end >= 0.);
-        BOOST_TEST(step.load.impulse_end >= 0.);
+        // The loads are stored non-negative (kinematic_contact.cc clamps
+        // them), so their sign is not asserted: that the clamp took nothing
+        // away shows in both end conditions being met.
         BOOST_TEST(std::abs(r.u - du) < 1e-12 * du);
         BOOST_TEST(std::abs(r.v - dv) < 1e-12 * dv);
         // The impulse delivered is the momentum to remove, M dv, to first order.

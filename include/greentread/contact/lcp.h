@@ -111,6 +111,11 @@ namespace greentread
       /// Natural-map residual \f$\max_i|\min(m z_i, w_i)|/s\f$ of (z, w),
       /// see the file documentation.
       double residual = 0.;
+      /// What the projection of a converged iterate removed:
+      /// \f$\max_i m z_i^- / s\f$ before its small negative entries were set
+      /// to 0 (at most the tolerance \f$\tau\f$ by the convergence test; 0
+      /// for projected CG, whose iterates never leave z >= 0).
+      double projected = 0.;
       /// Why the solve failed; empty on success.
       std::string message;
     };

@@ -47,6 +47,8 @@ namespace greentread
       /// and is valid until its next step.
       const Eigen::MatrixXd *lcp_matrix = nullptr;
       Eigen::VectorXd        lcp_q, lcp_z;
+      /// LcpResult::projected of that LCP.
+      double lcp_projected = 0.;
     };
 
     /**
