@@ -6,7 +6,8 @@
 //
 // The patch model is the default tyre's identified one (--model
 // output/tyre_road_contact/patch_model.h5, written by prm/tyre_road_contact.prm
-// with --set "Patch model/Source=identified") or, without one, a
+// with --set "Patch model/Source=identified" and, as it is not passive,
+// --set "Patch model/Allow non-passive=true") or, without one, a
 // synthetic model of the same size: 10 x 12 points and 120 modes from 100 Hz
 // to 4 kHz with imaginary residues and a local compliance.
 //

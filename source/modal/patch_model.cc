@@ -62,6 +62,13 @@ namespace greentread
                           "to points spread over the patch, are identified for poles, besides "
                           "the summed driving points and the summed response to a uniform "
                           "pressure.");
+        prm.declare_entry(
+          "Allow non-passive", "false", dealii::Patterns::Bool(),
+          "Whether the rolling scene may use a patch model that is not passive: the smallest "
+          "eigenvalue of -Im g over its largest, measured at every line of the Green's "
+          "functions, below -1e-9. Such a model (the identified one can be) may put energy "
+          "into the contact. 'false': refused, with the figure; 'true': rolled, with a "
+          "warning that names the figure. Not part of the modal stage's key.");
       }
       prm.leave_subsection();
     }
@@ -81,6 +88,7 @@ namespace greentread
         static_weight        = prm.get_double("Static weight");
         pole_merge_tolerance = prm.get_double("Pole merge tolerance");
         reference_transfers  = prm.get_integer("Reference transfers");
+        allow_non_passive    = prm.get_bool("Allow non-passive");
       }
       prm.leave_subsection();
     }

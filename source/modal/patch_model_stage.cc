@@ -23,7 +23,8 @@ namespace greentread
           << '\n';
       for (const auto &[path, value] :
            base::ParameterRecord::from(prm, "", {"Identification", "Patch model"}).entries)
-        key << path << " = " << value << '\n';
+        if (path != "Patch model/Allow non-passive") // what the scene does with the model
+          key << path << " = " << value << '\n';
       return key.str();
     }
 

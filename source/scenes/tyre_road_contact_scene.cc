@@ -8,6 +8,7 @@
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
+#include <greentread/modal/passivity.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/mode_stage.h>
@@ -178,6 +179,9 @@ namespace greentread
                   << grid.subdivisions << " x " << grid.subdivisions
                   << " per Green's-function rectangle, the tread as a "
                   << format_number(1e3 * geometry.tread_thickness) << " mm layer below it)\n";
+      std::cout << "  the contact solved by "
+                << (grid.matrix_free ? "projected CG (matrix-free)" : "block principal pivoting")
+                << " ('Contact grid/Solver' = " << contact_grid.solver << ")\n";
       const analysis::PatchLattice lattice(grid.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
       const Eigen::MatrixXd        G0    = synthesis::static_line(G);
@@ -307,10 +311,17 @@ namespace greentread
                                   const base::ParameterRecord          &record) const
     {
       if (patch_model.source == modal::PatchModelSource::identified)
-        return modal::patch_model_stage(G, identification, patch_model,
-                                        directory / "patch_model.h5",
-                                        modal::patch_model_stage_key(prm, green_key), record,
-                                        global.reuse, global.print_timings);
+        {
+          modal::PatchModel model = modal::patch_model_stage(
+            G, identification, patch_model, directory / "patch_model.h5",
+            modal::patch_model_stage_key(prm, green_key), record, global.reuse,
+            global.print_timings);
+          const modal::Passivity passivity = modal::measure_passivity(model, G.df, G.n_lines - 1);
+          modal::print_passivity(passivity, "the identified patch model");
+          modal::check_passivity(passivity, patch_model.allow_non_passive,
+                                 "the identified patch model");
+          return model;
+        }
       const synthesis::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
                                              patch_model.mode_cutoff, green.harmonic()};
       // The modes' part at every line, when the stage computes it (not
@@ -322,6 +333,8 @@ namespace greentread
       analysis::write_dispersion(directory, synthesis.dispersion, patch_model.mode_cutoff, record);
       const synthesis::SynthesisErrors errors = synthesis::compare(synthesis, G, &lines);
       analysis::report_synthesis(directory, synthesis, errors, record);
+      modal::check_passivity({errors.passivity, errors.passivity_frequency, G.n_lines - 1},
+                             patch_model.allow_non_passive, "the patch model of the ring's modes");
       const unsigned int n_p = G.n_points();
       Eigen::MatrixXd    E(n_p, n_p);
       for (unsigned int i = 0; i < n_p; ++i)

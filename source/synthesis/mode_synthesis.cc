@@ -391,7 +391,7 @@ namespace greentread
       const unsigned int           n_threads = line_threads(L);
       std::vector<Eigen::MatrixXd> difference(n_threads, Eigen::MatrixXd::Zero(P, P)),
         size = difference;
-      std::vector<double> passivity(n_threads, 1.);
+      std::vector<double> passivity(n_threads, 1.), passivity_omega(n_threads, 0.);
       for_each_line(0, L, n_threads, "compare", [&](const unsigned int l, const unsigned int t) {
         const double           weight  = (l == 0 || l + 1 == L) ? 0.5 : 1.;
         const double           omega   = 2. * M_PI * l * direct.df;
@@ -407,17 +407,25 @@ namespace greentread
         const Eigen::MatrixXd loss = -0.5 * (g_model.imag() + g_model.imag().transpose());
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(loss, Eigen::EigenvaluesOnly);
         const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
-        if (largest > 0.)
-          passivity[t] = std::min(passivity[t], eigen.eigenvalues().minCoeff() / largest);
+        if (largest > 0. && eigen.eigenvalues().minCoeff() / largest < passivity[t])
+          {
+            passivity[t]       = eigen.eigenvalues().minCoeff() / largest;
+            passivity_omega[t] = omega;
+          }
       });
       for (unsigned int t = 1; t < n_threads; ++t)
         {
           difference[0] += difference[t];
           size[0] += size[t];
-          passivity[0] = std::min(passivity[0], passivity[t]);
+          if (passivity[t] < passivity[0])
+            {
+              passivity[0]       = passivity[t];
+              passivity_omega[0] = passivity_omega[t];
+            }
         }
       SynthesisErrors errors;
-      errors.passivity = passivity[0];
+      errors.passivity           = passivity[0];
+      errors.passivity_frequency = passivity_omega[0] / (2. * M_PI);
       errors.pair_error.resize(std::size_t(P) * P);
       for (unsigned int i = 0; i < P; ++i)
         for (unsigned int j = 0; j < P; ++j)

@@ -3,9 +3,29 @@
 # 2. the output directory, copied elsewhere and used from another working
 #    directory with another speed (50 km/h) and another path to the same .geo file,
 #    reuses both saved stages and says so.
+# 0. the identified model of this tyre is not passive: with 'Patch
+#    model/Allow non-passive = false' the scene refuses to roll it, with the
+#    figure and the parameter named, exit 2 and no run's output; coarse.prm
+#    allows it, and the run then warns with the figure.
 # The first run's patch_model.h5 is the fixture of unit/tyre_contact.
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR}/elsewhere)
+
+execute_process(
+  COMMAND ${PROGRAM} ${SOURCE_DIR}/coarse.prm
+    --set "Output directory=${WORKDIR}/first"
+    --set "Geometry/Geometry file=${GEO}"
+    --set "Patch model/Allow non-passive=false"
+  WORKING_DIRECTORY ${WORKDIR}
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX REPLACE "\n" " " err_line "${err}")
+if(NOT status EQUAL 2 OR NOT err_line MATCHES "parameter 'Patch model/Allow non-passive' = false: +the +identified +patch +model +is +not +passive: +the +smallest +eigenvalue +of +-Im +g +over +its +largest +is +-[0-9.e-]+ at [0-9]+ Hz")
+  message(FATAL_ERROR "a patch model that is not passive was not refused (${status}):\n${out}\n${err}")
+endif()
+file(GLOB rolled ${WORKDIR}/first/history_* ${WORKDIR}/first/spectr*)
+if(rolled)
+  message(FATAL_ERROR "the refused run left a run's output: ${rolled}")
+endif()
 
 execute_process(
   COMMAND ${PROGRAM} ${SOURCE_DIR}/coarse.prm
@@ -17,6 +37,9 @@ if(NOT status EQUAL 0)
   message(FATAL_ERROR "the coarse pipeline failed (${status}):\n${out}\n${err}")
 endif()
 message(STATUS "${out}")
+if(NOT err MATCHES "greentread: warning: the identified patch model is not passive: the smallest eigenvalue of -Im g over its largest is -[0-9.e-]+ at [0-9]+ Hz")
+  message(FATAL_ERROR "no warning that the patch model is not passive:\n${err}")
+endif()
 foreach(file green_functions.h5 patch_model.h5 modal_errors.csv
     road_road-A_spectrum.csv road_road-A_spectrum.png road_road-A_texture.png
     history_road-A_90kmh.csv history_road-A_90kmh.png contact_road-A_90kmh.pvd

@@ -105,6 +105,8 @@ namespace greentread
       double pole_merge_tolerance = 0.005;
       /// Transfers from the centre point identified for poles.
       unsigned int reference_transfers = 8;
+      /// Roll a model that is not passive (modal/passivity.h), with a warning.
+      bool allow_non_passive = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

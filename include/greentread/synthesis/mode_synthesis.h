@@ -247,6 +247,8 @@ namespace greentread
       /// The smallest eigenvalue of -Im g_model over its largest, over all
       /// lines above 0 Hz: >= 0 (to round-off) for a passive model.
       double passivity = 0.;
+      /// The line of that smallest value [Hz].
+      double passivity_frequency = 0.;
     };
 
     /**
