@@ -1,0 +1,46 @@
+# The main job's own path, end to end: the program with its built-in default
+# scene and every default of the main job (the harmonic ring and its
+# quartic section, tributary areas, the ring's own modes, the contact grid
+# at 8 subdivisions, projected CG), on one road, one speed and a short
+# distance: a 5 um sinusoid of 40 mm at 90 km/h under 3000 N, where the
+# contact is sustained. WORKDIR is kept: its saved stages are the fixture of
+# unit/main_job_path. Checked here, from what the run prints:
+# - the route: the harmonic ring, the ring's modes, 7680 contact points by
+#   projected CG, every step converged;
+# - the synthesis' E of Eq. (50) against the run's own direct lines, every
+#   pair (bound WORST_BOUND, %);
+# - the patch model passive (its smallest eigenvalue of -Im g over its
+#   largest not negative beyond round-off).
+# unit/main_job_path checks the outputs against physics.
+file(REMOVE_RECURSE ${WORKDIR})
+execute_process(
+  COMMAND ${PROGRAM}
+    --set "Output directory=${WORKDIR}"
+    --set "Geometry/Geometry file=${GEO}"
+    --set "Road texture/Roads=sinusoid"
+    --set "Road/Sinusoid/Amplitude=0.000005"
+    --set "Road/Sinusoid/Wavelength=0.04"
+    --set "Rolling/Speeds (kph)=90"
+    --set "Rolling/Static load=3000"
+    --set "Rolling/Distance=1.1"
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(WRITE ${WORKDIR}/screen.txt "${out}${err}")
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the main job's path failed (${status}):\n${out}\n${err}")
+endif()
+message(STATUS "${out}")
+
+function(require pattern what)
+  if(NOT out MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}: no '${pattern}' in the output")
+  endif()
+endfunction()
+require("harmonic ring: the section's [0-9]+ unknowns per harmonic \\(degree 4\\)" "not the harmonic ring on its quartic section")
+require("Stage modal: the ring's own modes" "not the ring's own modes")
+require("= 7680 points, rectangles 0.750 x 0.833 mm" "not the contact grid of 8 subdivisions")
+require("the contact solved by projected CG" "not the projected CG solver")
+require("steps the contact solve did not converge: 0," "a contact step did not converge")
+
+# E over the 14,400 pairs of 120 points, and passivity.
+include(${CMAKE_CURRENT_LIST_DIR}/synthesis_figures.cmake)
+check_synthesis_figures("${out}" 14400 ${WORST_BOUND})
