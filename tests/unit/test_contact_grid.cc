@@ -143,9 +143,11 @@ BOOST_AUTO_TEST_CASE(split_against_the_layer_on_the_fine_grid)
       // A uniform force has no variation within the cells: exact but for
       // the two layer series' own periods (whole numbers of their
       // rectangles) and cut-offs.
-      BOOST_TEST(std::abs(energy_uniform) < 1e-3);
-      // The cross terms: under a tenth of a driving point.
-      BOOST_TEST(driving < 0.1);
+      // Measured 2e-4.
+      BOOST_TEST(std::abs(energy_uniform) < 6e-4);
+      // The cross terms, which the split leaves out: measured 3e-5 of a
+      // driving point at s = 2 and 7.3% at s = 4.
+      BOOST_TEST(driving < (s == 2 ? 1e-4 : 0.2));
     }
 }
 
@@ -211,7 +213,8 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
                      << worst / peak << " of the peak " << peak << " N, contact "
                      << summary.min_contact_fraction << " to " << summary.max_contact_fraction);
   BOOST_TEST(summary.max_contact_fraction > summary.min_contact_fraction);
-  BOOST_TEST(worst < 1e-9 * peak);
+  // Measured 2e-16 of the peak: round-off.
+  BOOST_TEST(worst < 1e-14 * peak);
 }
 
 BOOST_AUTO_TEST_CASE(warm_started_lcp_of_a_fine_grid_against_siconos)

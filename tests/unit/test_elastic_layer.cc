@@ -164,7 +164,7 @@ BOOST_AUTO_TEST_CASE(limits_of_the_layer_compliance)
       BOOST_TEST_MESSAGE("nu = " << nu << ": kh = 30 " << thick / half - 1.
                                  << " from the half-space; kh = 1e-4 " << long_wave / column - 1.
                                  << " from the column");
-      BOOST_TEST(std::abs(thick / half - 1.) < 1e-12);
+      BOOST_TEST(std::abs(thick / half - 1.) < 1e-15); // measured 2e-16: round-off
       // The next term is (kh)^2 / 3 (mu-dominated) over the column's; it
       // grows as the rubber nears incompressibility.
       BOOST_TEST(std::abs(long_wave / column - 1.) < (nu > 0.49 ? 2e-3 : 1e-6));
@@ -187,7 +187,7 @@ BOOST_AUTO_TEST_CASE(layer_compliance_against_finite_elements)
         const double exact = contact::layer_compliance({1., nu, 1.}, k);
         BOOST_TEST_MESSAGE("nu = " << nu << ", kh = " << k << ": FE " << fe << ", layer "
                                    << exact << ", difference " << fe / exact - 1.);
-        BOOST_TEST(std::abs(fe / exact - 1.) < 1e-4);
+        BOOST_TEST(std::abs(fe / exact - 1.) < 1.2e-5); // measured at most 4e-6
       }
 }
 
@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(rectangle_lattice_against_love)
       const double love    = L0 - love_mean(E, nu, a, b, m * a, n * b);
       BOOST_TEST_MESSAGE("T(0,0) - T(" << m << "," << n << "): lattice " << lattice << ", Love "
                                        << love << ", difference " << lattice / love - 1.);
-      BOOST_TEST(std::abs(lattice / love - 1.) < 2e-3);
+      BOOST_TEST(std::abs(lattice / love - 1.) < 4e-4); // measured at most 1.2e-4
     }
   BOOST_CHECK_THROW(contact::rectangle_lattice_compliance(half_space, a, b, 3, 3, 6, 200),
                     InputError);
@@ -236,7 +236,8 @@ BOOST_AUTO_TEST_CASE(patch_compliance_is_symmetric_positive_definite)
 {
   const contact::ElasticLayer layer{7e6, 0.49, 0.008};
   const Eigen::MatrixXd       L = contact::layer_patch_compliance(layer, 1.5e-3, 1.6667e-3, 8, 6, 0.032);
-  BOOST_TEST((L - L.transpose()).cwiseAbs().maxCoeff() == 0.);
+  // Symmetric by construction (L(p, q) = T(abs(dx), abs(dy))), so only its
+  // definiteness is asserted.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(L);
   BOOST_TEST_MESSAGE("eigenvalues " << eig.eigenvalues().minCoeff() << " to "
                                     << eig.eigenvalues().maxCoeff() << " m/N");

@@ -108,7 +108,7 @@ BOOST_AUTO_TEST_CASE(thick_cylinder_under_pressure_with_rotational_periodicity)
   BOOST_TEST_MESSAGE("cylinder: max |u_r - Lame| / u_r = " << error / largest
                                                           << ", max |u_theta| / u_r = "
                                                           << tangential / largest);
-  BOOST_TEST(error < 1e-4 * largest);
+  BOOST_TEST(error < 7e-7 * largest); // measured 2.4e-7
   BOOST_TEST(tangential < 1e-6 * largest);
   // The thin-wall formulas, u_r = p R^2 / (E t) and hoop stress p R / t,
   // hold to O(t / R) = 4%: the program's own displacement at mid-wall and
@@ -261,7 +261,8 @@ BOOST_AUTO_TEST_CASE(tyre_cell_masses_rigid_motions_and_ring_modes)
       BOOST_REQUIRE(volume.has_value());
       const double exact = materials.at(id).density * *volume;
       BOOST_TEST_CONTEXT(materials.at(id).name)
-      BOOST_TEST(std::abs(mass / exact - 1.) < 1e-8);
+      // Measured 7.6e-10: the quadratic mapping of the arcs.
+      BOOST_TEST(std::abs(mass / exact - 1.) < 2.5e-9);
     }
   // K times a rigid translation vanishes.
   const auto nodes = fe::nodes(model.dof_handler(), model.mapping());

@@ -118,7 +118,8 @@ BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_st
       BOOST_TEST(d_high.force_band < 1.);
       BOOST_TEST(d_high.stress_band < 1.);
       BOOST_TEST(d_high.force < 0.25);
-      BOOST_TEST(std::abs(mean(fine.force) / mean(reference.force) - 1.) < 0.01);
+      // Measured 0.25%.
+      BOOST_TEST(std::abs(mean(fine.force) / mean(reference.force) - 1.) < 0.0075);
       BOOST_TEST(d_low.force > 2. * d_high.force);
       BOOST_TEST(d_low.force_band > 2. * d_high.force_band);
     }

@@ -570,7 +570,9 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
             nearest = std::min(nearest, std::abs(std::abs(term.lambda) / w - 1.));
           BOOST_TEST_MESSAGE("g_" << i << j << ", mode at " << f[k] << " Hz: LSCE within "
                                   << nearest << " (E of the fit " << id.error << ")");
-          BOOST_TEST(nearest < 1e-3);
+          // Measured 5e-14: round-off of an exact synthesis, which differs
+          // between machines, so 20 times that.
+          BOOST_TEST(nearest < 1e-12);
           ++tested;
         }
       BOOST_TEST(tested >= 3u);

@@ -2,6 +2,7 @@
 // 1-DoF exact solution, the direct convolution, the static contact solution
 // and the momentum balance, and run on stiff and extreme cases.
 
+#include "complementarity.h"
 #include "patch_rolling.h"
 #include "test_helpers.h"
 
@@ -244,7 +245,7 @@ BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
   const auto summary = contact::roll(*conv, demand, static_cast<unsigned int>(end_time / dt),
                                      Eigen::VectorXd(), observe);
   BOOST_TEST_MESSAGE("one point, one mode: max |u - u_exact| = " << error << " m");
-  BOOST_TEST(error < 1e-3 * 5e-3); // the 1-DoF scene's own acceptance
+  BOOST_TEST(error < 2.5e-9); // measured 7.9e-10 m, as the 1-DoF scene
   BOOST_TEST(std::abs(summary.impulse - exact.impulse(0., end_time)) <
              1e-6 * exact.impulse(0., end_time));
   BOOST_TEST(summary.failed_steps == 0u);
@@ -263,7 +264,9 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree)
   check_converged(c.direct);
   BOOST_TEST(c.modal.min_contact_fraction < 1.); // the sinusoid lifts points off
   BOOST_TEST(c.modal.max_contact_fraction > 0.);
-  BOOST_TEST(c.difference < 1e-9 * c.peak);
+  // Measured 1.4e-14 of the peak: round-off, which differs between
+  // machines and BLAS kernels, so 7 times that.
+  BOOST_TEST(c.difference < 1e-13 * c.peak);
 }
 
 BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
@@ -273,11 +276,17 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
   const Eigen::MatrixXd G0    = model.static_compliance();
   const auto eq = contact::solve_static_contact(G0, -tread, 100., 0.);
   BOOST_TEST(std::abs(eq.q.sum() - 100.) < 1e-9 * 100.);
-  BOOST_TEST(eq.q.minCoeff() >= 0.);
-  // Complementarity of the static solution itself.
-  const Eigen::VectorXd gap = G0 * eq.q - (-tread.array() + eq.delta).matrix();
-  BOOST_TEST(gap.minCoeff() > -1e-12);
-  BOOST_TEST(std::abs(gap.dot(eq.q)) < 1e-12 * 100.);
+  // Complementarity of the static solution, measured here from G0, the
+  // demand and the force (the force itself is non-negative by construction:
+  // the solver returns its projection). Bounds: the pivoting solver's
+  // tolerance, 1e-10 of the scale.
+  const test::Complementarity c =
+    test::complementarity(G0, -(-tread.array() + eq.delta).matrix(), eq.q);
+  BOOST_TEST_MESSAGE("static contact: gap down to " << c.gap << ", complementarity "
+                                                    << c.natural << " and " << c.product);
+  BOOST_TEST(c.gap >= -2e-10);
+  BOOST_TEST(c.natural <= 2e-10);
+  BOOST_TEST(c.product <= 2e-10);
   BOOST_TEST(eq.n_contact < model.n_points()); // the tread's curvature lifts the ends
 
   auto conv = convolution::make_modal_patch_convolution(model, 1e-5);
@@ -291,7 +300,7 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
   };
   const auto s = contact::roll(*conv, demand, 5000, eq.q, observe);
   BOOST_TEST_MESSAGE("flat road from equilibrium: largest force change " << drift << " N");
-  BOOST_TEST(drift < 1e-8 * 100.);
+  BOOST_TEST(drift < 5e-14); // measured 5e-15 N of 100 N: round-off, which varies by machine
   check_converged(s);
 }
 
@@ -407,7 +416,8 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
   test::RollingCase base; // 100 N over 30 cm at 90 km/h, one road sample per step
   base.load     = 100.;
   base.distance = 0.3;
-  test::check_extreme_cases(model, tread, texture, base, 0.3, 1e-5);
+  // Measured at most 1.2e-7 of the displacement change (dt = 20 samples).
+  test::check_extreme_cases(model, tread, texture, base, 0.3, 3.5e-7);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_refused)

@@ -90,7 +90,8 @@ BOOST_AUTO_TEST_CASE(lcp_instances_of_the_rolling_tyre_match_siconos)
         const auto             r = test::siconos_lemke(M, s.report.lcp_q);
         BOOST_TEST_REQUIRE(r.info == 0, "Siconos failed at step " << s.step);
         const double difference = test::relative_difference(s.report.lcp_z, r.z, M, s.report.lcp_q);
-        BOOST_TEST(difference <= 1e-8, "step " << s.step);
+        // Measured 4e-16: round-off, which differs between machines.
+        BOOST_TEST(difference <= 1e-14, "step " << s.step);
         for (Eigen::Index j = 0; j < r.z.size(); ++j)
           BOOST_TEST((s.report.lcp_z[j] > 0.) == (r.z[j] > 1e-12 * r.z.maxCoeff()),
                      "step " << s.step << ", point " << j);
@@ -132,7 +133,8 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree_on_the_tyre)
     }
   BOOST_TEST_MESSAGE(modal.size() << " steps: max |q_modal - q_direct| " << difference
                                   << " N of " << scale << " N");
-  BOOST_TEST(difference <= 1e-9 * scale);
+  // Measured 1.5e-14 of the peak: round-off, which differs between machines.
+  BOOST_TEST(difference <= 1e-13 * scale);
 }
 
 BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there_on_the_tyre)
@@ -159,8 +161,9 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound_on_the_tyre)
   // The extremes of patch_rolling.h on the tyre's own matrices, 600 N over
   // 20 cm at 90 km/h (5 cm for the finest step).
   const CoarseTyre tyre;
+  // Measured at most 1.5e-4 of the displacement change (dt = 20 samples).
   test::check_extreme_cases(tyre.model, tyre.tread, tyre.texture, test::RollingCase(), 0.05,
-                            1e-3);
+                            4.5e-4);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
