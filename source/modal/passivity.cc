@@ -81,6 +81,8 @@ namespace greentread
     void
     check_passivity(const Passivity &passivity, const bool allow, const std::string &what)
     {
+      if (!std::isfinite(passivity.worst))
+        throw NumericalError("passivity: the measure of " + what + " is not finite");
       if (!(passivity.worst < -passivity_tolerance))
         return;
       const std::string figure =
