@@ -11,14 +11,72 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace benchmark
 {
+  /**
+   * The figures a benchmark asserts against its reference (the direct
+   * method, an exact solution or the finer level of its own study), so that
+   * its --quick smoke run in ctest fails on a number, not only on a crash.
+   * Each check prints the figure beside its bound; exit_code() is 1 when one
+   * failed. A figure that is not a number fails.
+   */
+  class Checks
+  {
+  public:
+    explicit Checks(std::string name)
+      : name(std::move(name))
+    {}
+
+    /// Asserts @p measured <= @p bound; @p what names the figure and its reference.
+    void
+    at_most(const std::string &what, const double measured, const double bound)
+    {
+      report(what, measured, "<=", bound, measured <= bound);
+    }
+
+    /// Asserts @p measured >= @p bound.
+    void
+    at_least(const std::string &what, const double measured, const double bound)
+    {
+      report(what, measured, ">=", bound, measured >= bound);
+    }
+
+    int
+    exit_code() const
+    {
+      return failed == 0 ? 0 : 1;
+    }
+
+  private:
+    void
+    report(const std::string &what, const double measured, const char *relation,
+           const double bound, const bool pass)
+    {
+      const bool ok = pass && std::isfinite(measured);
+      std::printf("check %s: %.3g %s %.3g: %s\n", what.c_str(), measured, relation, bound,
+                  ok ? "pass" : "FAIL");
+      std::fflush(stdout);
+      if (!ok)
+        {
+          std::fprintf(stderr, "%s: %s is %.6g, outside its bound %s %.6g\n", name.c_str(),
+                       what.c_str(), measured, relation, bound);
+          ++failed;
+        }
+    }
+
+    std::string  name;
+    unsigned int failed = 0;
+  };
+
   struct Options
   {
     bool                  quick = false;

@@ -3,12 +3,13 @@
 // functions of the default tyre on a 5 x 6 grid of 12 x 13.3 mm tributary
 // rectangles, split 2 x 2 with the tread's elastic layer below them, against
 // the finite elements' own 10 x 12 grid of 6 x 6.67 mm rectangles on the
-// same 60 x 80 mm patch, on two meshes (8 mm, N = 256, the default, and 4 mm,
-// N = 512); beside them the coarse functions spread without the layer
+// same 60 x 80 mm patch, by the default route (the section's circumferential
+// harmonics) on two sections (the default quartic 8 mm one and the one twice
+// as fine, 4 mm); beside them the coarse functions spread without the layer
 // (rigid within each coarse cell), which is what the layer adds to. Printed:
 // the driving point at the centre and its transfers along x and across y,
 // the worst driving point over the patch, and the difference of the whole
-// matrix (Frobenius, relative), with the time of each static solve.
+// matrix (Frobenius, relative), with the time of each set-up and static solve.
 //
 //   contact_grid_split [--quick] [--output DIR]
 
@@ -16,6 +17,7 @@
 #include <greentread/contact/contact_grid.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/periodic/harmonic_ring.h>
 
 #include <Eigen/Core>
 
@@ -39,24 +41,26 @@ namespace
   };
 
   StaticGreen
-  static_green(const double mesh_size, const unsigned int n_cells, const unsigned int nx,
-               const unsigned int ny)
+  static_green(const double mesh_size, const unsigned int nx, const unsigned int ny)
   {
     geometry::GeometryParameters geometry;
     geometry.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
     geometry.mesh_size = mesh_size;
-    geometry.n_cells   = n_cells;
+    geometry.n_cells   = 64; // only places the points on the harmonic route
     periodic::PatchRequest request;
     request.points_along  = nx;
     request.points_across = ny;
     request.load          = periodic::PointLoad::tributary_area;
+    // The default's tolerance on the neglected harmonics; the lines go to 4 kHz.
+    // The section's static harmonic solves are part of its set-up, so the time
+    // is that of the set-up (meshing, assembly, inflation) and the solve.
+    const auto                   start = std::chrono::steady_clock::now();
     const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                      fe::InflationParameters(), request);
-    const auto solver =
-      periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
-    periodic::SolveDiagnostics diagnostics;
-    const auto                 start = std::chrono::steady_clock::now();
-    const Eigen::MatrixXcd     g     = solver->solve(0., diagnostics);
+                                      fe::InflationParameters(), request,
+                                      periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
+    periodic::HarmonicGreenSolver solver(*tyre.harmonic);
+    periodic::SolveDiagnostics    diagnostics;
+    const Eigen::MatrixXcd        g     = solver.solve(0., diagnostics);
     StaticGreen                result;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.G       = g.real();
@@ -71,13 +75,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto options = benchmark::parse(argc, argv, "contact_grid_split");
-  struct Level
-  {
-    double       mesh_size;
-    unsigned int n_cells;
-  };
-  const std::vector<Level> levels = options.quick ? std::vector<Level>{{0.02, 64}} :
-                                                    std::vector<Level>{{0.008, 256}, {0.004, 512}};
+  const std::vector<double> levels =
+    options.quick ? std::vector<double>{0.02} : std::vector<double>{0.008, 0.004};
   const fe::MaterialParameters       materials;
   const geometry::GeometryParameters geometry;
   const contact::ElasticLayer layer{materials.tread_E, materials.tread_nu, geometry.tread_thickness};
@@ -87,15 +86,16 @@ main(int argc, char **argv)
               "them) against the finite elements' own 10 x 12.\n\n",
               1e3 * layer.thickness);
   std::ofstream csv(options.output / "contact_grid_split.csv");
-  csv << "mesh_size,n_cells,model,driving_um_per_N,along_x_um_per_N,across_y_um_per_N,"
+  csv << "mesh_size,model,driving_um_per_N,along_x_um_per_N,across_y_um_per_N,"
          "worst_driving_difference,matrix_difference\n";
-  std::printf("| mesh | model | centre driving point [um/N] | transfer along x | transfer across y "
-              "| worst driving point difference | matrix difference (Frobenius) | static solve [s] |\n"
+  std::printf("| section | model | centre driving point [um/N] | transfer along x | transfer across y "
+              "| worst driving point difference | matrix difference (Frobenius) | set-up and static solve [s] |\n"
               "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  double split_difference = NAN; // on the finest section, Frobenius, relative
   for (const auto &level : levels)
     {
-      const StaticGreen coarse = static_green(level.mesh_size, level.n_cells, 5, 6);
-      const StaticGreen fine   = static_green(level.mesh_size, level.n_cells, 10, 12);
+      const StaticGreen coarse = static_green(level, 5, 6);
+      const StaticGreen fine   = static_green(level, 10, 12);
       const contact::ContactGrid grid(coarse.points, 2, layer);
       // The finite elements' 10 x 12 points in the grid's order.
       std::vector<unsigned int> order(grid.n_points());
@@ -124,19 +124,28 @@ main(int argc, char **argv)
                                .abs()
                                .maxCoeff();
         const double frob = (m - reference).norm() / reference.norm();
-        std::printf("| %.0f mm, N = %u | %s | %.4g | %.4g | %.4g | %s | %s | %.3g |\n",
-                    1e3 * level.mesh_size, level.n_cells, name, 1e6 * m(centre, centre),
+        std::printf("| %.0f mm | %s | %.4g | %.4g | %.4g | %s | %s | %.3g |\n",
+                    1e3 * level, name, 1e6 * m(centre, centre),
                     1e6 * m(centre, centre + grid.ny), 1e6 * m(centre, centre + 1),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * worst).c_str(),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * frob).c_str(), seconds);
-        csv << level.mesh_size << ',' << level.n_cells << ',' << name << ','
+        csv << level << ',' << name << ','
             << 1e6 * m(centre, centre) << ',' << 1e6 * m(centre, centre + grid.ny) << ','
             << 1e6 * m(centre, centre + 1) << ',' << worst << ',' << frob << '\n';
       };
       row("finite elements, 10 x 12", reference, fine.seconds);
-      row("5 x 6 split 2 x 2 with the layer", grid.compliance(coarse.G), coarse.seconds);
+      const Eigen::MatrixXd split = grid.compliance(coarse.G);
+      split_difference            = (split - reference).norm() / reference.norm();
+      row("5 x 6 split 2 x 2 with the layer", split, coarse.seconds);
       row("5 x 6 spread, no layer", grid.expand(coarse.G), coarse.seconds);
       std::fflush(stdout);
     }
   std::printf("\nWrote %s\n", (options.output / "contact_grid_split.csv").string().c_str());
+  // The split against the finite elements' own fine rectangles on the finest
+  // section: 8.3% with --quick (20 mm section), 6.4% on the 4 mm one. The
+  // figure is deterministic, so the bound sits close above it (1.25x).
+  benchmark::Checks checks("contact_grid_split");
+  checks.at_most("the split's matrix against the finite elements' (Frobenius)", split_difference,
+                 options.quick ? 0.10 : 0.08);
+  return checks.exit_code();
 }
