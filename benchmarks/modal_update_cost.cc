@@ -65,6 +65,7 @@ main(int argc, char **argv)
   for (auto &q : loads)
     q = {0., force(random), force(random), 0.};
 
+  double worst = 0.; // the largest difference from the direct sum, relative
   for (const unsigned int n_modes : {1u, 2u, 5u, 10u, 20u, 50u, 100u})
     {
       const auto model = synthetic_model(n_modes);
@@ -98,9 +99,14 @@ main(int argc, char **argv)
                   direct_time, 1e9 * direct_time / n_direct, difference / largest);
       csv << n_modes << ',' << modal_time << ',' << per_mode << ',' << direct_time << ','
           << difference / largest << '\n';
+      worst = std::max(worst, difference / largest);
     }
   std::printf("\nTarget (issue 2): at most 20 ns per step and per mode.\nWrote %s\n",
               (options.output / "modal_update_cost.csv").c_str());
   csv_file.commit();
-  return 0;
+  // The recursion against the direct sum of the same g(t): equal to round-off
+  // (3.4e-14 measured, 7.7e-15 to 3.4e-14 over N_m; bound 3x).
+  benchmark::Checks checks("modal_update_cost");
+  checks.at_most("largest difference from the direct convolution", worst, 1e-13);
+  return checks.exit_code();
 }

@@ -209,7 +209,12 @@ main(int argc, char **argv)
                 auto         conv = make(precision, block);
                 const Timing t    = time_update(*conv, steps, true);
                 const double diff = difference(t, reference);
-                if (!(diff <= (single ? 1e-5 : 1e-11)))
+                // Against the step-by-step double-precision update: single
+                // precision rounds the shapes to float (1.5e-7 to 2.8e-7 on the
+                // synthetic models, 1.6e-6 on the tyre's, whose sums are
+                // longer); double blocks differ by round-off (2.2e-14). Bounds
+                // about 3x.
+                if (!(diff <= (single ? (rows > 10000 ? 5e-6 : 8e-7) : 7e-14)))
                   {
                     std::cerr << "patch_update_cost: " << (single ? "single" : "double")
                               << "-precision shapes in blocks of " << block
@@ -226,7 +231,9 @@ main(int argc, char **argv)
           const double diff = difference(full, reference);
           row("full", 1, full, 2. * 2. * 8. * rows * double(P) * P,
               2. * 2. * 2. * rows * double(P) * P, peak, format_printf("%.2e", diff));
-          if (!(diff <= 1e-9))
+          // The dense residues of the same modes: round-off (2.5e-15 with
+          // --quick, 1.8e-14 on the full run's 3000 modes); bound 3x.
+          if (!(diff <= 6e-14))
             {
               std::cerr << "patch_update_cost: the rank-one and full forms differ by " << diff
                         << '\n';

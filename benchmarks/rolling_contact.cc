@@ -205,13 +205,13 @@ main(int argc, char **argv)
           std::cerr << "rolling_contact: some contact solves failed\n";
           return 1;
         }
-      if (!(diff <= 1e-6 * peak))
-        {
-          std::cerr << "rolling_contact: direct and modal-recursive differ by "
-                    << diff / peak << " (relative)\n";
-          return 1;
-        }
-      return 0;
+      // The recursion against the direct sum: round-off that grows with the
+      // steps, 4.3e-14 over --quick's 130 steps and 6.9e-12 over the full
+      // run's 1302; bounds 3x each.
+      benchmark::Checks checks("rolling_contact");
+      checks.at_most("stress difference, modal-recursive against direct (relative)", diff / peak,
+                     options.quick ? 1.3e-13 : 2e-11);
+      return checks.exit_code();
     }
   catch (const std::exception &e)
     {

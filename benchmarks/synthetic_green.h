@@ -65,6 +65,27 @@ namespace benchmark
       return m;
     }
 
+    /**
+     * The weight of mode @p term in @p frf, the FRF it is part of: the L1
+     * norm of the mode's own response over the FRF's lines against the
+     * FRF's (E of the data against 'data minus this mode'). A mode below
+     * 1% is hardly held by the data, so identification is not judged on it.
+     */
+    static double
+    weight(const greentread::modal::ModalTerm &term, const greentread::base::FrequencyResponse &frf)
+    {
+      greentread::modal::ModalModel alone;
+      alone.add_pair(term.lambda, term.residue);
+      const auto own  = greentread::modal::sample(alone, frf.df, static_cast<unsigned int>(frf.values.size()));
+      double     mine = 0., norm = 0.;
+      for (std::size_t k = 0; k < frf.values.size(); ++k)
+        {
+          mine += std::abs(own.values[k]);
+          norm += std::abs(frf.values[k]);
+        }
+      return mine / norm;
+    }
+
     /// The FRF g_ij on lines 0, df, ..., (n_lines - 1) df.
     greentread::base::FrequencyResponse
     frf(unsigned int i, unsigned int j, double df, unsigned int n_lines) const
