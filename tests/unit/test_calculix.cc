@@ -286,7 +286,7 @@ BOOST_AUTO_TEST_CASE(inflation_with_a_strongly_orthotropic_belt)
   BOOST_TEST_MESSAGE("orthotropic belt, inflation of the crown: ours " << ours << " m, CalculiX "
                                                                      << theirs << " m, ratio "
                                                                      << ours / theirs);
-  BOOST_TEST(std::abs(ours / theirs - 1.) < 0.03);
+  BOOST_TEST(std::abs(ours / theirs - 1.) < 0.012); // measured 0.4% (0.288 against 0.287 mm)
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,6 @@
 // LSCE identification (Appendix A) on synthetic FRFs built from known poles:
 // the recovered poles and residues against the ones they were built from.
+#include "bounds.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/modal/identification.h>
@@ -59,9 +60,13 @@ namespace
   }
 } // namespace
 
+// Bounds: about 3x what each case measures; where a case is equal to
+// round-off (1e-15 to 1e-14), about 10x, as round-off differs between
+// machines. The noisy cases draw from a seeded generator, so their figures
+// are reproducible and their bounds also about 3x.
 BOOST_AUTO_TEST_SUITE(identification)
 
-BOOST_AUTO_TEST_CASE(single_mode_recovered_to_1e_10)
+BOOST_AUTO_TEST_CASE(single_mode_recovered_to_round_off)
 {
   ModalModel truth;
   add_mode(truth, 500., 0.02, 1e3);
@@ -79,8 +84,8 @@ BOOST_AUTO_TEST_CASE(single_mode_recovered_to_1e_10)
                                   << ", physical " << id.poles.physical << ", spurious "
                                   << id.poles.spurious);
       BOOST_TEST(id.n_modes == 1u);
-      BOOST_TEST(pe < 1e-10);
-      BOOST_TEST(re < 1e-10);
+      BOOST_TEST(pe < 2e-14);
+      BOOST_TEST(re < 5e-13);
     }
 }
 
@@ -98,9 +103,9 @@ BOOST_AUTO_TEST_CASE(ten_modes_two_within_one_percent)
   BOOST_TEST_MESSAGE("ten modes: N_m = " << id.n_modes << ", pole error " << pe << ", residue error "
                                          << re << ", E = " << id.error);
   BOOST_TEST(id.n_modes == 10u);
-  BOOST_TEST(pe < 1e-8);
-  BOOST_TEST(re < 1e-6);
-  BOOST_TEST(id.error < 1e-6);
+  BOOST_TEST(pe < 1e-10);
+  BOOST_TEST(re < 1e-9);
+  BOOST_TEST(id.error < 1e-10);
 }
 
 BOOST_AUTO_TEST_CASE(very_light_and_heavy_damping)
@@ -120,9 +125,9 @@ BOOST_AUTO_TEST_CASE(very_light_and_heavy_damping)
       BOOST_TEST_CONTEXT("xi = " << xi)
       {
         BOOST_TEST(id.n_modes == 2u);
-        BOOST_TEST(pe < 1e-8);
-        BOOST_TEST(re < 1e-6);
-        BOOST_TEST(id.error < 1e-6);
+        BOOST_TEST(pe < 5e-11);
+        BOOST_TEST(re < 1e-10);
+        BOOST_TEST(id.error < 6e-11);
       }
     }
 }
@@ -149,8 +154,8 @@ BOOST_AUTO_TEST_CASE(real_pole)
       BOOST_TEST_CONTEXT(modal::to_string(model))
       {
         BOOST_TEST(real_poles == 1u);
-        BOOST_TEST(pe < 1e-8);
-        BOOST_TEST(re < 1e-6);
+        BOOST_TEST(pe < 7e-10);
+        BOOST_TEST(re < 4e-10);
       }
     }
 }
@@ -191,7 +196,7 @@ BOOST_AUTO_TEST_CASE(modes_above_f_max)
         error[upper] = id.error;
       BOOST_TEST_CONTEXT("upper residual " << upper << ", refined " << refine)
       {
-        BOOST_TEST(pe < (refine ? 1e-4 : 1e-6));
+        BOOST_TEST(pe < (refine ? 2.2e-4 : 3e-14));
         BOOST_TEST(id.error < 0.05);
         for (const auto &t : id.model.terms())
           BOOST_TEST(std::abs(t.lambda.imag()) / (2. * M_PI) < 4000.);
@@ -223,7 +228,7 @@ BOOST_AUTO_TEST_CASE(noise_at_40_dB)
   BOOST_TEST_MESSAGE("40 dB: N_m = " << id.n_modes << ", pole error " << pe << ", residue error "
                                      << re << ", E = " << id.error << ", noise-free E of the truth "
                                      << modal::modal_error(frf, truth));
-  BOOST_TEST(pe < 1e-2);
+  BOOST_TEST(pe < 1.5e-3);
   BOOST_TEST(id.error < 0.05);
   // The fit is about as good as the truth itself on these noisy data.
   BOOST_TEST(id.error < 1.5 * modal::modal_error(frf, truth));
@@ -278,8 +283,8 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
                          << "), pole error " << pe << ", refinement "
                          << id.polish.iterations << " iterations");
     }
-  BOOST_TEST(worst < 0.10);
-  BOOST_TEST(worst_pole < 0.01);
+  BOOST_TEST(worst < 0.025);
+  BOOST_TEST(worst_pole < 0.0035);
   BOOST_TEST(worst < worst_unrefined);
 }
 
@@ -335,7 +340,7 @@ BOOST_AUTO_TEST_CASE(impulse_response_of_a_mode)
       const double exact =
         2. * std::real(term.residue * std::exp(term.lambda * (n * g.dt)) /
                        (1. - std::exp(term.lambda * period)));
-      BOOST_TEST(std::abs(g.values[n] - exact) < 1e-4 * std::abs(term.residue));
+      CHECK_BOUND(std::abs(g.values[n] - exact) / std::abs(term.residue), 1.2e-6);
     }
 }
 
@@ -420,8 +425,8 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
   BOOST_TEST(reused == 1u);
   double pe, re;
   match(g01, ids[2].model, pe, re);
-  BOOST_TEST(pe < 1e-10);
-  BOOST_TEST(re < 1e-8);
+  CHECK_BOUND(pe, 1e-12);
+  CHECK_BOUND(re, 1e-11);
   // Not reciprocal any more: both are identified.
   for (unsigned int k = 0; k < 201; ++k)
     back.values[4 * k + 2] *= 1.001;
@@ -458,9 +463,10 @@ BOOST_AUTO_TEST_CASE(round_trip_through_the_1_dof_scene)
                                  << ", max |u - u(exact modal form)| = " << du);
       BOOST_TEST_CONTEXT("xi = " << xi)
       {
-        // Real poles (xi = 2) come out to about 1e-9, a pair to round-off.
+        // Real poles (xi = 2) come out to about 3e-9, a pair to round-off
+        // (2e-13); u within 1.1e-13 m.
         BOOST_TEST(id.error < 1e-8);
-        BOOST_TEST(du < 1e-10 * 5e-3);
+        BOOST_TEST(du < 3.5e-13);
       }
     }
 }

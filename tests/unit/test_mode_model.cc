@@ -9,7 +9,12 @@
 // - modal_model.h5 read back bit for bit, and refused when incomplete;
 // - the paper's path, LSCE (Appendix A), on functions synthesised from known
 //   modes with a static residual: the isolated modes' frequencies within 1e-3.
+// Bounds: a comparison that is equal to round-off (1e-16 to 1e-14 measured)
+// sits about 10x above what it measures, as round-off differs between
+// machines and BLAS kernels; single-precision shapes (2.2e-7 to 2.4e-7) and
+// the nudged critical damping (3.6e-8) about 3x.
 
+#include "bounds.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/convolution/mode_patch_convolution.h>
@@ -100,17 +105,17 @@ BOOST_AUTO_TEST_CASE(poles_and_residues_give_the_closed_form)
   BOOST_TEST(model.n_terms() == 11u);
   const double worst = pole_residue_error(s, model);
   BOOST_TEST_MESSAGE("pole-residue form against the closed form: " << worst);
-  BOOST_TEST(worst < 1e-11);
+  BOOST_TEST(worst < 3e-14);
   // Exactly critical damping is taken as xi = 1 + 1e-6 (two real poles
   // 2.8e-3 w apart): a relative change of order 1e-6 in that mode.
   const auto   s1      = known_synthesis();
   const double nudged = pole_residue_error(s1, synthesis::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
   BOOST_TEST_MESSAGE("with a critically damped mode: " << nudged);
-  BOOST_TEST(nudged < 1e-6);
+  BOOST_TEST(nudged < 1e-7);
   // The static compliance: G_r + sum phi phi^T / w^2.
   const Eigen::MatrixXd G0 = s.at(0.).real();
-  BOOST_TEST((model.static_compliance() - G0).cwiseAbs().maxCoeff() <
-             1e-12 * G0.cwiseAbs().maxCoeff());
+  CHECK_BOUND((model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff(),
+              2e-15);
 }
 
 BOOST_AUTO_TEST_CASE(negative_damping_and_zero_frequency_are_refused)
@@ -217,10 +222,10 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   BOOST_TEST_MESSAGE("rank-one recursion against the full form " << d[0]
                      << ", against the direct sum " << d[1] << "; influences " << d[2]
                      << "; displacement alone, then the velocity " << d[3]);
-  BOOST_TEST(d[0] < 1e-11);
-  BOOST_TEST(d[1] < 1e-9);
-  BOOST_TEST(d[2] < 1e-12);
-  BOOST_TEST(d[3] < 1e-12);
+  BOOST_TEST(d[0] < 2e-14);
+  BOOST_TEST(d[1] < 7e-14);
+  BOOST_TEST(d[2] < 2e-13);
+  BOOST_TEST(d[3] < 1e-14);
 }
 
 BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
@@ -316,10 +321,10 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
                      << "); step by step against the direct sum " << worst_direct / size
                      << "; blocks of 16 with single-precision shapes " << worst_single / size);
   BOOST_TEST(size > 0.);
-  BOOST_TEST(worst_block / size < 1e-12);
-  BOOST_TEST(worst_v < 1e-12);
-  BOOST_TEST(worst_direct / size < 1e-9);
-  BOOST_TEST(worst_single / size < 1e-6);
+  BOOST_TEST(worst_block / size < 1e-14);
+  BOOST_TEST(worst_v < 5e-15);
+  BOOST_TEST(worst_direct / size < 3e-14);
+  BOOST_TEST(worst_single / size < 7e-7);
   BOOST_TEST(worst_single / size > 1e-12); // the shapes are rounded: not the double path
   BOOST_CHECK_THROW(convolution::make_rank_one_patch_convolution(
                       model, dt, 2, ShapePrecision::double_precision, 5),
@@ -340,11 +345,11 @@ BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_round
   BOOST_TEST_MESSAGE("single-precision shapes: against the full form " << d[0]
                      << ", against the direct sum " << d[1] << "; displacement alone, then the "
                      << "velocity " << d[3]);
-  BOOST_TEST(d[0] < 1e-6);
-  BOOST_TEST(d[1] < 1e-6);
+  BOOST_TEST(d[0] < 7e-7);
+  BOOST_TEST(d[1] < 7e-7);
   BOOST_TEST(d[0] > 1e-12); // the shapes are rounded: not the double path
   BOOST_TEST(d[2] < 1e-12); // the one-step influences stay those of the double model
-  BOOST_TEST(d[3] < 1e-6);
+  BOOST_TEST(d[3] < 1e-14);
 }
 
 BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
@@ -390,22 +395,23 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
     }
   BOOST_TEST_MESSAGE("complex shapes: synthesis against the sum written out " << worst
                      << ", pole-residue form " << worst_model);
-  BOOST_TEST(worst < 1e-12);
-  BOOST_TEST(worst_model < 1e-11);
-  BOOST_TEST((model.static_compliance() - s.at(0.).real()).cwiseAbs().maxCoeff() <
-             1e-12 * s.at(0.).cwiseAbs().maxCoeff());
+  BOOST_TEST(worst < 3e-14);
+  BOOST_TEST(worst_model < 5e-15);
+  CHECK_BOUND((model.static_compliance() - s.at(0.).real()).cwiseAbs().maxCoeff() /
+                s.at(0.).cwiseAbs().maxCoeff(),
+              2e-15);
   const auto d = recursion_differences(model);
   BOOST_TEST_MESSAGE("complex shapes: rank-one recursion against the full form "
                      << d[0] << ", against the direct sum " << d[1] << "; influences " << d[2]
                      << "; displacement alone, then the velocity " << d[3]);
-  BOOST_TEST(d[0] < 1e-11);
-  BOOST_TEST(d[1] < 1e-9);
-  BOOST_TEST(d[2] < 1e-12);
-  BOOST_TEST(d[3] < 1e-12);
+  BOOST_TEST(d[0] < 2e-14);
+  BOOST_TEST(d[1] < 4e-14);
+  BOOST_TEST(d[2] < 5e-15);
+  BOOST_TEST(d[3] < 1e-14);
   const auto single = recursion_differences(model, convolution::ShapePrecision::single_precision);
   BOOST_TEST_MESSAGE("complex shapes in single precision: against the full form " << single[0]);
-  BOOST_TEST(single[0] < 1e-6);
-  BOOST_TEST(single[3] < 1e-6);
+  BOOST_TEST(single[0] < 7.5e-7);
+  BOOST_TEST(single[3] < 1e-14);
   // A complex shape on an over-critical mode has no pole pair: refused.
   s.damping_ratio(2) = 1.5;
   BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
@@ -455,7 +461,7 @@ BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_l
         }
       BOOST_TEST_MESSAGE("modes beyond the band interpolated, " << (complex_shapes ? "complex" : "real")
                          << " shapes: largest difference from the sum at each line " << worst);
-      BOOST_TEST(worst < 1e-12);
+      BOOST_TEST(worst < 1e-13);
     }
   // Too few lines to gain: every mode summed at every line, the same figures.
   const auto few = s.modes_at_lines(df * 64., 5);
@@ -477,7 +483,7 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
   BOOST_TEST(model.instantaneous.size() == 0);
   const double worst = pole_residue_error(s, model);
   BOOST_TEST_MESSAGE("relaxing residual, pole-residue form against the closed form: " << worst);
-  BOOST_TEST(worst < 1e-11);
+  BOOST_TEST(worst < 3e-14);
 
   synthesis::ModeSynthesis residual;
   residual.frequency_hz.resize(0);
@@ -519,7 +525,7 @@ BOOST_AUTO_TEST_CASE(a_relaxing_residual_is_a_kelvin_voigt_solid)
       convolution->advance(load);
     }
   BOOST_TEST_MESSAGE("relaxing residual in time against the exact solution: " << difference / size);
-  BOOST_TEST(difference < 1e-12 * size);
+  BOOST_TEST(difference < 1e-14 * size);
 }
 
 BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
@@ -572,7 +578,7 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
                                   << nearest << " (E of the fit " << id.error << ")");
           // Measured 5e-14: round-off of an exact synthesis, which differs
           // between machines, so 20 times that.
-          BOOST_TEST(nearest < 1e-12);
+          BOOST_TEST(nearest < 5e-13);
           ++tested;
         }
       BOOST_TEST(tested >= 3u);

@@ -2,6 +2,7 @@
 // directly (from the same cell, and from deal.II's own ring mesh in
 // Cartesian components), the paper's doubling against the Bloch transform,
 // reciprocity, passivity, and a thin ring's analytic natural frequencies.
+#include "bounds.h"
 #include "coarse_tyre.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
@@ -132,6 +133,11 @@ namespace
   }
 } // namespace
 
+// Bounds: the methods against each other are equal to round-off amplified by
+// the dynamic stiffness's conditioning (about 1e8 here): 4.6e-12 to 3.8e-11
+// measured, bounds about 3 times the largest of each kind, as round-off
+// differs between machines. The thin ring against Hoppe's formula: the
+// formula's own approximation (measured 1.1e-4), bound 3 times.
 BOOST_AUTO_TEST_SUITE(periodic_stage)
 
 BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
@@ -170,8 +176,8 @@ BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
             const auto   g     = full->solve(omega, diagnostics);
             BOOST_TEST_CONTEXT("f = " << f << " Hz")
             {
-              BOOST_TEST(relative_difference(doubling->solve(omega, diagnostics), g) < 1e-8);
-              BOOST_TEST(relative_difference(bloch->solve(omega, diagnostics), g) < 1e-8);
+              CHECK_BOUND(relative_difference(doubling->solve(omega, diagnostics), g), 1.2e-10);
+              CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics), g), 1.2e-10);
               // A few columns alone (Bloch: one load per wavenumber and its
               // transposed solve for N - k; doubling: the default, the
               // whole of g and the columns copied).
@@ -179,10 +185,12 @@ BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
               Eigen::MatrixXcd                expected(g.rows(), columns.size());
               for (std::size_t c = 0; c < columns.size(); ++c)
                 expected.col(c) = g.col(columns[c]);
-              BOOST_TEST(relative_difference(bloch->solve_columns(omega, columns, diagnostics),
-                                             expected) < 1e-8);
-              BOOST_TEST(relative_difference(doubling->solve_columns(omega, columns, diagnostics),
-                                             expected) < 1e-8);
+              CHECK_BOUND(relative_difference(bloch->solve_columns(omega, columns, diagnostics),
+                                              expected),
+                          1.2e-10);
+              CHECK_BOUND(relative_difference(doubling->solve_columns(omega, columns, diagnostics),
+                                              expected),
+                          1.2e-10);
             }
           }
         BOOST_CHECK_THROW(bloch->solve_columns(0., {9u}, diagnostics), NumericalError);
@@ -220,7 +228,7 @@ BOOST_AUTO_TEST_CASE(every_method_on_two_threads_equals_one_thread_of_bloch)
         }
       BOOST_TEST_MESSAGE((method == periodic::Method::doubling ? "doubling" : "full ring")
                          << " on two threads against Bloch on one: " << worst / size);
-      BOOST_TEST(worst < 1e-8 * size);
+      CHECK_BOUND(worst / size, 4e-11);
     }
 }
 
@@ -302,7 +310,7 @@ BOOST_AUTO_TEST_CASE(ring_response_equals_the_full_ring)
           largest = std::max(largest, std::abs(mean - g(p, 4)));
         }
       BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[4].load.size() << " load DoFs")
-      BOOST_TEST(largest < 1e-8 * g.col(4).cwiseAbs().maxCoeff());
+      CHECK_BOUND(largest / g.col(4).cwiseAbs().maxCoeff(), 1.5e-11);
     }
   }
 }
@@ -321,8 +329,9 @@ BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
     BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
     {
       const double omega = 2. * M_PI * f;
-      BOOST_TEST(relative_difference(bloch->solve(omega, diagnostics),
-                                     cartesian_ring_green(tyre, omega)) < 1e-8);
+      CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics),
+                                      cartesian_ring_green(tyre, omega)),
+                  2e-11);
     }
   }
 }
@@ -344,7 +353,7 @@ BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
       BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
       {
         // g_ij = g_ji.
-        BOOST_TEST((g - g.transpose()).cwiseAbs().maxCoeff() < 1e-10 * g.cwiseAbs().maxCoeff());
+        CHECK_BOUND((g - g.transpose()).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff(), 5e-11);
         // With e^{j w t}, a damped driving point dissipates: Im g_ii < 0.
         for (unsigned int i = 0; i < g.rows(); ++i)
           BOOST_TEST(g(i, i).imag() < 0.);
@@ -411,7 +420,7 @@ BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
                                      (rho * A * std::pow(R, 4) * (n * n + 1.)));
       BOOST_TEST_MESSAGE("thin ring, n = " << n << ": Bloch " << computed / (2. * M_PI)
                                            << " Hz, Hoppe " << exact / (2. * M_PI) << " Hz");
-      BOOST_TEST(std::abs(computed / exact - 1.) < 1e-3);
+      CHECK_BOUND(std::abs(computed / exact - 1.), 3.5e-4);
 
       // Undamped, exactly at the resonance: D is singular and every method
       // must say so, naming the frequency; just below it, the solves pass.

@@ -289,7 +289,8 @@ BOOST_AUTO_TEST_CASE(a_cutoff_converges_and_stays_passive)
   BOOST_TEST(worst[2] < 0.8 * worst[1]);
   BOOST_TEST(worst[2] < 2e-3);
   // The diagonal form stops: its floor is the coupling, not the truncation.
-  BOOST_TEST(std::abs(diagonal[1] - diagonal[0]) < 0.05 * diagonal[0]);
+  // Measured 0.65%.
+  BOOST_TEST(std::abs(diagonal[1] - diagonal[0]) < 0.02 * diagonal[0]);
   BOOST_TEST(worst[2] < 0.3 * diagonal[1]);
 }
 
@@ -321,7 +322,8 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   BOOST_TEST_MESSAGE("residual relaxation " << model.residual_relaxation << " s, b = " << b
                                             << "; E median " << relaxed.median << ", worst "
                                             << relaxed.worst);
-  BOOST_TEST(std::abs(model.residual_relaxation / b - 1.) < 0.05);
+  // Measured 0.17% (3.623e-6 s against 3.617e-6 s).
+  BOOST_TEST(std::abs(model.residual_relaxation / b - 1.) < 0.005);
   BOOST_TEST(relaxed.worst < errors.worst / 3.);
   BOOST_TEST(relaxed.passivity > -1e-12);
 
