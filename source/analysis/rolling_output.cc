@@ -285,6 +285,7 @@ namespace greentread
     write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &results,
                   const std::vector<std::string> &roads, const std::vector<double> &speeds,
                   const double stress_reference, const double f_max,
+                  const SpectraParameters &spectra, const double distance,
                   const base::ParameterRecord &record)
     {
       // Stage analysis: the spectra per road (speeds) and per speed (roads),
@@ -294,11 +295,18 @@ namespace greentread
         base::AtomicFile f(directory / name);
         auto            &o = f.stream();
         o << "# one-third-octave levels " << what << "; IEC 61260-1 base-10 bands; the Green's "
-          << "functions end at " << format_number(f_max) << " Hz\nroad,speed_kmh,band_Hz,level_dB\n";
+          << "functions end at " << format_number(f_max) << " Hz; Welch's average over "
+          << "segments of " << spectra.lines_per_segment << " lines per band, standard_error_dB "
+          << "one standard error of the level (the segments' scatter with " << min_observed_segments
+          << " or more, a Gaussian signal's otherwise)\n"
+          << "road,speed_kmh,band_Hz,level_dB,standard_error_dB,segments\n";
         for (const auto &r : results)
-          for (std::size_t b = 0; b < (r.*which).bands.size(); ++b)
-            o << r.road << ',' << r.speed_kmh << ',' << (r.*which).bands[b].nominal << ','
-              << (r.*which).level[b] << '\n';
+          {
+            const BandSpectrum &s = r.*which;
+            for (std::size_t b = 0; b < s.bands.size(); ++b)
+              o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ','
+                << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << '\n';
+          }
         record.write_comments(o);
         f.commit();
       };
@@ -312,14 +320,22 @@ namespace greentread
       const auto plot_spectra = [&](const std::filesystem::path &png, const std::string &title,
                                     const std::string &kind, const std::string &ylabel,
                                     const std::function<bool(const RunSpectrum &)> &take) {
-        std::string plot;
+        // Each curve over its band of +- one standard error, in its colour.
+        std::string bands, curves;
+        unsigned    colour = 0;
         for (const auto &r : results)
           if (take(r))
-            plot += (plot.empty() ? "plot " : ", ") +
-                    base::gnuplot_quote(directory / (kind + road_label(r.road) + "_" +
-                                                     speed_label(r.speed_kmh) + ".csv")) +
-                    " skip 2 using 1:6 with linespoints lw 2 title '" + road_label(r.road) + ", " +
-                    format_number(r.speed_kmh) + " km/h'";
+            {
+              const std::string csv = base::gnuplot_quote(
+                directory / (kind + road_label(r.road) + "_" + speed_label(r.speed_kmh) + ".csv"));
+              const std::string lc = " lc " + std::to_string(++colour);
+              bands += (bands.empty() ? "plot " : ", ") + csv +
+                       " skip 2 using 1:($6-$7):($6+$7) with filledcurves fs transparent solid "
+                       "0.2 noborder" + lc + " notitle";
+              curves += ", " + csv + " skip 2 using 1:6 with linespoints lw 2" + lc + " title '" +
+                        road_label(r.road) + ", " + format_number(r.speed_kmh) + " km/h'";
+            }
+        const std::string plot = bands + curves;
         base::plot_png(png,
                        "set datafile separator ','\nset datafile commentschars '#'\nset grid\n"
                        "set logscale x\nset xrange [90:5600]\nset xtics (100,200,500,1000,2000,5000)\n"
@@ -368,6 +384,44 @@ namespace greentread
         std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
                   << " km/h: stress " << summarise(r.spectrum) << "; force "
                   << summarise(r.force_spectrum) << '\n';
+
+      // The standard errors against the target: the bands that miss it, and
+      // the distance that would meet it (the error falls as 1 / sqrt(T)).
+      std::cout << "Standard errors of the band levels from " << format_number(spectra.target_from)
+                << " Hz (target " << format_number(spectra.target_error)
+                << " dB, 'Spectra/Standard error target'):\n";
+      bool all_met = true;
+      for (const auto &r : results)
+        for (const auto &[what, s] : {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
+                                      {"force", &r.force_spectrum}})
+          {
+            double      worst = 0., largest = 0.;
+            std::string missed;
+            for (std::size_t b = 0; b < s->bands.size(); ++b)
+              if (s->bands[b].nominal >= spectra.target_from * (1. - 1e-9))
+                {
+                  largest = std::max(largest, s->standard_error[b]);
+                  if (s->standard_error[b] > spectra.target_error)
+                    {
+                      missed += (missed.empty() ? "" : ", ") + format_number(s->bands[b].nominal);
+                      worst = std::max(worst, s->standard_error[b]);
+                    }
+                }
+            std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
+                      << " km/h, " << what << ": largest " << format_printf("%.2f", largest)
+                      << " dB";
+            if (missed.empty())
+              std::cout << ", target met\n";
+            else
+              {
+                all_met = false;
+                const double ratio = worst / spectra.target_error;
+                std::cout << "; above the target in the " << missed << " Hz bands; 'Rolling/Distance' = "
+                          << format_printf("%.3g", distance * ratio * ratio) << " m would meet it\n";
+              }
+          }
+      if (!all_met)
+        std::cout << "  (spectra.csv and spectra_force.csv give every band's standard error)\n";
     }
   } // namespace analysis
 } // namespace greentread

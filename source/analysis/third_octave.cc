@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
 
 namespace greentread
 {
@@ -88,6 +89,228 @@ namespace greentread
 
 
 
+    namespace
+    {
+      /**
+       * The checks both estimators share (throwing the errors documented at
+       * third_octave_spectrum()): the spectrum's bands and reference, with
+       * nothing estimated yet.
+       */
+      BandSpectrum
+      checked_spectrum(const std::vector<double> &x, const double dt, const double reference,
+                       const double f_low, const double f_high)
+      {
+        if (!(dt > 0.) || !std::isfinite(dt))
+          throw InputError("one-third-octave spectrum: the sample interval dt = " +
+                           format_number(dt) + " s must be finite and > 0");
+        if (!(reference > 0.) || !std::isfinite(reference))
+          throw InputError("one-third-octave spectrum: the reference = " +
+                           format_number(reference) + " (the rms of 0 dB) must be finite and > 0");
+
+        BandSpectrum s;
+        s.bands     = third_octave_bands(f_low, f_high);
+        s.reference = reference;
+
+        // The highest band must lie below the Nyquist frequency.
+        const FrequencyBand &top     = s.bands.back();
+        const double         nyquist = 0.5 / dt;
+        if (top.upper > nyquist)
+          throw InputError(
+            "one-third-octave spectrum: the sample interval dt = " + format_number(dt) +
+            " s resolves frequencies up to 1 / (2 dt) = " + format_short(nyquist) +
+            " Hz, below the upper edge of " + describe(top) +
+            "; allowed: dt <= " + format_short(0.5 / top.upper) + " s, or a lower f_high");
+
+        // Lines 1 / (N dt) apart fall in every band if they are no farther
+        // apart than the lowest, narrowest band is wide.
+        const std::size_t    N        = x.size();
+        const double         duration = N * dt;
+        const FrequencyBand &bottom   = s.bands.front();
+        const double         needed   = 1. / (bottom.upper - bottom.lower);
+        if (!(duration >= needed * (1. - 1e-12)))
+          throw InputError(
+            "one-third-octave spectrum: the record of " + std::to_string(N) +
+            " samples at dt = " + format_number(dt) + " s lasts " + format_short(duration) +
+            " s, too short for " + describe(bottom) + ": its Fourier lines would be " +
+            (N > 0 ? format_short(1. / duration) + " Hz" : std::string("infinitely")) +
+            " apart, and the band " + format_short(bottom.upper - bottom.lower) +
+            " Hz wide could hold none; a record of at least " + format_short(needed) + " s (" +
+            std::to_string(static_cast<std::size_t>(std::ceil(needed / dt * (1. - 1e-12)))) +
+            " samples) is needed, or a higher f_low");
+
+        for (std::size_t n = 0; n < N; ++n)
+          if (!std::isfinite(x[n]))
+            throw NumericalError("one-third-octave spectrum: sample " + std::to_string(n) +
+                                 " (t = " + format_short(n * dt) + " s) of the signal is " +
+                                 (std::isnan(x[n]) ? "NaN" : "infinite") +
+                                 "; the signal must be finite everywhere");
+        return s;
+      }
+
+
+
+      /// The periodic Hann window of @p n samples.
+      std::vector<double>
+      hann(const std::size_t n)
+      {
+        std::vector<double> w(n);
+        for (std::size_t m = 0; m < n; ++m)
+          w[m] = 0.5 * (1. - std::cos(2. * M_PI * double(m) / double(n)));
+        return w;
+      }
+
+
+
+      /// The Fourier lines of one segment that fall in one band: the first,
+      /// and the share of each line's cell that lies in the band.
+      struct BandLines
+      {
+        std::size_t         first = 0;
+        std::vector<double> weight;
+      };
+
+
+
+      /**
+       * The mean square in each of @p bands (increasing) of the segment
+       * x[start, start + n): its mean removed, the Hann window @p w, zero
+       * padded to @p M, and the lines of each band (third_octave_spectrum()).
+       */
+      void
+      segment_mean_squares(const std::vector<double> &x, const std::size_t start,
+                           const std::vector<double> &w, const std::size_t M, const double dt,
+                           const std::vector<FrequencyBand> &bands, std::vector<double> &mean_square,
+                           std::vector<BandLines> &lines)
+      {
+        const std::size_t n    = w.size();
+        double            mean = 0.;
+        for (std::size_t m = 0; m < n; ++m)
+          mean += x[start + m];
+        mean /= double(n);
+        std::vector<double> y(M, 0.);
+        double              window_energy = 0.;
+        for (std::size_t m = 0; m < n; ++m)
+          {
+            y[m] = w[m] * (x[start + m] - mean);
+            window_energy += w[m] * w[m];
+          }
+        Eigen::FFT<double>                fft;
+        std::vector<std::complex<double>> Y;
+        fft.fwd(Y, y);
+
+        // One-sided power of each line times the share of its cell
+        // [f - df / 2, f + df / 2) that lies in [lower, upper) of a band,
+        // so that a flat spectrum gives the band's width exactly, whatever
+        // its number of lines (an edge line is shared by two bands); lines
+        // above the last band are not needed.
+        const std::size_t B  = bands.size();
+        const double      df = 1. / (double(M) * dt);
+        mean_square.assign(B, 0.);
+        lines.assign(B, BandLines());
+        std::size_t b = 0;
+        for (std::size_t k = 1; 2 * k <= M && b < B; ++k)
+          {
+            const double lo = (double(k) - 0.5) * df, hi = (double(k) + 0.5) * df;
+            while (b < B && bands[b].upper <= lo)
+              ++b;
+            for (std::size_t c = b; c < B && bands[c].lower < hi; ++c)
+              {
+                const double share = (std::min(hi, bands[c].upper) - std::max(lo, bands[c].lower)) / df;
+                if (share <= 0.)
+                  continue;
+                mean_square[c] += share * (2 * k == M ? 1. : 2.) * std::norm(Y[k]);
+                if (lines[c].weight.empty())
+                  lines[c].first = k;
+                lines[c].weight.push_back(share);
+              }
+          }
+        const double scale = 1. / (double(M) * window_energy);
+        for (auto &p : mean_square)
+          p *= scale;
+      }
+
+
+
+      /**
+       * The correlation of a segment's Hann-windowed Fourier coefficients d
+       * lines apart on the padded length M, for a white signal:
+       * r(d) = sum_m w_m^2 e^{-2 pi i d m / M} / sum_m w_m^2, by one FFT.
+       */
+      std::vector<std::complex<double>>
+      line_correlation(const std::vector<double> &w, const std::size_t M)
+      {
+        std::vector<double> w2(M, 0.);
+        for (std::size_t m = 0; m < w.size(); ++m)
+          w2[m] = w[m] * w[m];
+        Eigen::FFT<double>                fft;
+        std::vector<std::complex<double>> r;
+        fft.fwd(r, w2);
+        const double energy = r[0].real();
+        for (auto &v : r)
+          v /= energy;
+        return r;
+      }
+
+
+
+      /**
+       * The relative variance of a band's power from one segment, for a
+       * Gaussian signal flat across the band: its lines, weighted by their
+       * shares a_k of the band, correlate as @p r (line_correlation()), so
+       * it is sum_{k,k'} a_k a_k' |r(k - k')|^2 / (sum_k a_k)^2.
+       */
+      double
+      gaussian_relative_variance(const std::vector<std::complex<double>> &r,
+                                 const std::vector<double>               &a)
+      {
+        double sum = 0., total = 0.;
+        for (std::size_t k = 0; k < a.size(); ++k)
+          {
+            total += a[k];
+            for (std::size_t l = 0; l < a.size(); ++l)
+              sum += a[k] * a[l] * std::norm(r[k > l ? k - l : l - k]);
+          }
+        return sum / (total * total);
+      }
+
+
+
+      /// Welch's factor on the variance of the mean of @p K segments of the
+      /// window @p w, @p hop samples apart: 1 + 2 sum_j (1 - j / K) rho_j^2.
+      double
+      overlap_factor(const std::vector<double> &w, const std::size_t hop, const unsigned K)
+      {
+        double energy = 0.;
+        for (const double v : w)
+          energy += v * v;
+        double factor = 1.;
+        for (unsigned j = 1; j < K && j * hop < w.size(); ++j)
+          {
+            double rho = 0.;
+            for (std::size_t m = 0; m + j * hop < w.size(); ++m)
+              rho += w[m] * w[m + j * hop];
+            rho /= energy;
+            factor += 2. * (1. - double(j) / K) * rho * rho;
+          }
+        return factor;
+      }
+
+
+
+      /// The level of @p rms, floored (third_octave_spectrum()); @throws
+      /// NumericalError if it overflowed.
+      double
+      level_of(const double rms, const double reference, const FrequencyBand &band)
+      {
+        if (!std::isfinite(rms))
+          throw NumericalError("one-third-octave spectrum: the rms in " + describe(band) +
+                               " overflowed; scale the signal down");
+        return rms <= 1e-10 * reference ? level_floor : 20. * std::log10(rms / reference);
+      }
+    } // namespace
+
+
+
     BandSpectrum
     third_octave_spectrum(const std::vector<double> &x,
                           const double               dt,
@@ -95,108 +318,103 @@ namespace greentread
                           const double               f_low,
                           const double               f_high)
     {
-      if (!(dt > 0.) || !std::isfinite(dt))
-        throw InputError("one-third-octave spectrum: the sample interval dt = " +
-                         format_number(dt) + " s must be finite and > 0");
-      if (!(reference > 0.) || !std::isfinite(reference))
-        throw InputError("one-third-octave spectrum: the reference = " + format_number(reference) +
-                         " (the rms of 0 dB) must be finite and > 0");
-
-      BandSpectrum s;
-      s.bands             = third_octave_bands(f_low, f_high);
-      s.reference         = reference;
-      const std::size_t B = s.bands.size();
-
-      // The highest band must lie below the Nyquist frequency.
-      const FrequencyBand &top     = s.bands.back();
-      const double         nyquist = 0.5 / dt;
-      if (top.upper > nyquist)
-        throw InputError(
-          "one-third-octave spectrum: the sample interval dt = " + format_number(dt) +
-          " s resolves frequencies up to 1 / (2 dt) = " + format_short(nyquist) +
-          " Hz, below the upper edge of " + describe(top) +
-          "; allowed: dt <= " + format_short(0.5 / top.upper) + " s, or a lower f_high");
-
-      // Lines 1 / (N dt) apart fall in every band if they are no farther
-      // apart than the lowest, narrowest band is wide.
-      const std::size_t    N         = x.size();
-      const double         duration  = N * dt;
-      const FrequencyBand &bottom    = s.bands.front();
-      const double         needed    = 1. / (bottom.upper - bottom.lower);
-      const auto           too_short = [&]() {
-        return InputError(
-                    "one-third-octave spectrum: the record of " + std::to_string(N) +
-                    " samples at dt = " + format_number(dt) + " s lasts " + format_short(duration) +
-                    " s, too short for " + describe(bottom) + ": its Fourier lines would be " +
-                    (N > 0 ? format_short(1. / duration) + " Hz" : std::string("infinitely")) +
-                    " apart, and the band " + format_short(bottom.upper - bottom.lower) +
-                    " Hz wide could hold none; a record of at least " + format_short(needed) + " s (" +
-                    std::to_string(static_cast<std::size_t>(std::ceil(needed / dt * (1. - 1e-12)))) +
-                    " samples) is needed, or a higher f_low");
-      };
-      if (!(duration >= needed * (1. - 1e-12)))
-        throw too_short();
-
-      double mean = 0.;
-      for (std::size_t n = 0; n < N; ++n)
-        {
-          if (!std::isfinite(x[n]))
-            throw NumericalError("one-third-octave spectrum: sample " + std::to_string(n) +
-                                 " (t = " + format_short(n * dt) + " s) of the signal is " +
-                                 (std::isnan(x[n]) ? "NaN" : "infinite") +
-                                 "; the signal must be finite everywhere");
-          mean += x[n];
-        }
-      mean /= N;
-
-      // Mean removed, periodic Hann window, zero-padded to a fast length.
-      const std::size_t   M = fast_length(N);
-      std::vector<double> y(M, 0.);
-      double              window_energy = 0.;
-      for (std::size_t n = 0; n < N; ++n)
-        {
-          const double w = 0.5 * (1. - std::cos(2. * M_PI * double(n) / double(N)));
-          y[n]           = w * (x[n] - mean);
-          window_energy += w * w;
-        }
-      Eigen::FFT<double>                fft;
-      std::vector<std::complex<double>> Y;
-      fft.fwd(Y, y);
-
-      // One-sided power of the lines in [lower, upper) of each band; the
-      // bands are increasing and contiguous or not, lines above the last
-      // band are not needed.
-      std::vector<double>       mean_square(B, 0.);
-      std::vector<unsigned int> lines(B, 0);
-      std::size_t               b = 0;
-      for (std::size_t k = 1; 2 * k <= M && b < B; ++k)
-        {
-          const double f = double(k) / (double(M) * dt);
-          while (b < B && f >= s.bands[b].upper)
-            ++b;
-          if (b < B && f >= s.bands[b].lower)
-            {
-              mean_square[b] += (2 * k == M ? 1. : 2.) * std::norm(Y[k]);
-              ++lines[b];
-            }
-        }
-
+      BandSpectrum              s = checked_spectrum(x, dt, reference, f_low, f_high);
+      const std::size_t         B = s.bands.size();
+      std::vector<double>       mean_square;
+      std::vector<BandLines>    lines;
+      segment_mean_squares(x, 0, hann(x.size()), fast_length(x.size()), dt, s.bands, mean_square,
+                           lines);
       s.rms.resize(B);
       s.level.resize(B);
-      const double scale = 1. / (double(M) * window_energy);
       for (std::size_t c = 0; c < B; ++c)
         {
-          // Guaranteed by the duration checked above; kept against rounding.
-          if (lines[c] == 0)
-            throw too_short();
-          s.rms[c] = std::sqrt(mean_square[c] * scale);
-          if (!std::isfinite(s.rms[c]))
-            throw NumericalError("one-third-octave spectrum: the rms in " + describe(s.bands[c]) +
-                                 " overflowed; scale the signal down");
-          s.level[c] =
-            s.rms[c] <= 1e-10 * reference ? level_floor : 20. * std::log10(s.rms[c] / reference);
+          // A line in every band is guaranteed by the duration checked.
+          if (lines[c].weight.empty())
+            throw NumericalError("one-third-octave spectrum: " + describe(s.bands[c]) +
+                                 " holds no line");
+          s.rms[c]   = std::sqrt(mean_square[c]);
+          s.level[c] = level_of(s.rms[c], reference, s.bands[c]);
         }
-      s.lines_in_lowest_band = lines[0];
+      s.lines_in_lowest_band = lines[0].weight.size();
+      return s;
+    }
+
+
+
+    BandSpectrum
+    welch_band_spectrum(const std::vector<double> &x,
+                        const double               dt,
+                        const double               reference,
+                        const double               f_low,
+                        const double               f_high,
+                        const unsigned int         lines_per_segment)
+    {
+      if (lines_per_segment == 0)
+        throw InputError("one-third-octave spectrum: lines per segment = 0; allowed: >= 1");
+      BandSpectrum      s = checked_spectrum(x, dt, reference, f_low, f_high);
+      const std::size_t B = s.bands.size();
+      const std::size_t N = x.size();
+      s.rms.resize(B);
+      s.level.resize(B);
+      s.standard_error.resize(B);
+      s.predicted_error.resize(B);
+      s.segments.resize(B);
+
+      // The bands that share a segment length share their segments.
+      std::map<std::size_t, std::vector<std::size_t>> by_length;
+      for (std::size_t b = 0; b < B; ++b)
+        {
+          const double want =
+            std::ceil(lines_per_segment / ((s.bands[b].upper - s.bands[b].lower) * dt));
+          by_length[want >= double(N) ? N : std::max<std::size_t>(2, std::size_t(want))]
+            .push_back(b);
+        }
+      const double to_db = 10. / std::log(10.);
+      for (const auto &[n, which] : by_length)
+        {
+          const std::size_t   hop   = std::max<std::size_t>(1, n / 2);
+          const unsigned      K     = n == N ? 1u : unsigned(1 + (N - n) / hop);
+          const std::size_t   start = N - (n + (K - 1) * hop);
+          const auto          w     = hann(n);
+          const std::size_t   M     = fast_length(n);
+          const double        overlap = overlap_factor(w, hop, K);
+          const auto          r       = line_correlation(w, M);
+          std::vector<FrequencyBand> bands;
+          for (const std::size_t b : which)
+            bands.push_back(s.bands[b]);
+          std::vector<std::vector<double>> power(K);
+          std::vector<BandLines>           lines;
+          for (unsigned k = 0; k < K; ++k)
+            segment_mean_squares(x, start + k * hop, w, M, dt, bands, power[k], lines);
+          for (std::size_t c = 0; c < which.size(); ++c)
+            {
+              const std::size_t b = which[c];
+              if (lines[c].weight.empty())
+                throw NumericalError("one-third-octave spectrum: " + describe(s.bands[b]) +
+                                     " holds no line");
+              double mean = 0.;
+              for (unsigned k = 0; k < K; ++k)
+                mean += power[k][c];
+              mean /= K;
+              s.rms[b]      = std::sqrt(mean);
+              s.level[b]    = level_of(s.rms[b], reference, s.bands[b]);
+              s.segments[b] = K;
+              s.predicted_error[b] =
+                to_db * std::sqrt(gaussian_relative_variance(r, lines[c].weight) * overlap / K);
+              if (K >= min_observed_segments && mean > 0.)
+                {
+                  double scatter = 0.;
+                  for (unsigned k = 0; k < K; ++k)
+                    scatter += (power[k][c] - mean) * (power[k][c] - mean);
+                  scatter /= (K - 1);
+                  s.standard_error[b] = to_db * std::sqrt(scatter * overlap / K) / mean;
+                }
+              else
+                s.standard_error[b] = s.predicted_error[b];
+              if (b == 0)
+                s.lines_in_lowest_band = lines[c].weight.size();
+            }
+        }
       return s;
     }
 
@@ -222,10 +440,23 @@ namespace greentread
         << "; level_dB = 20 log10(rms / reference), reference = " << format_number(s.reference)
         << " (unit of rms); levels of an rms <= 1e-10 reference are floored at " << level_floor
         << " dB\n";
-      o << "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB\n";
+      const bool errors = !s.standard_error.empty();
+      if (errors && (s.standard_error.size() != B || s.predicted_error.size() != B ||
+                     s.segments.size() != B))
+        throw InputError("band spectrum file '" + file.string() + "': " + std::to_string(B) +
+                         " bands but " + std::to_string(s.standard_error.size()) +
+                         " standard errors");
+      o << "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB"
+        << (errors ? ",standard_error_dB,predicted_error_dB,segments" : "") << '\n';
       for (std::size_t b = 0; b < B; ++b)
-        o << s.bands[b].nominal << ',' << s.bands[b].centre << ',' << s.bands[b].lower << ','
-          << s.bands[b].upper << ',' << s.rms[b] << ',' << s.level[b] << '\n';
+        {
+          o << s.bands[b].nominal << ',' << s.bands[b].centre << ',' << s.bands[b].lower << ','
+            << s.bands[b].upper << ',' << s.rms[b] << ',' << s.level[b];
+          if (errors)
+            o << ',' << s.standard_error[b] << ',' << s.predicted_error[b] << ','
+              << s.segments[b];
+          o << '\n';
+        }
       out.commit();
     }
   } // namespace analysis

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace greentread
 {
@@ -226,10 +227,26 @@ namespace greentread
 
 
     Eigen::VectorXd
-    ContactGrid::reporting_weights() const
+    ContactGrid::reporting_weights(const double along, const double across) const
     {
-      // The overlap of each contact rectangle with the cell |x| <= coarse_dx
-      // / 2, |y| <= coarse_dy / 2.
+      const double a = along > 0. ? along : coarse_dx, b = across > 0. ? across : coarse_dy;
+      // The grid's extent: the rectangles' outer edges.
+      const auto extent = [&](const unsigned axis, const double width) {
+        double e = 0.;
+        for (const auto &p : points)
+          e = std::max(e, std::abs(p[axis]) + 0.5 * width);
+        return e;
+      };
+      for (const auto &[name, size, half] :
+           {std::tuple<const char *, double, double>{"along", a, extent(0, dx)},
+            {"across", b, extent(1, dy)}})
+        if (!(size <= 2. * half * (1. + 1e-9)) || !std::isfinite(size))
+          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) + "' = " +
+                           format_number(1e3 * size) + " mm; allowed: 0 (the Green's-function "
+                           "rectangle) or up to the contact patch's " +
+                           format_number(1e3 * 2. * half) + " mm");
+      // The overlap of each contact rectangle with the cell |x| <= a / 2,
+      // |y| <= b / 2.
       // (A rectangle that only touches the cell, to round-off, gets none.)
       const auto overlap = [](const double centre, const double width, const double half) {
         const double o =
@@ -238,8 +255,7 @@ namespace greentread
       };
       Eigen::VectorXd w(points.size());
       for (unsigned int p = 0; p < points.size(); ++p)
-        w[p] = overlap(points[p][0], dx, 0.5 * coarse_dx) *
-               overlap(points[p][1], dy, 0.5 * coarse_dy) / (coarse_dx * coarse_dy);
+        w[p] = overlap(points[p][0], dx, 0.5 * a) * overlap(points[p][1], dy, 0.5 * b) / (a * b);
       return w;
     }
 

@@ -1,3 +1,4 @@
+#include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/contact/contact_parameters.h>
@@ -86,6 +87,7 @@ namespace greentread
       modal::PatchModelParameters::declare_parameters(prm);
       road::RoadTextureParameters::declare_parameters(prm);
       contact::RollingParameters::declare_parameters(prm);
+      analysis::SpectraParameters::declare_parameters(prm);
       contact::ContactGridParameters::declare_parameters(prm);
       declare_renamed_parameters(prm);
     }
@@ -109,7 +111,7 @@ namespace greentread
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
               "Identification", "Patch model", "Road texture", "Road/Sinusoid", "Rolling",
               "Contact grid", "Time stepping/Time step", "Convolution/Method",
-              "Convolution/Shape precision"};
+              "Convolution/Shape precision", "Spectra"};
     }
 
 

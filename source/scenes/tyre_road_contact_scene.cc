@@ -22,6 +22,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <tuple>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -71,11 +72,25 @@ namespace greentread
       patch_model.parse_parameters(prm);
       roads.parse_parameters(prm);
       rolling.parse_parameters(prm);
+      spectra.parse_parameters(prm);
       contact_grid.parse_parameters(prm);
       // The solver against the patch model, refused now rather than after
       // the Green's functions.
       contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                green.patch.points_along * green.patch.points_across);
+
+      // The reporting cell must lie in the patch; checked now, not after the
+      // Green's functions.
+      for (const auto &[name, size, patch_size] :
+           {std::tuple<const char *, double, double>{"along", spectra.reporting_along,
+                                                     green.patch.length},
+            {"across", spectra.reporting_across, green.patch.width}})
+        if (size > patch_size * (1. + 1e-9))
+          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) + "' = " +
+                           format_number(1e3 * size) + " mm; allowed: 0 (the Green's-function "
+                           "rectangle) or up to the contact patch's " +
+                           format_number(1e3 * patch_size) + " mm ('Green's functions/Patch " +
+                           (std::string(name) == "along" ? "length" : "width") + "')");
 
       // A texture file is read now, not after the Green's functions (five
       // minutes): a malformed file, or one too narrow or too short for the
@@ -182,6 +197,14 @@ namespace greentread
       std::cout << "  the contact solved by "
                 << (grid.matrix_free ? "projected CG (matrix-free)" : "block principal pivoting")
                 << " ('Contact grid/Solver' = " << contact_grid.solver << ")\n";
+      {
+        const double along  = spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;
+        const double across = spectra.reporting_across > 0. ? spectra.reporting_across : grid.coarse_dy;
+        std::cout << "  the stress at the patch centre: the mean over a "
+                  << format_printf("%.3g", 1e3 * along) << " x " << format_printf("%.3g", 1e3 * across)
+                  << " mm cell ('Spectra/Reporting cell along', 'across'), nulls at V / "
+                  << format_printf("%.3g", 1e3 * along) << " mm\n";
+      }
       const analysis::PatchLattice lattice(grid.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
       const Eigen::MatrixXd        G0    = synthesis::static_line(G);
@@ -221,7 +244,7 @@ namespace greentread
       const unsigned int threads = dealii::MultithreadInfo::n_threads();
       const unsigned int side_by_side =
         static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
-      std::vector<analysis::RunSpectrum> spectra(n_runs);
+      std::vector<analysis::RunSpectrum> run_spectra(n_runs);
       std::vector<std::exception_ptr>    failures(n_runs);
       std::atomic<std::size_t>           next{0};
       std::atomic<unsigned int>          done{0};
@@ -236,7 +259,7 @@ namespace greentread
               const RoadOfRuns &r = *road_list[k / rolling.speeds.size()];
               try
                 {
-                  spectra[k] = roll(model, grid, G0, tread, lattice, r.texture, r.patch_road,
+                  run_spectra[k] = roll(model, grid, G0, tread, lattice, r.texture, r.patch_road,
                                     r.name, rolling.speeds[k % rolling.speeds.size()],
                                     directory, record, std::max(1u, threads / side_by_side));
                 }
@@ -254,8 +277,9 @@ namespace greentread
           std::rethrow_exception(f);
 
       // Stage analysis: the spectra per road (speeds) and per speed (roads).
-      analysis::write_spectra(directory, spectra, roads.roads, rolling.speeds,
-                              rolling.stress_reference, model.f_max, record);
+      analysis::write_spectra(directory, run_spectra, roads.roads, rolling.speeds,
+                              rolling.stress_reference, model.f_max, spectra, rolling.distance,
+                              record);
       if (global.print_timings)
         std::cout << "Total run time "
                   << format_printf("%.3g", std::chrono::duration<double>(
@@ -406,12 +430,14 @@ namespace greentread
                 << format_printf("%.4g", equilibrium.q.sum()) << " N, "
                 << equilibrium.n_contact << " of " << n_p << " points in contact\n";
       const double tributary = patch_road.dx_points * patch_road.dy_points;
+      const Eigen::VectorXd reporting =
+        grid.reporting_weights(spectra.reporting_along, spectra.reporting_across);
 
       RunResult result;
       result.road  = road_name;
       result.speed = speed_kmh;
       result.steps = n_steps;
-      analysis::RunOutput output(directory, run, lattice, V, tributary, grid.reporting_weights(),
+      analysis::RunOutput output(directory, run, lattice, V, tributary, reporting,
                                  n_steps, rolling.frames, record);
       base::Progress      progress("    " + run, n_steps);
       const auto observe = [&](const contact::RollingStep &step) {
@@ -443,14 +469,16 @@ namespace greentread
         out << "    the spectrum ends at the " << format_number(top_band)
                   << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)
                   << " us resolves up to " << format_printf("%.0f", 0.5 / dt) << " Hz\n";
-      result.spectrum = analysis::third_octave_spectrum(
-        output.centre_stress(), dt, rolling.stress_reference, 100., top_band);
+      result.spectrum = analysis::welch_band_spectrum(output.centre_stress(), dt,
+                                                      rolling.stress_reference, 100., top_band,
+                                                      spectra.lines_per_segment);
       analysis::write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"),
                                         result.spectrum,
                                         "contact stress at the patch centre (the mean over the "
                                         "reporting cell), Pa");
       const analysis::BandSpectrum force_spectrum =
-        analysis::third_octave_spectrum(output.total_force(), dt, 1., 100., top_band);
+        analysis::welch_band_spectrum(output.total_force(), dt, 1., 100., top_band,
+                                      spectra.lines_per_segment);
       analysis::write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
                                         force_spectrum, "total contact force, N");
       out << "    " << run << ": mean total force " << format_printf("%.4g", result.mean_force)

@@ -70,6 +70,23 @@ BOOST_AUTO_TEST_CASE(lattice_and_reporting_cell)
             BOOST_TEST(std::abs(grid.points[p][1]) < 0.5 * (grid.coarse_dy + grid.dy));
           }
       BOOST_TEST(covered == (s % 2 == 0 ? s * s : (s + 1) * (s + 1)));
+
+      // A reporting cell of its own size ('Spectra/Reporting cell'): the
+      // whole patch weighs every contact rectangle alike; a cell of 2 x 2
+      // contact rectangles on an even subdivision covers those four; a cell
+      // larger than the patch is refused.
+      const Eigen::VectorXd all = grid.reporting_weights(0.06, 0.08);
+      BOOST_TEST(all.minCoeff() == 1. / grid.n_points(), boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(all.maxCoeff() == 1. / grid.n_points(), boost::test_tools::tolerance(1e-12));
+      if (s % 2 == 0)
+        {
+          const Eigen::VectorXd four = grid.reporting_weights(2. * grid.dx, 2. * grid.dy);
+          BOOST_TEST(four.sum() == 1., boost::test_tools::tolerance(1e-12));
+          BOOST_TEST((four.array() > 0.).count() == 4);
+          BOOST_TEST(four.maxCoeff() == 0.25, boost::test_tools::tolerance(1e-12));
+        }
+      BOOST_CHECK_THROW(grid.reporting_weights(0.07, 0.), InputError);
+      BOOST_CHECK_THROW(grid.reporting_weights(0., 0.09), InputError);
     }
   BOOST_CHECK_THROW(contact::ContactGrid(coarse, 0, tread_layer), InputError);
   auto not_a_lattice = coarse;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -152,8 +153,9 @@ BOOST_AUTO_TEST_CASE(a_tone_at_a_band_centre_gives_its_rms_in_that_band)
             }
         }
       const auto s = analysis::third_octave_spectrum(sine(A, 1000., n_samples), dt, reference);
-      // Lines k / (M dt) in [89.13, 112.2) Hz: 90..112 Hz, or 71..88 x 1.264 Hz.
-      BOOST_TEST(s.lines_in_lowest_band == (n_samples == 25600 ? 23u : 18u));
+      // Lines whose cells [k - 1/2, k + 1/2) / (M dt) reach into [89.13,
+      // 112.2) Hz: k = 89..112 at 1 Hz, or 70..89 at 1.264 Hz (M = 20250).
+      BOOST_TEST(s.lines_in_lowest_band == (n_samples == 25600 ? 24u : 20u));
       BOOST_TEST_MESSAGE("N = " << n_samples << ": worst in-band error " << worst_error
                                 << " dB, neighbours at most " << worst_neighbour
                                 << " dB, bands two away at most " << worst_two_away << " dB");
@@ -213,6 +215,156 @@ BOOST_AUTO_TEST_CASE(white_noise_spreads_its_variance_evenly_over_frequency)
                                << total / expected);
       BOOST_TEST(total == expected, boost::test_tools::tolerance(0.05));
     }
+}
+
+namespace
+{
+  /**
+   * Over @p realisations independent records made by @p make(seed), the
+   * spread (standard deviation) of each band's Welch level against the
+   * standard error each record predicts for itself (their rms): the ratio
+   * per band, and the segments of each band.
+   */
+  template <typename Make>
+  void
+  spread_against_standard_errors(const Make &make, const unsigned realisations,
+                                 std::vector<double> &ratio, std::vector<unsigned> &segments,
+                                 std::vector<double> &mean_level, std::vector<double> &se_rms)
+  {
+    std::vector<double> sum, sum2, se2;
+    for (unsigned r = 0; r < realisations; ++r)
+      {
+        const auto s = analysis::welch_band_spectrum(make(r), dt, 1.);
+        sum.resize(s.bands.size(), 0.);
+        sum2.resize(s.bands.size(), 0.);
+        se2.resize(s.bands.size(), 0.);
+        segments = s.segments;
+        for (std::size_t b = 0; b < s.bands.size(); ++b)
+          {
+            sum[b] += s.level[b];
+            sum2[b] += s.level[b] * s.level[b];
+            se2[b] += s.standard_error[b] * s.standard_error[b];
+          }
+      }
+    ratio.resize(sum.size());
+    mean_level.resize(sum.size());
+    se_rms.resize(sum.size());
+    for (std::size_t b = 0; b < sum.size(); ++b)
+      {
+        mean_level[b]    = sum[b] / realisations;
+        const double var = (sum2[b] - sum[b] * sum[b] / realisations) / (realisations - 1);
+        se_rms[b]        = std::sqrt(se2[b] / realisations);
+        ratio[b]         = std::sqrt(var) / se_rms[b];
+      }
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_records)
+{
+  // Each band's standard error, from one record, against the spread of its
+  // level over 40 independent records (the truth the error bar claims).
+  // 0.5 s at 25.6 kHz: the 100 and 125 Hz bands have 1 and 2 segments of
+  // 8 lines (the Gaussian prediction), the bands from 160 Hz 3 to 144 (their
+  // own scatter). Three signals:
+  //  - white Gaussian noise: its levels also match the exact band mean
+  //    square 2 dt (upper - lower) of unit variance;
+  //  - Gaussian noise through a resonance at 1 kHz (Q = 5), 20 dB of slope
+  //    across some bands;
+  //  - sparse impulses (0.2% of the samples), far from Gaussian: the
+  //    segments' scatter must still give the spread.
+  // The bound is the factor 1.5 the error bars are held to (issue 45); the
+  // spread of 40 records is itself known to 11%.
+  constexpr unsigned realisations = 40;
+  const std::size_t  N            = 12800;
+  const auto         white        = [&](const unsigned seed) {
+    std::mt19937                     random(100 + seed);
+    std::normal_distribution<double> normal(0., 1.);
+    std::vector<double>              x(N);
+    for (auto &v : x)
+      v = normal(random);
+    return x;
+  };
+  const auto resonant = [&](const unsigned seed) {
+    // y_n = e_n + 2 r cos(w) y_{n-1} - r^2 y_{n-2}, pole radius r from Q.
+    const double w = 2. * M_PI * 1000. * dt, r = std::exp(-w / (2. * 5.));
+    auto         x = white(1000 + seed);
+    double       y1 = 0., y2 = 0.;
+    for (auto &v : x)
+      {
+        const double y = v + 2. * r * std::cos(w) * y1 - r * r * y2;
+        y2             = y1;
+        y1             = y;
+        v              = y;
+      }
+    return x;
+  };
+  const auto impulses = [&](const unsigned seed) {
+    std::mt19937                           random(5000 + seed);
+    std::uniform_real_distribution<double> u(0., 1.);
+    std::vector<double>                    x(N, 0.);
+    for (auto &v : x)
+      v = u(random) < 2e-3 ? 1. : 0.;
+    return x;
+  };
+  std::vector<double>   ratio, mean_level, se_rms;
+  std::vector<unsigned> segments;
+  const std::vector<std::pair<std::string, std::function<std::vector<double>(unsigned)>>> signals =
+    {{"white", white}, {"resonant", resonant}, {"impulses", impulses}};
+  for (const auto &[name, make] : signals)
+    BOOST_TEST_CONTEXT(name)
+    {
+      spread_against_standard_errors(make, realisations, ratio, segments, mean_level, se_rms);
+      const auto bands = analysis::third_octave_bands(100., 5000.);
+      double     low = 1e9, high = 0.;
+      for (std::size_t b = 0; b < ratio.size(); ++b)
+        {
+          low  = std::min(low, ratio[b]);
+          high = std::max(high, ratio[b]);
+          BOOST_TEST_MESSAGE(name << ": " << bands[b].nominal << " Hz, " << segments[b]
+                                  << " segments: spread / standard error " << ratio[b]);
+          // The Gaussian prediction is not held to it for the impulses:
+          // 26 impulses in a record make a band's power far from Gaussian
+          // (measured 1.55 in the 100 Hz band, one segment).
+          if (name == "impulses" && segments[b] < analysis::min_observed_segments)
+            continue;
+          BOOST_TEST(ratio[b] >= 1. / 1.5, bands[b].nominal << " Hz");
+          BOOST_TEST(ratio[b] <= 1.5, bands[b].nominal << " Hz");
+          if (name == "white")
+            {
+              const double exact =
+                10. * std::log10(2. * dt * (bands[b].upper - bands[b].lower));
+              // Within 3 standard errors of the mean of 40 levels, beside
+              // the mean of a logarithm's bias, -(SE / 4.34)^2 / 2 in
+              // 4.34 ln units.
+              const double se = se_rms[b];
+              BOOST_TEST(std::abs(mean_level[b] - exact) <=
+                           3. * se / std::sqrt(double(realisations)) + se * se / 8.7,
+                         bands[b].nominal << " Hz: " << mean_level[b] << " against " << exact);
+            }
+        }
+      BOOST_TEST_MESSAGE(name << ": spread / standard error from " << low << " to " << high);
+      BOOST_TEST(segments.front() < analysis::min_observed_segments);
+      BOOST_TEST(segments.back() >= analysis::min_observed_segments);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(welch_on_one_segment_is_the_whole_record_spectrum)
+{
+  // A record shorter than the segments of every band: one segment each,
+  // the same levels as third_octave_spectrum().
+  std::mt19937                     random(3);
+  std::normal_distribution<double> normal(0., 1.);
+  std::vector<double>              x(1200);
+  for (auto &v : x)
+    v = normal(random);
+  const auto welch = analysis::welch_band_spectrum(x, dt, 1., 1000., 5000., 400);
+  const auto whole = analysis::third_octave_spectrum(x, dt, 1., 1000., 5000.);
+  for (std::size_t b = 0; b < whole.bands.size(); ++b)
+    {
+      BOOST_TEST(welch.segments[b] == 1u);
+      BOOST_TEST(welch.level[b] == whole.level[b], boost::test_tools::tolerance(1e-12));
+    }
+  BOOST_CHECK_THROW(analysis::welch_band_spectrum(x, dt, 1., 1000., 5000., 0), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(zero_content_is_floored_and_the_csv_file_is_complete)

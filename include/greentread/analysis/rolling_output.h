@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/analysis/spectra_parameters.h>
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
@@ -131,12 +132,19 @@ namespace greentread
      * spectra_<V>kmh.png (Figure A.15), the total force's spectra_force.csv
      * and spectra_force_<road>.png, and on screen each run's highest band and
      * spectral centroid of both.
+     * Each level comes with its standard error (welch_band_spectrum()):
+     * a column of the CSV files, a shaded band of +- one standard error
+     * around each curve, and on screen the bands from
+     * @p spectra.target_from up whose error exceeds @p spectra.target_error,
+     * with the distance that would meet it.
      * @param[in] stress_reference sigma_0 of the levels [Pa].
      * @param[in] f_max The Green's functions' highest line [Hz].
+     * @param[in] distance The distance each run rolled [m].
      */
     void
     write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &runs,
                   const std::vector<std::string> &roads, const std::vector<double> &speeds,
-                  double stress_reference, double f_max, const base::ParameterRecord &record);
+                  double stress_reference, double f_max, const SpectraParameters &spectra,
+                  double distance, const base::ParameterRecord &record);
   } // namespace analysis
 } // namespace greentread

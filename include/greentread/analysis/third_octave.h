@@ -61,15 +61,30 @@ namespace greentread
       std::vector<double> level;
       double              reference; ///< reference rms of the levels [signal unit]
       /**
-       * Number of discrete Fourier lines in the lowest (narrowest) band, at
-       * least 1: the spectrum's resolution. With the Hann window a pure
+       * Number of discrete Fourier lines with a share in the lowest
+       * (narrowest) band, at least 1: the spectrum's resolution. With the Hann window a pure
        * tone's power lies on the two to four lines nearest its frequency, so
        * a tone within about one line spacing 1 / (N dt) of a band edge
        * shares its power with the neighbouring band (in a band of few lines
        * that is most of the band).
        */
       unsigned int lines_in_lowest_band;
+      /**
+       * The standard error of each level [dB], from welch_band_spectrum();
+       * empty from third_octave_spectrum(). It is the scatter of the band's
+       * power over the Welch segments when there are at least
+       * min_observed_segments of them, and @p predicted otherwise.
+       */
+      std::vector<double> standard_error;
+      /// The standard error a Gaussian signal would give [dB], from the
+      /// band's lines and the segments' windows (welch_band_spectrum()).
+      std::vector<double> predicted_error;
+      /// The Welch segments of each band (1: the whole record).
+      std::vector<unsigned int> segments;
     };
+
+    /// The segments a band needs before its standard error is their scatter.
+    constexpr unsigned int min_observed_segments = 3;
 
     /**
      * @brief The one-third-octave band spectrum of the real signal
@@ -79,12 +94,15 @@ namespace greentread
      * w_n = (1 - cos(2 pi n / N)) / 2 applied; the windowed record is
      * zero-padded to the smallest length M >= N of the form 2^a 3^b 5^c
      * and Fourier transformed (Eigen's FFT), Y_k. The mean square in a band
-     * is the one-sided power of the lines k > 0 whose frequency k / (M dt)
-     * lies in [lower, upper),
+     * is the one-sided power of the lines k > 0, each weighted by the share
+     * a_k of its cell [k - 1/2, k + 1/2) / (M dt) that lies in
+     * [lower, upper),
      * @f[
      *   \langle x^2 \rangle_b = \frac{2}{M \sum_n w_n^2}
-     *                           \sum_{k \in b} |Y_k|^2 ,
+     *                           \sum_{k} a_k |Y_k|^2 ,
      * @f]
+     * so that a flat spectrum gives exactly the band's width, however few
+     * lines the band holds (a line at an edge is shared by the two bands),
      * normalised by the window's energy (sum_n w_n^2 = 3N/8): by Parseval,
      * summed over all lines this is the windowed record's mean square
      * divided by that of the window, so a stationary signal keeps its rms
@@ -120,12 +138,54 @@ namespace greentread
                           double                     f_high = 5000.);
 
     /**
+     * @brief The one-third-octave band spectrum of x_n = x(n dt) averaged
+     * over segments (Welch's method), with the standard error of each level.
+     *
+     * Each band b gets its own segment length, the shorter of the record
+     * and the N_b samples that put @p lines_per_segment Fourier lines in the
+     * band, N_b = ceil(lines_per_segment / ((upper - lower) dt)); a record of
+     * at most N_b samples is one segment, as in third_octave_spectrum(). The
+     * segments overlap by half and end with the record (the samples left
+     * over are dropped from its start, where the run starts). Each segment
+     * has its mean removed, the periodic Hann window and the band's mean
+     * square as third_octave_spectrum(); the level is that of the mean over
+     * the K_b segments.
+     *
+     * The standard error of a level is 10 log10(e) times the relative
+     * standard error of the mean power (first order in it):
+     *  - with K_b >= min_observed_segments, from the segments' own scatter,
+     *    s_P^2 / K_b, times the overlap's factor
+     *    1 + 2 sum_j (1 - j / K_b) rho_j^2 with rho_j the window's overlap
+     *    correlation at j hops (Welch 1967): no assumption on the signal's
+     *    distribution;
+     *  - otherwise the prediction for a Gaussian signal with a flat spectrum
+     *    across the band: the band sums n lines whose Hann-windowed Fourier
+     *    coefficients correlate as the window's squared transform, so the
+     *    relative variance of a segment's band power is
+     *    sum_{k,k'} |r(k - k')|^2 / n^2 (1.94 / n for many lines), divided
+     *    among the segments by the same overlap factor.
+     *
+     * @param[in] lines_per_segment The lines a band's segment holds, >= 1.
+     * @throws the errors of third_octave_spectrum(), and InputError if
+     * @p lines_per_segment is 0.
+     */
+    BandSpectrum
+    welch_band_spectrum(const std::vector<double> &x,
+                        double                     dt,
+                        double                     reference,
+                        double                     f_low             = 100.,
+                        double                     f_high            = 5000.,
+                        unsigned int               lines_per_segment = 8);
+
+    /**
      * @brief Write @p spectrum as CSV, under a temporary name renamed when
      * complete (base::AtomicFile): a comment line `# ...` naming
      * @p quantity_and_unit (e.g. "sound pressure [Pa]"), the reference and
      * the level floor, the header
-     * `nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB`, and one row per
-     * band, 12 significant digits.
+     * `nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB`, followed by
+     * `standard_error_dB,predicted_error_dB,segments` when the spectrum has
+     * standard errors (welch_band_spectrum()), and one row per band, 12
+     * significant digits.
      * @throws InputError if the file cannot be written.
      */
     void

@@ -156,14 +156,17 @@ namespace greentread
       apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
 
       /**
-       * @brief The weights of the reporting cell: a coarse cell's size,
-       * centred at the patch centre (x0 = 0, y0 = 0), whatever the grid. The
-       * stress there is \f$\sum_p w_p \sigma_p\f$, the mean of the piecewise
-       * constant stress over the cell (each w_p is the area of the cell that
-       * contact rectangle p covers, over the cell's area).
+       * @brief The weights of the reporting cell, @p along x @p across [m]
+       * centred at the patch centre (x0 = 0, y0 = 0), whatever the grid; 0
+       * for either: a coarse cell's size (the Green's-function rectangle).
+       * The stress there is \f$\sum_p w_p \sigma_p\f$, the mean of the
+       * piecewise constant stress over the cell (each w_p is the area of the
+       * cell that contact rectangle p covers, over the cell's area).
+       * @throws InputError naming 'Spectra/Reporting cell along' or
+       * 'across' if the cell is not inside the grid.
        */
       Eigen::VectorXd
-      reporting_weights() const;
+      reporting_weights(double along = 0., double across = 0.) const;
 
       unsigned int subdivisions = 1;
       /// The contact points, a lattice p = i_x ny + i_y, x and y increasing.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <greentread/analysis/rolling_output.h>
+#include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/contact/contact_grid.h>
@@ -79,6 +80,7 @@ namespace greentread
       modal::PatchModelParameters        patch_model;
       road::RoadTextureParameters        roads;
       contact::RollingParameters         rolling;
+      analysis::SpectraParameters        spectra;
       contact::ContactGridParameters     contact_grid;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+/**
+ * @file
+ * Subsection "Spectra": how the tyre-road-contact scene estimates its band
+ * levels and their standard errors (analysis::welch_band_spectrum()).
+ * Implemented in source/analysis/spectra_parameters.cc.
+ */
+
+namespace greentread
+{
+  namespace analysis
+  {
+    /// Subsection "Spectra".
+    struct SpectraParameters
+    {
+      unsigned int lines_per_segment = 8;
+      double       target_error      = 1.;   ///< [dB]
+      double       target_from       = 250.; ///< the lowest band the target covers [Hz]
+      /// The reporting cell along x and across y [m]; 0: the Green's-function rectangle.
+      double reporting_along = 0., reporting_across = 0.;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      /// @throws InputError naming 'Spectra/Target from' if it is no band's
+      /// nominal centre from 100 Hz to 5 kHz.
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace analysis
+} // namespace greentread

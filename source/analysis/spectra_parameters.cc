@@ -1,0 +1,72 @@
+#include <greentread/analysis/spectra_parameters.h>
+#include <greentread/analysis/third_octave.h>
+#include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
+
+#include <cmath>
+#include <string>
+
+namespace greentread
+{
+  namespace analysis
+  {
+    void
+    SpectraParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Spectra");
+      {
+        prm.declare_entry(
+          "Lines per segment", "8", dealii::Patterns::Integer(1, 1000),
+          "The Fourier lines each one-third-octave band holds in one segment of Welch's "
+          "average: each band is averaged over segments of its own length (overlapping by "
+          "half), so a band's level comes from as many segments as the record holds, and its "
+          "standard error from their scatter once there are 3 or more. More lines: less "
+          "leakage across the band's edges, fewer segments.");
+        prm.declare_entry(
+          "Standard error target", "1", base::RangePattern::closed(0.01, 20., "dB"),
+          "The standard error each band's level should reach, from 'Target from' up. The run "
+          "says which bands of each road and speed exceed it and the 'Rolling/Distance' that "
+          "would meet it (the standard error falls as one over the square root of the record).");
+        prm.declare_entry("Target from", "250", base::RangePattern::closed(100., 5000., "Hz"),
+                          "The lowest one-third-octave band (its nominal centre) the standard "
+                          "error target applies to.");
+        for (const char *direction : {"along", "across"})
+          prm.declare_entry(
+            std::string("Reporting cell ") + direction, "0",
+            base::RangePattern::non_negative("mm"),
+            std::string("The reporting cell's size ") + direction +
+              " the road, in mm: the stress at the patch centre (its history and spectra) is "
+              "the mean over this cell, centred at the patch centre, whatever the contact grid. "
+              "0: the Green's-function rectangle ('Green's functions/Patch length' and 'Patch "
+              "width' over 'Points along' and 'Points across'; 6 x 6.67 mm by default). A mean "
+              "over a length a along the road at speed V has nulls at V / a and its multiples "
+              "(a = 6 mm: 3.2 kHz at 70 km/h): set the size of the pressure sensor a run is "
+              "compared with.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    SpectraParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Spectra");
+      {
+        lines_per_segment = prm.get_integer("Lines per segment");
+        target_error      = prm.get_double("Standard error target");
+        target_from       = prm.get_double("Target from");
+        reporting_along   = 1e-3 * prm.get_double("Reporting cell along");
+        reporting_across  = 1e-3 * prm.get_double("Reporting cell across");
+      }
+      prm.leave_subsection();
+      bool is_band = false;
+      for (const auto &band : third_octave_bands(100., 5000.))
+        is_band = is_band || std::abs(band.nominal - target_from) < 1e-9 * target_from;
+      if (!is_band)
+        throw InputError("parameter 'Spectra/Target from' = " + format_number(target_from) +
+                         " Hz; allowed: the nominal centre of a one-third-octave band from 100 "
+                         "Hz to 5 kHz (100, 125, 160, 200, 250, 315, 400, 500, ... Hz)");
+    }
+  } // namespace analysis
+} // namespace greentread
