@@ -408,6 +408,10 @@ namespace greentread
                     scatter += (power[k][c] - mean) * (power[k][c] - mean);
                   scatter /= (K - 1);
                   s.standard_error[b] = to_db * std::sqrt(scatter * overlap / K) / mean;
+                  // A few segments' scatter can come out low by chance: the
+                  // Gaussian prediction is its floor until there are enough.
+                  if (K < floor_segments)
+                    s.standard_error[b] = std::max(s.standard_error[b], s.predicted_error[b]);
                 }
               else
                 s.standard_error[b] = s.predicted_error[b];

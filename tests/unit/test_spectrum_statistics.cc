@@ -5,6 +5,7 @@
 // Welch spectrum (analysis::welch_band_spectrum) predicts a standard error
 // per band, and the levels of 30 records spread by what the error bars say.
 
+#include "band_spread.h"
 #include "patch_rolling.h"
 #include "synthetic_patch.h"
 
@@ -18,42 +19,6 @@
 #include <vector>
 
 using namespace greentread;
-
-namespace
-{
-  /// Per band: the mean, the standard deviation over the records and the
-  /// rms of the standard errors the records predict.
-  struct Spread
-  {
-    std::vector<double> sum, sum2, se2;
-    std::vector<unsigned> segments;
-    unsigned              records = 0;
-
-    void
-    add(const analysis::BandSpectrum &s)
-    {
-      sum.resize(s.bands.size(), 0.);
-      sum2.resize(s.bands.size(), 0.);
-      se2.resize(s.bands.size(), 0.);
-      segments = s.segments;
-      for (std::size_t b = 0; b < s.bands.size(); ++b)
-        {
-          sum[b] += s.level[b];
-          sum2[b] += s.level[b] * s.level[b];
-          se2[b] += s.standard_error[b] * s.standard_error[b];
-        }
-      ++records;
-    }
-
-    /// The observed spread over the predicted standard error.
-    double
-    ratio(const std::size_t b) const
-    {
-      const double var = (sum2[b] - sum[b] * sum[b] / records) / (records - 1);
-      return std::sqrt(var / (se2[b] / records));
-    }
-  };
-} // namespace
 
 BOOST_AUTO_TEST_SUITE(spectrum_statistics)
 
@@ -102,7 +67,7 @@ BOOST_AUTO_TEST_CASE(standard_errors_match_the_spread_over_records_of_one_road)
 
   const std::size_t per_record = F.size() / records;
   BOOST_TEST(per_record == 3125u);
-  Spread total, point;
+  test::BandSpread total, point;
   for (unsigned r = 0; r < records; ++r)
     {
       const auto cut = [&](const std::vector<double> &x) {
@@ -113,7 +78,7 @@ BOOST_AUTO_TEST_CASE(standard_errors_match_the_spread_over_records_of_one_road)
     }
 
   const auto bands = analysis::third_octave_bands(100., 5000.);
-  for (const auto &[name, spread] : {std::pair<std::string, const Spread *>{"total", &total},
+  for (const auto &[name, spread] : {std::pair<std::string, const test::BandSpread *>{"total", &total},
                                      {"centre point", &point}})
     {
       double low = 1e9, high = 0.;

@@ -2,6 +2,7 @@
 // the IEC 61260-1 band table, the rms of pure tones (A / sqrt(2) in their
 // band), superposition of two tones, the mean square of white noise per
 // unit bandwidth, the level floor, the CSV file, and refused inputs.
+#include "band_spread.h"
 #include "scratch.h"
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
@@ -217,48 +218,6 @@ BOOST_AUTO_TEST_CASE(white_noise_spreads_its_variance_evenly_over_frequency)
     }
 }
 
-namespace
-{
-  /**
-   * Over @p realisations independent records made by @p make(seed), the
-   * spread (standard deviation) of each band's Welch level against the
-   * standard error each record predicts for itself (their rms): the ratio
-   * per band, and the segments of each band.
-   */
-  template <typename Make>
-  void
-  spread_against_standard_errors(const Make &make, const unsigned realisations,
-                                 std::vector<double> &ratio, std::vector<unsigned> &segments,
-                                 std::vector<double> &mean_level, std::vector<double> &se_rms)
-  {
-    std::vector<double> sum, sum2, se2;
-    for (unsigned r = 0; r < realisations; ++r)
-      {
-        const auto s = analysis::welch_band_spectrum(make(r), dt, 1.);
-        sum.resize(s.bands.size(), 0.);
-        sum2.resize(s.bands.size(), 0.);
-        se2.resize(s.bands.size(), 0.);
-        segments = s.segments;
-        for (std::size_t b = 0; b < s.bands.size(); ++b)
-          {
-            sum[b] += s.level[b];
-            sum2[b] += s.level[b] * s.level[b];
-            se2[b] += s.standard_error[b] * s.standard_error[b];
-          }
-      }
-    ratio.resize(sum.size());
-    mean_level.resize(sum.size());
-    se_rms.resize(sum.size());
-    for (std::size_t b = 0; b < sum.size(); ++b)
-      {
-        mean_level[b]    = sum[b] / realisations;
-        const double var = (sum2[b] - sum[b] * sum[b] / realisations) / (realisations - 1);
-        se_rms[b]        = std::sqrt(se2[b] / realisations);
-        ratio[b]         = std::sqrt(var) / se_rms[b];
-      }
-  }
-} // namespace
-
 BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_records)
 {
   // Each band's standard error, from one record, against the spread of its
@@ -306,29 +265,32 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
       v = u(random) < 2e-3 ? 1. : 0.;
     return x;
   };
-  std::vector<double>   ratio, mean_level, se_rms;
-  std::vector<unsigned> segments;
+
   const std::vector<std::pair<std::string, std::function<std::vector<double>(unsigned)>>> signals =
     {{"white", white}, {"resonant", resonant}, {"impulses", impulses}};
   for (const auto &[name, make] : signals)
     BOOST_TEST_CONTEXT(name)
     {
-      spread_against_standard_errors(make, realisations, ratio, segments, mean_level, se_rms);
+      test::BandSpread spread;
+      for (unsigned r = 0; r < realisations; ++r)
+        spread.add(analysis::welch_band_spectrum(make(r), dt, 1.));
+      const auto &segments = spread.segments;
       const auto bands = analysis::third_octave_bands(100., 5000.);
       double     low = 1e9, high = 0.;
-      for (std::size_t b = 0; b < ratio.size(); ++b)
+      for (std::size_t b = 0; b < bands.size(); ++b)
         {
-          low  = std::min(low, ratio[b]);
-          high = std::max(high, ratio[b]);
+          const double ratio = spread.ratio(b);
+          low                = std::min(low, ratio);
+          high               = std::max(high, ratio);
           BOOST_TEST_MESSAGE(name << ": " << bands[b].nominal << " Hz, " << segments[b]
-                                  << " segments: spread / standard error " << ratio[b]);
+                                  << " segments: spread / standard error " << ratio);
           // The Gaussian prediction is not held to it for the impulses:
           // 26 impulses in a record make a band's power far from Gaussian
           // (measured 1.55 in the 100 Hz band, one segment).
           if (name == "impulses" && segments[b] < analysis::min_observed_segments)
             continue;
-          BOOST_TEST(ratio[b] >= 1. / 1.5, bands[b].nominal << " Hz");
-          BOOST_TEST(ratio[b] <= 1.5, bands[b].nominal << " Hz");
+          BOOST_TEST(ratio >= 1. / 1.5, bands[b].nominal << " Hz");
+          BOOST_TEST(ratio <= 1.5, bands[b].nominal << " Hz");
           if (name == "white")
             {
               const double exact =
@@ -336,10 +298,10 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
               // Within 3 standard errors of the mean of 40 levels, beside
               // the mean of a logarithm's bias, -(SE / 4.34)^2 / 2 in
               // 4.34 ln units.
-              const double se = se_rms[b];
-              BOOST_TEST(std::abs(mean_level[b] - exact) <=
+              const double se = spread.standard_error(b);
+              BOOST_TEST(std::abs(spread.mean(b) - exact) <=
                            3. * se / std::sqrt(double(realisations)) + se * se / 8.7,
-                         bands[b].nominal << " Hz: " << mean_level[b] << " against " << exact);
+                         bands[b].nominal << " Hz: " << spread.mean(b) << " against " << exact);
             }
         }
       BOOST_TEST_MESSAGE(name << ": spread / standard error from " << low << " to " << high);

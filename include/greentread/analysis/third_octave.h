@@ -85,6 +85,10 @@ namespace greentread
 
     /// The segments a band needs before its standard error is their scatter.
     constexpr unsigned int min_observed_segments = 3;
+    /// Below this many segments the scatter's error is at least the
+    /// Gaussian prediction (a few segments' scatter can come out low by
+    /// chance).
+    constexpr unsigned int floor_segments = 10;
 
     /**
      * @brief The one-third-octave band spectrum of the real signal
@@ -157,7 +161,9 @@ namespace greentread
      *    s_P^2 / K_b, times the overlap's factor
      *    1 + 2 sum_j (1 - j / K_b) rho_j^2 with rho_j the window's overlap
      *    correlation at j hops (Welch 1967): no assumption on the signal's
-     *    distribution;
+     *    distribution; with fewer than floor_segments, at least the Gaussian
+     *    prediction below (a few segments' scatter can come out low by
+     *    chance; a pure tone's is zero);
      *  - otherwise the prediction for a Gaussian signal with a flat spectrum
      *    across the band: the band sums n lines whose Hann-windowed Fourier
      *    coefficients correlate as the window's squared transform, so the
