@@ -298,7 +298,8 @@ namespace greentread
           << "functions end at " << format_number(f_max) << " Hz; Welch's average over "
           << "segments of " << spectra.lines_per_segment << " lines per band, standard_error_dB "
           << "one standard error of the level (the segments' scatter with " << min_observed_segments
-          << " or more, a Gaussian signal's otherwise)\n"
+          << " or more, and at least a Gaussian signal's below " << floor_segments
+          << "; a Gaussian signal's with fewer)\n"
           << "road,speed_kmh,band_Hz,level_dB,standard_error_dB,segments\n";
         for (const auto &r : results)
           {

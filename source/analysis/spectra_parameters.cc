@@ -21,8 +21,8 @@ namespace greentread
           "average: each band is averaged over segments of its own length (overlapping by "
           "half), so a band's level comes from as many segments as the record holds, and its "
           "standard error from their scatter once there are 3 or more (at least a Gaussian "
-          "signal's below 10). More lines: less "
-          "leakage across the band's edges, fewer segments.");
+          "signal's below 10). More lines: less leakage across the band's edges, fewer "
+          "segments.");
         prm.declare_entry(
           "Standard error target", "1", base::RangePattern::closed(0.01, 20., "dB"),
           "The standard error each band's level should reach, from 'Target from' up. The run "

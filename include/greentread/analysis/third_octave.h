@@ -62,8 +62,9 @@ namespace greentread
       double              reference; ///< reference rms of the levels [signal unit]
       /**
        * Number of discrete Fourier lines with a share in the lowest
-       * (narrowest) band, at least 1: the spectrum's resolution. With the Hann window a pure
-       * tone's power lies on the two to four lines nearest its frequency, so
+       * (narrowest) band, at least 1: the spectrum's resolution. With the
+       * Hann window a pure tone's power lies on the two to four lines
+       * nearest its frequency, so
        * a tone within about one line spacing 1 / (N dt) of a band edge
        * shares its power with the neighbouring band (in a band of few lines
        * that is most of the band).
@@ -73,7 +74,8 @@ namespace greentread
        * The standard error of each level [dB], from welch_band_spectrum();
        * empty from third_octave_spectrum(). It is the scatter of the band's
        * power over the Welch segments when there are at least
-       * min_observed_segments of them, and @p predicted otherwise.
+       * min_observed_segments of them (and at least predicted_error below
+       * floor_segments), and predicted_error otherwise.
        */
       std::vector<double> standard_error;
       /// The standard error a Gaussian signal would give [dB], from the
