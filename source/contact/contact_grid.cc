@@ -25,7 +25,8 @@ namespace greentread
                         "0.83 mm on the default patch, 7680 points) comes from the "
                         "convergence study in doc/benchmarks.md (benchmarks/contact_grid_study.sh).");
       prm.declare_entry("Solver", "auto",
-                        dealii::Patterns::Selection("auto|pivoting|projected CG"),
+                        dealii::Patterns::Selection(
+                          "auto|pivoting|projected CG|projected CG on the whole grid"),
                         "The contact's complementarity solve at each step: 'auto' is "
                         "'projected CG' with a reciprocal patch model ('Patch model/Source' "
                         "= fe modes) and 'pivoting' otherwise; 'pivoting' forms "
@@ -34,7 +35,12 @@ namespace greentread
                         "10,000 points); 'projected CG' forms no N x N matrix (the tread's "
                         "layer by FFT) and solves the bound-constrained quadratic programme by "
                         "MPRGP to a gap of 1e-10 of the road's demand (needs a reciprocal patch "
-                        "model: 'Patch model/Source' = fe modes).");
+                        "model: 'Patch model/Source' = fe modes), on the candidate points "
+                        "alone (those the road would be inside, and those in contact at the "
+                        "last step) with their dense compliances, then checked on the whole "
+                        "grid, so that a step costs in proportion to the points in contact "
+                        "(doc/methods/contact.md); 'projected CG on the whole grid': the same "
+                        "MPRGP on every point, each product by FFT (the reference).");
       prm.leave_subsection();
     }
 
@@ -54,11 +60,12 @@ namespace greentread
     bool
     ContactGridParameters::matrix_free(const bool reciprocal, const unsigned int n_coarse) const
     {
-      if (solver == "projected CG" && !reciprocal)
-        throw InputError("parameter 'Contact grid/Solver' = projected CG needs a reciprocal "
+      const bool projected = solver.rfind("projected CG", 0) == 0;
+      if (projected && !reciprocal)
+        throw InputError("parameter 'Contact grid/Solver' = " + solver + " needs a reciprocal "
                          "patch model; allowed with 'Patch model/Source' = identified: "
                          "auto or pivoting");
-      const bool free = solver == "projected CG" || (solver == "auto" && reciprocal);
+      const bool free = projected || (solver == "auto" && reciprocal);
       // Pivoting holds several N x N matrices (8 N^2 bytes each).
       const std::size_t n = std::size_t(n_coarse) * subdivisions * subdivisions;
       if (!free && n > max_pivoting_points)
@@ -77,9 +84,10 @@ namespace greentread
 
     ContactGrid::ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
                              const unsigned int subdivisions_, const ElasticLayer &layer,
-                             const bool matrix_free_)
+                             const bool matrix_free_, const bool candidate_set_)
       : subdivisions(subdivisions_)
       , matrix_free(matrix_free_)
+      , candidate_set(candidate_set_)
       , n_coarse(coarse_points.size())
     {
       if (subdivisions == 0)
@@ -97,7 +105,8 @@ namespace greentread
         }
       std::sort(xs.begin(), xs.end());
       std::sort(ys.begin(), ys.end());
-      const unsigned int cnx = xs.size(), cny = ys.size();
+      cnx = xs.size();
+      cny = ys.size();
       if (cnx * cny != n_coarse || cnx < 2 || cny < 2)
         throw InputError("contact grid: the Green's functions' " + std::to_string(n_coarse) +
                          " points are not a lattice of at least 2 x 2 (" + std::to_string(cnx) +
@@ -142,7 +151,10 @@ namespace greentread
       layer_product       = std::make_shared<const convolution::LatticeConvolution>(
         layer_lattice_kernel(layer, dx, dy, nx, ny, margin));
       if (matrix_free)
-        return;
+        {
+          tabulate_cell_sums();
+          return;
+        }
       local = layer_product->dense();
       const auto remove_cell_means = [&](Eigen::MatrixXd &m) {
         const double    n_cell = static_cast<double>(s) * s;
@@ -226,6 +238,87 @@ namespace greentread
 
 
 
+    void
+    ContactGrid::tabulate_cell_sums()
+    {
+      const Eigen::MatrixXd &T = layer_product->kernel_values();
+      const int              s = subdivisions, mx = nx, my = ny;
+      // The kernel at any offset, and the sums of file contact_grid.h.
+      const auto kernel = [&](const int u, const int v) { return T(std::abs(u), std::abs(v)); };
+      cell_sums.setZero(2 * mx - 1, 2 * my - 1);
+      for (int u = 1 - mx; u <= mx - s; ++u)
+        for (int v = 1 - my; v <= my - s; ++v)
+          {
+            double sum = 0.;
+            for (int a = 0; a < s; ++a)
+              for (int b = 0; b < s; ++b)
+                sum += kernel(u + a, v + b);
+            cell_sums(u + mx - 1, v + my - 1) = sum / (s * s);
+          }
+      const int cx = cnx, cy = cny;
+      cell_pair_sums.setZero(2 * cx - 1, 2 * cy - 1);
+      for (int u = 1 - cx; u < cx; ++u)
+        for (int v = 1 - cy; v < cy; ++v)
+          {
+            double sum = 0.;
+            for (int a = 0; a < s; ++a)
+              for (int b = 0; b < s; ++b)
+                sum += cell_sums(u * s - a + mx - 1, v * s - b + my - 1);
+            cell_pair_sums(u + cx - 1, v + cy - 1) = sum / (s * s);
+          }
+    }
+
+
+
+    void
+    ContactGrid::block(const Eigen::MatrixXd &coarse, const std::vector<unsigned int> &rows,
+                       const std::vector<unsigned int> &columns, Eigen::MatrixXd &out) const
+    {
+      const Eigen::Index m = rows.size(), n = columns.size();
+      out.resize(m, n);
+      for (Eigen::Index l = 0; l < n; ++l)
+        for (Eigen::Index k = 0; k < m; ++k)
+          out(k, l) = coarse(coarse_of[rows[k]], coarse_of[columns[l]]);
+      if (!layer_product)
+        return;
+      if (cell_sums.size() == 0)
+        throw InputError("contact grid: block() needs the matrix-free grid's cell sums");
+      // Each point's lattice and cell indices, once.
+      struct Where
+      {
+        int x, y, cx, cy;
+      };
+      const int  s = subdivisions, mx = nx, my = ny, cx0 = cnx - 1, cy0 = cny - 1;
+      const auto where = [&](const std::vector<unsigned int> &set) {
+        std::vector<Where> w(set.size());
+        for (std::size_t k = 0; k < set.size(); ++k)
+          {
+            const int x = set[k] / ny, y = set[k] % ny;
+            w[k]        = {x, y, x / s, y / s};
+          }
+        return w;
+      };
+      const std::vector<Where> r = where(rows), c = where(columns);
+      const Eigen::MatrixXd   &T = layer_product->kernel_values();
+      // (I - P) L (I - P), P the mean over each coarse cell:
+      // L_ij - (P L)_ij - (P L)_ji + (P L P)_ij.
+      for (Eigen::Index l = 0; l < n; ++l)
+        {
+          const Where j = c[l];
+          double     *o = out.col(l).data();
+          for (Eigen::Index k = 0; k < m; ++k)
+            {
+              const Where i = r[k];
+              o[k] += T(std::abs(i.x - j.x), std::abs(i.y - j.y)) -
+                      cell_sums(i.cx * s - j.x + mx - 1, i.cy * s - j.y + my - 1) -
+                      cell_sums(j.cx * s - i.x + mx - 1, j.cy * s - i.y + my - 1) +
+                      cell_pair_sums(i.cx - j.cx + cx0, i.cy - j.cy + cy0);
+            }
+        }
+    }
+
+
+
     Eigen::VectorXd
     ContactGrid::reporting_weights(const double along, const double across) const
     {
@@ -290,14 +383,24 @@ namespace greentread
                                  "asymmetric by " + format_short(asymmetry) +
                                  " (relative); allowed: 'Patch model/Source' = fe modes, or "
                                  "'Contact grid/Solver' = pivoting");
+              // The solve's operator is symmetric: the end compliance's
+              // symmetric part (it differs by the asymmetry checked above).
+              end_compliance = 0.5 * (c.u[2] + c.u[2].transpose());
               psi.add_u = [this](const unsigned int g, const Eigen::VectorXd &x,
                                  Eigen::VectorXd &y) {
                 const Eigen::VectorXd xc = grid.gather(x);
                 if (xc.cwiseAbs().maxCoeff() > 0.)
-                  y += grid.expand(Eigen::VectorXd(coarse->influence().u[g] * xc));
+                  y += grid.expand(Eigen::VectorXd(
+                    (g == 2 ? end_compliance : coarse->influence().u[g]) * xc));
                 if (g == 2)
                   grid.add_local(x, y);
               };
+              if (grid.candidate_set)
+                psi.block_u = [this](const std::vector<unsigned int> &rows,
+                                     const std::vector<unsigned int> &columns,
+                                     Eigen::MatrixXd                 &out) {
+                  grid.block(end_compliance, rows, columns, out);
+                };
               return;
             }
           for (unsigned int g = 0; g < 4; ++g)
@@ -354,6 +457,8 @@ namespace greentread
         const ContactGrid                &grid;
         convolution::PatchLoad                         coarse_load;
         Eigen::VectorXd                   uc, vc;
+        /// The symmetric part of the coarse end compliance (matrix-free).
+        Eigen::MatrixXd end_compliance;
       };
     } // namespace
 

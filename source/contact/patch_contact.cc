@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/contact/candidate_set.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/projected_cg.h>
 
@@ -92,14 +93,14 @@ namespace greentread
       LcpResult lcp;
       if (matrix_free)
         {
-          ProjectedCgOptions options;
+          ProjectedCgOptions      options;
           options.operator_norm = end_norm;
-          lcp                   = solve_lcp_projected_cg(
-            [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
-              y.setZero(x.size());
-              psi.add_u(2, x, y);
-            },
-            q, previous_end, options);
+          const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+            y.setZero(x.size());
+            psi.add_u(2, x, y);
+          };
+          lcp = psi.block_u ? solve_lcp_candidate_set(W, psi.block_u, q, previous_end, options) :
+                              solve_lcp_projected_cg(W, q, previous_end, options);
         }
       else
         {

@@ -49,7 +49,7 @@ namespace greentread
                          " values for " + std::to_string(n) + " unknowns");
       const double norm  = options.operator_norm > 0. ? options.operator_norm : operator_norm(W, n);
       const double alpha = 1.9 / norm;
-      const double scale = q.lpNorm<Eigen::Infinity>();
+      const double scale = options.scale > 0. ? options.scale : q.lpNorm<Eigen::Infinity>();
       const double tol   = options.tolerance * scale;
 
       LcpResult       result;

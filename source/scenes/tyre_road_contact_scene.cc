@@ -186,7 +186,8 @@ namespace greentread
         model.points, contact_grid.subdivisions,
         {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
         contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
-                                 unsigned(model.points.size())));
+                                 unsigned(model.points.size())),
+        contact_grid.candidate_set());
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "
@@ -195,7 +196,9 @@ namespace greentread
                   << " per Green's-function rectangle, the tread as a "
                   << format_number(1e3 * geometry.tread_thickness) << " mm layer below it)\n";
       std::cout << "  the contact solved by "
-                << (grid.matrix_free ? "projected CG (matrix-free)" : "block principal pivoting")
+                << (!grid.matrix_free   ? "block principal pivoting" :
+                    grid.candidate_set ? "projected CG on the candidate points (matrix-free)" :
+                                         "projected CG on the whole grid (matrix-free)")
                 << " ('Contact grid/Solver' = " << contact_grid.solver << ")\n";
       {
         const double along  = spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;

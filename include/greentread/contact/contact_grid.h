@@ -63,7 +63,12 @@
  *   bound-constrained quadratic programme solved by MPRGP
  *   (greentread/contact/projected_cg.h), warm-started from the last step's
  *   forces. O(N log N) per product; it needs a reciprocal (symmetric) patch
- *   model, which the ring's own modes are.
+ *   model, which the ring's own modes are. MPRGP runs on the candidate
+ *   points alone (greentread/contact/candidate_set.h), on their dense block
+ *   of the compliance (ContactGrid::block()), and the answer is checked on
+ *   the whole grid by one FFT product per round.
+ * - `projected CG on the whole grid`: the same MPRGP on every point, each
+ *   product by FFT; the reference of the candidate set.
  * - `auto` (the default): `projected CG` with the ring's own modes,
  *   `pivoting` with the identified (non-reciprocal) model.
  */
@@ -77,8 +82,8 @@ namespace greentread
     {
       /// Contact rectangles per Green's-function rectangle along each direction.
       unsigned int subdivisions = 8;
-      /// `Solver`: `auto`, `pivoting` or `projected CG` (the file
-      /// documentation).
+      /// `Solver`: `auto`, `pivoting`, `projected CG` or `projected CG on
+      /// the whole grid` (the file documentation).
       std::string solver = "auto";
 
       /// The most contact points `pivoting` takes (its N x N matrices: 0.8 GB
@@ -86,7 +91,8 @@ namespace greentread
       static constexpr std::size_t max_pivoting_points = 10000;
 
       /**
-       * @brief Whether the grid's solve is matrix-free (`projected CG`).
+       * @brief Whether the grid's solve is matrix-free (`projected CG`, on
+       * the candidate set or on the whole grid: candidate_set()).
        * @param[in] reciprocal Whether the patch model is reciprocal (the
        * ring's own modes).
        * @param[in] n_coarse The Green's functions' points.
@@ -96,6 +102,14 @@ namespace greentread
        */
       bool
       matrix_free(bool reciprocal, unsigned int n_coarse) const;
+
+      /// Whether a matrix-free solve works on the candidate set (all but
+      /// `projected CG on the whole grid`).
+      bool
+      candidate_set() const
+      {
+        return solver != "projected CG on the whole grid";
+      }
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -118,11 +132,13 @@ namespace greentread
        * @param[in] layer The tread as a layer (used when s > 1).
        * @param[in] matrix_free The `projected CG` solver: the local term only
        *            as its FFT product, ContactGrid::local stays empty.
+       * @param[in] candidate_set With @p matrix_free: the solve on the
+       *            candidate set (ContactGrid::candidate_set).
        * @throws InputError if the points are not a lattice or s is 0.
        */
       ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
                   unsigned int subdivisions, const ElasticLayer &layer,
-                  bool matrix_free = false);
+                  bool matrix_free = false, bool candidate_set = true);
 
       unsigned int
       n_points() const
@@ -156,6 +172,18 @@ namespace greentread
       apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
 
       /**
+       * @brief A block of apply()'s operator, entry by entry: out(k, l) =
+       * \f$(A^T M A)_{ij}\f$ + \f$((I - P) L_f (I - P))_{ij}\f$ for i =
+       * rows[k], j = columns[l], from the layer's kernel and its sums over
+       * the coarse cells (tabulated once), in O(rows x columns) without the
+       * N x N matrix or an FFT. What the candidate-set solve
+       * (candidate_set.h) iterates on.
+       */
+      void
+      block(const Eigen::MatrixXd &coarse, const std::vector<unsigned int> &rows,
+            const std::vector<unsigned int> &columns, Eigen::MatrixXd &out) const;
+
+      /**
        * @brief The weights of the reporting cell, @p along x @p across [m]
        * centred at the patch centre (x0 = 0, y0 = 0), whatever the grid; 0
        * for either: a coarse cell's size (the Green's-function rectangle).
@@ -180,11 +208,23 @@ namespace greentread
       Eigen::MatrixXd local;
       /// The solver: `projected CG` (true) or `pivoting`.
       bool matrix_free = false;
+      /// Whether the matrix-free solve works on the candidate set
+      /// (candidate_set.h; `projected CG`) or on the whole grid (`projected
+      /// CG on the whole grid`).
+      bool candidate_set = true;
       /// \f$L_f\f$ on the lattice, by FFT; empty when s = 1.
       std::shared_ptr<const convolution::LatticeConvolution> layer_product;
 
     private:
-      unsigned int n_coarse = 0;
+      void
+      tabulate_cell_sums();
+
+      unsigned int n_coarse = 0, cnx = 0, cny = 0;
+      /// For block(): the layer's kernel summed over a coarse cell's s x s
+      /// offsets, over s^2 (offset (dx, dy) at (dx + nx - 1, dy + ny - 1)),
+      /// and over two cells' offsets, over s^4 (cell offset (cx, cy) at
+      /// (cx + cnx - 1, cy + cny - 1)). Empty unless matrix-free with s > 1.
+      Eigen::MatrixXd cell_sums, cell_pair_sums;
     };
 
     /**

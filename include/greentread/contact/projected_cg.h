@@ -56,6 +56,9 @@ namespace greentread
       unsigned int max_iterations = 20000;
       /// \f$\|W\|_2\f$ from operator_norm(); 0 computes it at every call.
       double operator_norm = 0.;
+      /// s of the convergence test; 0: \f$\|q\|_\infty\f$ (a solve on part
+      /// of a grid passes the whole grid's).
+      double scale = 0.;
     };
 
     /**

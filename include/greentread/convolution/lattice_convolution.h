@@ -50,6 +50,13 @@ namespace greentread
       void
       apply(const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
 
+      /// The kernel T(m, n) of the constructor.
+      const Eigen::MatrixXd &
+      kernel_values() const
+      {
+        return kernel;
+      }
+
       /// The dense matrix L, for checks on small lattices.
       Eigen::MatrixXd
       dense() const;

@@ -55,6 +55,13 @@ namespace greentread
       /// The matrix-free form (u and v then empty; only with an
       /// instantaneous compliance): y += \f$\Psi^u_g\f$ x.
       std::function<void(unsigned int g, const Eigen::VectorXd &x, Eigen::VectorXd &y)> add_u;
+      /// With add_u, optionally: out = \f$\Psi^u_{end}\f$'s block on two
+      /// sets of points (rows and columns), for the contact's candidate-set
+      /// solve (greentread/contact/candidate_set.h); empty: the solve works
+      /// on the whole grid.
+      std::function<void(const std::vector<unsigned int> &rows,
+                         const std::vector<unsigned int> &columns, Eigen::MatrixXd &out)>
+        block_u;
     };
 
     /// y += \f$\Psi^u_g\f$ x, from the matrix's columns where x is not zero
