@@ -26,11 +26,7 @@ namespace greentread
                             ProjectedCgOptions options, unsigned int *candidates)
     {
       const Eigen::Index n = q.size();
-      if (!q.allFinite())
-        throw NumericalError("candidate-set contact: q is not finite");
-      if (start.size() != 0 && start.size() != n)
-        throw InputError("candidate-set contact: a warm start of " + std::to_string(start.size()) +
-                         " values for " + std::to_string(n) + " unknowns");
+      check_lcp_input(q, start, "candidate-set contact");
       if (options.operator_norm <= 0.)
         options.operator_norm = operator_norm(W, n);
       const double scale = options.scale > 0. ? options.scale : q.lpNorm<Eigen::Infinity>();
@@ -132,11 +128,8 @@ namespace greentread
           result.converged  = true;
           // The natural-map residual of lcp.h, m = ||W||_2.
           const double norm = options.operator_norm;
-          const double s    = std::max(scale, norm * z.lpNorm<Eigen::Infinity>());
-          double       r    = 0.;
-          for (Eigen::Index i = 0; i < n; ++i)
-            r = std::max(r, std::abs(std::min(norm * z[i], w[i])));
-          result.residual = s > 0. ? r / s : 0.;
+          result.residual =
+            natural_residual(z, w, norm, std::max(scale, norm * z.lpNorm<Eigen::Infinity>()));
           return result;
         }
       W(z, w);

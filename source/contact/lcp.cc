@@ -16,23 +16,21 @@ namespace greentread
       /// Full exchanges allowed without a new lowest infeasible count
       /// before Murty's single exchanges take over (Judice & Pires: p = 3).
       constexpr unsigned int full_exchange_tries = 3;
-
-      /// The natural-map residual max_i |min(m z_i, w_i)| / s of the file
-      /// documentation, for the given scale s.
-      double
-      natural_residual(const Eigen::VectorXd &z,
-                       const Eigen::VectorXd &w,
-                       const double           m,
-                       const double           s)
-      {
-        if (!(s > 0.))
-          return 0.;
-        double r = 0.;
-        for (Eigen::Index i = 0; i < z.size(); ++i)
-          r = std::max(r, std::abs(std::min(m * z[i], w[i])));
-        return r / s;
-      }
     } // namespace
+
+
+
+    double
+    natural_residual(const Eigen::VectorXd &z, const Eigen::VectorXd &w, const double m,
+                     const double s)
+    {
+      if (!(s > 0.))
+        return 0.;
+      double r = 0.;
+      for (Eigen::Index i = 0; i < z.size(); ++i)
+        r = std::max(r, std::abs(std::min(m * z[i], w[i])));
+      return r / s;
+    }
 
 
 

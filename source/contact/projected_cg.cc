@@ -37,16 +37,24 @@ namespace greentread
 
 
 
+    void
+    check_lcp_input(const Eigen::VectorXd &q, const Eigen::VectorXd &start, const std::string &who)
+    {
+      if (!q.allFinite())
+        throw NumericalError(who + ": q is not finite");
+      if (start.size() != 0 && start.size() != q.size())
+        throw InputError(who + ": a warm start of " + std::to_string(start.size()) +
+                         " values for " + std::to_string(q.size()) + " unknowns");
+    }
+
+
+
     LcpResult
     solve_lcp_projected_cg(const SymmetricOperator &W, const Eigen::VectorXd &q,
                            const Eigen::VectorXd &start, const ProjectedCgOptions &options)
     {
       const Eigen::Index n = q.size();
-      if (!q.allFinite())
-        throw NumericalError("projected CG: q is not finite");
-      if (start.size() != 0 && start.size() != n)
-        throw InputError("projected CG: a warm start of " + std::to_string(start.size()) +
-                         " values for " + std::to_string(n) + " unknowns");
+      check_lcp_input(q, start, "projected CG");
       const double norm  = options.operator_norm > 0. ? options.operator_norm : operator_norm(W, n);
       const double alpha = 1.9 / norm;
       const double scale = options.scale > 0. ? options.scale : q.lpNorm<Eigen::Infinity>();
@@ -157,11 +165,8 @@ namespace greentread
                          " iterations reached, projected gradient " + format_short(residual) +
                          " against " + format_short(tol) + " asked";
       // The natural-map residual of lcp.h, m = ||W||_2.
-      const double s = std::max(scale, norm * z.lpNorm<Eigen::Infinity>());
-      double       r = 0.;
-      for (Eigen::Index i = 0; i < n; ++i)
-        r = std::max(r, std::abs(std::min(norm * z[i], g[i])));
-      result.residual = s > 0. ? r / s : 0.;
+      result.residual =
+        natural_residual(z, g, norm, std::max(scale, norm * z.lpNorm<Eigen::Infinity>()));
       return result;
     }
   } // namespace contact

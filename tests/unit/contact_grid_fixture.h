@@ -18,6 +18,18 @@ namespace test
 {
   inline const greentread::contact::ElasticLayer tread_layer{7e6, 0.49, 0.008};
 
+  /// n standard normal values from @p seed.
+  inline Eigen::VectorXd
+  random_vector(const unsigned int n, const unsigned int seed)
+  {
+    std::mt19937                     rng(seed);
+    std::normal_distribution<double> z(0., 1.);
+    Eigen::VectorXd                  v(n);
+    for (auto &x : v)
+      x = z(rng);
+    return v;
+  }
+
   /// The Green's functions' points: nx x ny rectangles of 6 x 6.667 mm,
   /// symmetric about the centre, listed across first (as the Green's stage
   /// does); with @p shuffled in a shuffled order, which the grid must not

@@ -7,9 +7,6 @@
 #include <greentread/contact/candidate_set.h>
 #include <greentread/contact/contact_grid.h>
 #include <greentread/contact/lcp.h>
-#include <greentread/contact/rolling.h>
-#include <greentread/road/patch_road.h>
-#include <greentread/road/texture.h>
 
 #include <Eigen/Dense>
 
@@ -17,6 +14,7 @@
 
 #include "complementarity.h"
 #include "contact_grid_fixture.h"
+#include "grid_roll.h"
 #include "siconos_reference.h"
 
 #include <random>
@@ -24,21 +22,11 @@
 using namespace greentread;
 
 using test::coarse_compliance;
+using test::random_vector;
 using test::tread_layer;
 
 namespace
 {
-  Eigen::VectorXd
-  random_vector(const unsigned int n, const unsigned int seed)
-  {
-    std::mt19937                     rng(seed);
-    std::normal_distribution<double> z(0., 1.);
-    Eigen::VectorXd                  v(n);
-    for (auto &x : v)
-      x = z(rng);
-    return v;
-  }
-
   contact::OperatorBlock
   dense_block(const Eigen::MatrixXd &W)
   {
@@ -240,42 +228,9 @@ BOOST_AUTO_TEST_CASE(rolling_on_the_candidate_set_is_rolling_on_the_whole_grid)
   const modal::PatchModel model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
   const contact::ContactGrid candidates(coarse, 4, tread_layer, true, true),
     whole(coarse, 4, tread_layer, true, false);
-  std::vector<road::WavelengthBand> bands;
-  std::vector<double>               levels;
-  road::texture_preset("road-A", bands, levels);
-  const road::Texture   texture = road::synthetic_texture(bands, levels, 3.84e-4, 2048, 96, 11);
-  const road::PatchRoad road(texture, whole.points, road::RoadSampling::envelope, "test");
-  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
-    road.heights(x, z, slope);
-  };
-  contact::RollingSetup setup;
-  setup.speed       = 25.;
-  setup.time_step   = 3.84e-4 / 25.;
-  setup.n_steps     = 400;
-  setup.static_load = 150.;
-  const Eigen::VectorXd tread = contact::tread_heights(whole.points);
-  const Eigen::MatrixXd G0    = model.static_compliance();
-  const auto            start = contact::start_grid_contact(whole, G0, tread, heights, setup);
-
-  std::vector<Eigen::VectorXd> forces[2];
-  contact::RollingSummary      summary[2];
-  const contact::ContactGrid  *grids[2] = {&whole, &candidates};
-  for (unsigned int k = 0; k < 2; ++k)
-    {
-      auto convolution = contact::make_grid_convolution(
-        contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0, 1),
-        *grids[k]);
-      summary[k] = contact::roll_patch(*convolution, tread, heights, start, setup,
-                                       [&](const contact::RollingStep &step) {
-                                         forces[k].push_back(step.force);
-                                       });
-    }
-  double peak = 0., worst = 0.;
-  for (std::size_t k = 0; k < forces[0].size(); ++k)
-    {
-      peak  = std::max(peak, forces[0][k].cwiseAbs().maxCoeff());
-      worst = std::max(worst, (forces[0][k] - forces[1][k]).cwiseAbs().maxCoeff());
-    }
+  const test::GridRolls r = test::roll_on_two_grids(model, whole, candidates);
+  const auto           &summary = r.summary;
+  const double          peak = r.peak, worst = r.worst;
   BOOST_TEST_MESSAGE("rolling on " << whole.n_points() << " points, candidate set against the "
                                    << "whole grid: largest force difference " << worst / peak
                                    << " of the peak " << peak << " N; points in contact "

@@ -24,6 +24,7 @@
 
 #include "complementarity.h"
 #include "contact_grid_fixture.h"
+#include "grid_roll.h"
 #include "siconos_reference.h"
 
 #include <cmath>
@@ -32,6 +33,7 @@
 using namespace greentread;
 
 using test::coarse_compliance;
+using test::random_vector;
 using test::tread_layer;
 
 namespace
@@ -48,16 +50,6 @@ namespace
     return [&W](const Eigen::VectorXd &x, Eigen::VectorXd &y) { y = W * x; };
   }
 
-  Eigen::VectorXd
-  random_vector(const unsigned int n, const unsigned int seed)
-  {
-    std::mt19937                     rng(seed);
-    std::normal_distribution<double> z(0., 1.);
-    Eigen::VectorXd                  v(n);
-    for (auto &x : v)
-      x = z(rng);
-    return v;
-  }
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(projected_cg)
@@ -242,46 +234,13 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   const modal::PatchModel model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid pivoting(coarse, 3, tread_layer), free(coarse, 3, tread_layer, true);
-  std::vector<road::WavelengthBand> bands;
-  std::vector<double>               levels;
-  road::texture_preset("road-A", bands, levels);
-  const road::Texture   texture = road::synthetic_texture(bands, levels, 3.84e-4, 2048, 96, 11);
-  const road::PatchRoad road(texture, pivoting.points, road::RoadSampling::envelope, "test");
-  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
-    road.heights(x, z, slope);
-  };
-  contact::RollingSetup setup;
-  setup.speed       = 25.;
-  setup.time_step   = 3.84e-4 / 25.;
-  setup.n_steps     = 400;
-  setup.static_load = 150.;
-  const Eigen::VectorXd tread = contact::tread_heights(pivoting.points);
-  const Eigen::MatrixXd G0    = model.static_compliance();
-  const auto start = contact::start_grid_contact(pivoting, G0, tread, heights, setup);
-  const auto start_free = contact::start_grid_contact(free, G0, tread, heights, setup);
+  const test::GridRolls      r = test::roll_on_two_grids(model, pivoting, free);
+  const auto &start = r.start[0], &start_free = r.start[1];
+  const auto &summary = r.summary;
+  const double peak = r.peak, worst = r.worst;
   BOOST_TEST(start.n_contact > 0u);
   BOOST_TEST(std::abs(start_free.delta / start.delta - 1.) < 1e-7);
   BOOST_TEST((start_free.q - start.q).cwiseAbs().maxCoeff() < 1e-7 * start.q.maxCoeff());
-
-  std::vector<Eigen::VectorXd> forces[2];
-  contact::RollingSummary      summary[2];
-  const contact::ContactGrid  *grids[2] = {&pivoting, &free};
-  for (unsigned int k = 0; k < 2; ++k)
-    {
-      auto convolution = contact::make_grid_convolution(
-        contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0, 1),
-        *grids[k]);
-      summary[k] = contact::roll_patch(*convolution, tread, heights, start, setup,
-                                       [&](const contact::RollingStep &step) {
-                                         forces[k].push_back(step.force);
-                                       });
-    }
-  double peak = 0., worst = 0.;
-  for (std::size_t k = 0; k < forces[0].size(); ++k)
-    {
-      peak  = std::max(peak, forces[0][k].cwiseAbs().maxCoeff());
-      worst = std::max(worst, (forces[0][k] - forces[1][k]).cwiseAbs().maxCoeff());
-    }
   BOOST_TEST_MESSAGE("rolling, projected CG against pivoting: largest force difference "
                      << worst / peak << " of the peak " << peak << " N; largest penetration "
                      << summary[1].max_penetration << " m against " << summary[0].max_penetration);

@@ -120,6 +120,11 @@ namespace greentread
       std::string message;
     };
 
+    /// The natural-map residual \f$\max_i|\min(m z_i, w_i)|/s\f$ of the file
+    /// documentation, for the given m and scale s (0 if s is not positive).
+    double
+    natural_residual(const Eigen::VectorXd &z, const Eigen::VectorXd &w, double m, double s);
+
     /**
      * @brief Solve the LCP \f$w = M z + q,\ z \ge 0,\ w \ge 0,\ z^T w = 0\f$
      * by block principal pivoting with Murty's rule as a fallback.

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <string>
 
 /**
  * @file
@@ -60,6 +61,14 @@ namespace greentread
       /// of a grid passes the whole grid's).
       double scale = 0.;
     };
+
+    /**
+     * @brief The checks every solve of an LCP by products makes on its input.
+     * @throws NumericalError if @p q is not finite; InputError if @p start
+     * is neither empty nor of q's size. @p who names the solver.
+     */
+    void
+    check_lcp_input(const Eigen::VectorXd &q, const Eigen::VectorXd &start, const std::string &who);
 
     /**
      * @brief \f$\|W\|_2\f$ (W's largest eigenvalue) of an SPD operator on
