@@ -42,8 +42,8 @@
  * half the grid) the candidate set is solved on, otherwise the whole grid,
  * decided at each step and round. The constant is the crossover measured on
  * the main job's 7680-point grid (|N| about 510): road-A's 300 to 450
- * candidates solve in 9.2 ms per step against 15.1 on the whole grid,
- * road-B's 820 would take 36 ms against 17 (doc/benchmarks.md).
+ * candidates solve in 9.0 ms per step against 15.1 on the whole grid,
+ * road-B's 820 would take 36 ms against 17 (doc/methods/contact.md).
  */
 
 namespace greentread
