@@ -19,6 +19,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "contact_grid_fixture.h"
+#include "grid_roll.h"
 #include "siconos_reference.h"
 
 #include <cmath>
@@ -192,20 +193,10 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
                .cwiseAbs()
                .maxCoeff() < 1e-12 * fine_model.static_compliance().cwiseAbs().maxCoeff());
 
-  std::vector<road::WavelengthBand> bands;
-  std::vector<double>               levels;
-  road::texture_preset("road-A", bands, levels);
-  const road::Texture   texture = road::synthetic_texture(bands, levels, 3.84e-4, 2048, 96, 11);
-  const road::PatchRoad road(texture, grid.points, road::RoadSampling::envelope, "test");
-  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
-    road.heights(x, z, slope);
-  };
-  contact::RollingSetup setup;
-  setup.speed       = 25.;
-  setup.time_step   = 3.84e-4 / 25.;
-  setup.n_steps     = 400;
-  setup.static_load = 150.;
-  const Eigen::VectorXd tread = contact::tread_heights(grid.points);
+  const test::RoadARoll            roll(grid.points);
+  const contact::PatchRoadHeights &heights = roll.heights;
+  const contact::RollingSetup     &setup   = roll.setup;
+  const Eigen::VectorXd           &tread   = roll.tread;
   const auto start = contact::start_contact(fine_model.static_compliance(), tread, heights, setup);
   BOOST_TEST(start.n_contact > 0u);
 
