@@ -102,10 +102,11 @@ namespace
                start = comma + 1)
             fields.push_back(line.substr(start, comma - start));
           fields.push_back(line.substr(start));
-          // 6 fields, and 3 more with the standard errors (welch_band_spectrum()).
-          if (fields.size() != 6 && fields.size() != 9)
+          // 6 fields, 3 more with the standard errors (welch_band_spectrum())
+          // and 2 more with each band's step and record.
+          if (fields.size() != 6 && fields.size() != 9 && fields.size() != 11)
             throw InputError("'" + file.string() + "': line '" + line +
-                             "' does not have the 6 or 9 fields of a band spectrum");
+                             "' does not have the 6, 9 or 11 fields of a band spectrum");
           levels[std::stoi(fields[0])] = std::stod(fields[5]);
         }
     return levels;

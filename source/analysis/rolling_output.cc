@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <iostream>
 
 namespace greentread
@@ -285,7 +286,7 @@ namespace greentread
     write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &results,
                   const std::vector<std::string> &roads, const std::vector<double> &speeds,
                   const double stress_reference, const double f_max,
-                  const SpectraParameters &spectra, const double distance,
+                  const SpectraParameters &spectra,
                   const base::ParameterRecord &record)
     {
       // Stage analysis: the spectra per road (speeds) and per speed (roads),
@@ -300,17 +301,30 @@ namespace greentread
           << "one standard error of the level (the segments' scatter with " << min_observed_segments
           << " or more, and at least a Gaussian signal's below " << floor_segments
           << "; a Gaussian signal's with fewer)\n"
-          << "road,speed_kmh,band_Hz,level_dB,standard_error_dB,segments\n";
+          << "; time_step_us and record_m: the run each band came from (the low-rate run "
+          << "of 'Spectra/Low bands up to', or the run at the scene's step)\n"
+          << "road,speed_kmh,band_Hz,level_dB,standard_error_dB,segments,time_step_us,record_m\n";
         for (const auto &r : results)
           {
             const BandSpectrum &s = r.*which;
             for (std::size_t b = 0; b < s.bands.size(); ++b)
               o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ','
-                << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << '\n';
+                << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << ','
+                << 1e6 * s.time_step[b] << ',' << s.duration[b] * r.speed_kmh / 3.6 << '\n';
           }
         record.write_comments(o);
         f.commit();
       };
+      // Each run's spectra, each band from the run that gave it.
+      for (const auto &r : results)
+        {
+          const std::string run = road_label(r.road) + "_" + speed_label(r.speed_kmh);
+          write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"), r.spectrum,
+                                  "contact stress at the patch centre (the mean over the "
+                                  "reporting cell), Pa");
+          write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
+                                  r.force_spectrum, "total contact force, N");
+        }
       write_csv("spectra.csv",
                 "L_f = 20 log10(sigma_rms / sigma0) of the contact stress at the patch centre "
                 "(the mean over the reporting cell), sigma0 = " +
@@ -398,12 +412,20 @@ namespace greentread
           {
             double      largest = 0.;
             std::string missed;
+            // Per run that gave a band (by its time step): the distance that
+            // would meet the target in its bands.
+            std::map<double, double> needed;
             for (std::size_t b = 0; b < s->bands.size(); ++b)
               if (s->bands[b].nominal >= spectra.target_from * (1. - 1e-9))
                 {
                   largest = std::max(largest, s->standard_error[b]);
                   if (s->standard_error[b] > spectra.target_error)
-                    missed += (missed.empty() ? "" : ", ") + format_number(s->bands[b].nominal);
+                    {
+                      missed += (missed.empty() ? "" : ", ") + format_number(s->bands[b].nominal);
+                      const double ratio = s->standard_error[b] / spectra.target_error;
+                      double      &d     = needed[s->time_step[b]];
+                      d = std::max(d, s->duration[b] * r.speed_kmh / 3.6 * ratio * ratio);
+                    }
                 }
             std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
                       << " km/h, " << what << ": largest " << format_printf("%.2f", largest)
@@ -413,10 +435,16 @@ namespace greentread
             else
               {
                 all_met = false;
-                // The largest error is among the bands that miss the target.
-                const double ratio = largest / spectra.target_error;
-                std::cout << "; above the target in the " << missed << " Hz bands; 'Rolling/Distance' = "
-                          << format_printf("%.3g", distance * ratio * ratio) << " m would meet it\n";
+                std::cout << "; above the target in the " << missed << " Hz bands";
+                const double fine_step = s->time_step.back();
+                for (const auto &[step, d] : needed)
+                  std::cout << "; "
+                            << (step > fine_step * (1. + 1e-9) ?
+                                  "a low-rate run of " + format_printf("%.3g", d) +
+                                    " m ('Spectra/Longest distance')" :
+                                  "'Rolling/Distance' = " + format_printf("%.3g", d) + " m")
+                            << " would meet it";
+                std::cout << '\n';
               }
           }
       if (!all_met)

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace greentread
 {
@@ -31,6 +32,23 @@ namespace greentread
         prm.declare_entry("Target from", "250", base::RangePattern::closed(100., 5000., "Hz"),
                           "The lowest one-third-octave band (its nominal centre) the standard "
                           "error target applies to.");
+        prm.declare_entry(
+          "Low bands up to", "1000", base::RangePattern::closed(0., 5000., "Hz"),
+          "Multi-rate estimation: the bands up to this one (its nominal centre) come from a "
+          "second run of each road and speed at 'Low-band time step', as long as 'Standard "
+          "error target' needs in those bands from 'Target from' (at most 'Longest "
+          "distance'); the bands above it from the run at 'Time stepping/Time step' over "
+          "'Rolling/Distance'. The grid stays as fine in both. 0: one rate, every band from "
+          "the run at the scene's step.");
+        prm.declare_entry(
+          "Low-band time step", "7.68e-05", base::RangePattern::closed(1e-7, 1e-3, "s"),
+          "The low-rate run's time step (the scene's step if that is coarser: then no "
+          "low-rate run). Its error in a band grows as (f dt)^2, whatever the speed: the "
+          "default, 76.8 us (5 road samples at 90 km/h), is the step benchmarks/multi_rate.sh "
+          "measured against the scene's step on the same road (doc/benchmarks.md).");
+        prm.declare_entry("Longest distance", "50", base::RangePattern::closed(0.1, 200., "m"),
+                          "The longest low-rate run: a target it cannot meet within this is "
+                          "reported, with the distance it would need.");
         for (const char *direction : {"along", "across"})
           prm.declare_entry(
             std::string("Reporting cell ") + direction, "0",
@@ -57,17 +75,26 @@ namespace greentread
         lines_per_segment = prm.get_integer("Lines per segment");
         target_error      = prm.get_double("Standard error target");
         target_from       = prm.get_double("Target from");
+        low_bands_up_to      = prm.get_double("Low bands up to");
+        low_band_time_step   = prm.get_double("Low-band time step");
+        longest_distance     = prm.get_double("Longest distance");
         reporting_along   = 1e-3 * prm.get_double("Reporting cell along");
         reporting_across  = 1e-3 * prm.get_double("Reporting cell across");
       }
       prm.leave_subsection();
-      bool is_band = false;
-      for (const auto &band : third_octave_bands(100., 5000.))
-        is_band = is_band || std::abs(band.nominal - target_from) < 1e-9 * target_from;
-      if (!is_band)
-        throw InputError("parameter 'Spectra/Target from' = " + format_number(target_from) +
-                         " Hz; allowed: the nominal centre of a one-third-octave band from 100 "
-                         "Hz to 5 kHz (100, 125, 160, 200, 250, 315, 400, 500, ... Hz)");
+      for (const auto &[name, f] : {std::pair<const char *, double>{"Target from", target_from},
+                                    {"Low bands up to", low_bands_up_to}})
+        {
+          bool is_band = std::string(name) == "Low bands up to" && f == 0.;
+          for (const auto &band : third_octave_bands(100., 5000.))
+            is_band = is_band || std::abs(band.nominal - f) < 1e-9 * f;
+          if (!is_band)
+            throw InputError("parameter 'Spectra/" + std::string(name) + "' = " +
+                             format_number(f) + " Hz; allowed: " +
+                             (std::string(name) == "Low bands up to" ? "0 (one rate) or " : "") +
+                             "the nominal centre of a one-third-octave band from 100 Hz to 5 "
+                             "kHz (100, 125, 160, 200, 250, 315, 400, 500, ... Hz)");
+        }
     }
   } // namespace analysis
 } // namespace greentread

@@ -1,5 +1,6 @@
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
+#include <greentread/convolution/fft_length.h>
 #include <greentread/base/output.h>
 
 #include <unsupported/Eigen/FFT>
@@ -29,21 +30,6 @@ namespace greentread
         // so one correctly rounded operation.
         const int e = floor_div + 1;
         return e >= 0 ? label * std::pow(10., e) : label / std::pow(10., -e);
-      }
-
-      /// The smallest length >= n whose only prime factors are 2, 3 and 5.
-      std::size_t
-      fast_length(const std::size_t n)
-      {
-        for (std::size_t m = std::max<std::size_t>(n, 1);; ++m)
-          {
-            std::size_t r = m;
-            for (const std::size_t p : {2, 3, 5})
-              while (r % p == 0)
-                r /= p;
-            if (r == 1)
-              return m;
-          }
       }
 
       /// "the 100 Hz band [89.13, 112.2) Hz"
@@ -172,15 +158,51 @@ namespace greentread
 
 
       /**
-       * The mean square in each of @p bands (increasing) of the segment
-       * x[start, start + n): its mean removed, the Hann window @p w, zero
-       * padded to @p M, and the lines of each band (third_octave_spectrum()).
+       * The Fourier lines of a segment zero padded to @p M samples that fall
+       * in each of @p bands (increasing): each line's share of its cell
+       * [f - df / 2, f + df / 2) that lies in [lower, upper), so that a flat
+       * spectrum gives the band's width exactly, whatever its number of
+       * lines (an edge line is shared by two bands); lines above the last
+       * band are not needed.
        */
-      void
+      std::vector<BandLines>
+      band_lines(const std::size_t M, const double dt, const std::vector<FrequencyBand> &bands)
+      {
+        const std::size_t      B  = bands.size();
+        const double           df = 1. / (double(M) * dt);
+        std::vector<BandLines> lines(B);
+        std::size_t            b = 0;
+        for (std::size_t k = 1; 2 * k <= M && b < B; ++k)
+          {
+            const double lo = (double(k) - 0.5) * df, hi = (double(k) + 0.5) * df;
+            while (b < B && bands[b].upper <= lo)
+              ++b;
+            for (std::size_t c = b; c < B && bands[c].lower < hi; ++c)
+              {
+                const double share =
+                  (std::min(hi, bands[c].upper) - std::max(lo, bands[c].lower)) / df;
+                if (share <= 0.)
+                  continue;
+                if (lines[c].weight.empty())
+                  lines[c].first = k;
+                lines[c].weight.push_back(share);
+              }
+          }
+        return lines;
+      }
+
+
+
+      /**
+       * The mean square in each band of @p lines (band_lines() for the
+       * padded length @p M) of the segment x[start, start + n): its mean
+       * removed, the Hann window @p w, zero padded to @p M
+       * (third_octave_spectrum()).
+       */
+      std::vector<double>
       segment_mean_squares(const std::vector<double> &x, const std::size_t start,
-                           const std::vector<double> &w, const std::size_t M, const double dt,
-                           const std::vector<FrequencyBand> &bands, std::vector<double> &mean_square,
-                           std::vector<BandLines> &lines)
+                           const std::vector<double> &w, const std::size_t M,
+                           const std::vector<BandLines> &lines)
       {
         const std::size_t n    = w.size();
         double            mean = 0.;
@@ -197,36 +219,45 @@ namespace greentread
         Eigen::FFT<double>                fft;
         std::vector<std::complex<double>> Y;
         fft.fwd(Y, y);
-
-        // One-sided power of each line times the share of its cell
-        // [f - df / 2, f + df / 2) that lies in [lower, upper) of a band,
-        // so that a flat spectrum gives the band's width exactly, whatever
-        // its number of lines (an edge line is shared by two bands); lines
-        // above the last band are not needed.
-        const std::size_t B  = bands.size();
-        const double      df = 1. / (double(M) * dt);
-        mean_square.assign(B, 0.);
-        lines.assign(B, BandLines());
-        std::size_t b = 0;
-        for (std::size_t k = 1; 2 * k <= M && b < B; ++k)
-          {
-            const double lo = (double(k) - 0.5) * df, hi = (double(k) + 0.5) * df;
-            while (b < B && bands[b].upper <= lo)
-              ++b;
-            for (std::size_t c = b; c < B && bands[c].lower < hi; ++c)
-              {
-                const double share = (std::min(hi, bands[c].upper) - std::max(lo, bands[c].lower)) / df;
-                if (share <= 0.)
-                  continue;
-                mean_square[c] += share * (2 * k == M ? 1. : 2.) * std::norm(Y[k]);
-                if (lines[c].weight.empty())
-                  lines[c].first = k;
-                lines[c].weight.push_back(share);
-              }
-          }
-        const double scale = 1. / (double(M) * window_energy);
+        // One-sided power of each line times its share of the band.
+        std::vector<double> mean_square(lines.size(), 0.);
+        const double        scale = 1. / (double(M) * window_energy);
+        for (std::size_t c = 0; c < lines.size(); ++c)
+          for (std::size_t i = 0; i < lines[c].weight.size(); ++i)
+            {
+              const std::size_t k = lines[c].first + i;
+              mean_square[c] += lines[c].weight[i] * (2 * k == M ? 1. : 2.) * std::norm(Y[k]);
+            }
         for (auto &p : mean_square)
           p *= scale;
+        return mean_square;
+      }
+
+
+
+      /**
+       * Welch's segments of one band in a record of @p N samples: @p n
+       * samples each (the shorter of the record and the length that puts
+       * @p lines_per_segment lines in the band), @p K of them, @p hop
+       * apart, the first at @p start (they end with the record).
+       */
+      struct SegmentLayout
+      {
+        std::size_t n = 0, hop = 1, start = 0;
+        unsigned    K = 1;
+      };
+
+      SegmentLayout
+      segment_layout(const std::size_t N, const double dt, const FrequencyBand &band,
+                     const unsigned int lines_per_segment)
+      {
+        SegmentLayout l;
+        const double  want = std::ceil(lines_per_segment / ((band.upper - band.lower) * dt));
+        l.n     = want >= double(N) ? N : std::max<std::size_t>(2, std::size_t(want));
+        l.hop   = std::max<std::size_t>(1, l.n / 2);
+        l.K     = l.n == N ? 1u : unsigned(1 + (N - l.n) / l.hop);
+        l.start = N - (l.n + (l.K - 1) * l.hop);
+        return l;
       }
 
 
@@ -318,12 +349,11 @@ namespace greentread
                           const double               f_low,
                           const double               f_high)
     {
-      BandSpectrum              s = checked_spectrum(x, dt, reference, f_low, f_high);
-      const std::size_t         B = s.bands.size();
-      std::vector<double>       mean_square;
-      std::vector<BandLines>    lines;
-      segment_mean_squares(x, 0, hann(x.size()), fast_length(x.size()), dt, s.bands, mean_square,
-                           lines);
+      BandSpectrum      s = checked_spectrum(x, dt, reference, f_low, f_high);
+      const std::size_t B = s.bands.size();
+      const std::size_t M = convolution::fast_fft_length(x.size());
+      const auto        lines       = band_lines(M, dt, s.bands);
+      const auto        mean_square = segment_mean_squares(x, 0, hann(x.size()), M, lines);
       s.rms.resize(B);
       s.level.resize(B);
       for (std::size_t c = 0; c < B; ++c)
@@ -338,6 +368,61 @@ namespace greentread
       s.lines_in_lowest_band = lines[0].weight.size();
       return s;
     }
+
+
+
+    namespace
+    {
+      /// The bands (indices into @p bands) that share a Welch segment
+      /// length, by that length, in a record of @p N samples.
+      std::map<std::size_t, std::vector<std::size_t>>
+      bands_by_segment_length(const std::size_t N, const double dt,
+                              const std::vector<FrequencyBand> &bands,
+                              const unsigned int                lines_per_segment)
+      {
+        std::map<std::size_t, std::vector<std::size_t>> by_length;
+        for (std::size_t b = 0; b < bands.size(); ++b)
+          by_length[segment_layout(N, dt, bands[b], lines_per_segment).n].push_back(b);
+        return by_length;
+      }
+
+      constexpr double to_db = 10. / M_LN10;
+
+      /// What the bands of one segment length share: their segments, the
+      /// window, the padded length, the overlap's factor, the lines'
+      /// correlation and each band's lines.
+      struct SegmentGroup
+      {
+        SegmentLayout          layout;
+        std::vector<double>    window;
+        std::size_t            M = 0;
+        double                 overlap = 1.;
+        std::vector<std::complex<double>> correlation;
+        std::vector<BandLines> lines;
+
+        SegmentGroup(const std::size_t N, const double dt, const std::vector<FrequencyBand> &bands,
+                     const std::vector<std::size_t> &which, const unsigned int lines_per_segment)
+          : layout(segment_layout(N, dt, bands[which[0]], lines_per_segment))
+          , window(hann(layout.n))
+          , M(convolution::fast_fft_length(layout.n))
+          , overlap(overlap_factor(window, layout.hop, layout.K))
+          , correlation(line_correlation(window, M))
+        {
+          std::vector<FrequencyBand> group;
+          for (const std::size_t b : which)
+            group.push_back(bands[b]);
+          lines = band_lines(M, dt, group);
+        }
+
+        /// The Gaussian prediction of the standard error of the group's band @p c [dB].
+        double
+        predicted_error(const std::size_t c) const
+        {
+          return to_db * std::sqrt(gaussian_relative_variance(correlation, lines[c].weight) *
+                                   overlap / layout.K);
+        }
+      };
+    } // namespace
 
 
 
@@ -359,33 +444,21 @@ namespace greentread
       s.standard_error.resize(B);
       s.predicted_error.resize(B);
       s.segments.resize(B);
+      s.time_step.assign(B, dt);
+      s.duration.assign(B, double(N) * dt);
 
       // The bands that share a segment length share their segments.
-      std::map<std::size_t, std::vector<std::size_t>> by_length;
-      for (std::size_t b = 0; b < B; ++b)
+      for (const auto &by_length : bands_by_segment_length(N, dt, s.bands, lines_per_segment))
         {
-          const double want =
-            std::ceil(lines_per_segment / ((s.bands[b].upper - s.bands[b].lower) * dt));
-          by_length[want >= double(N) ? N : std::max<std::size_t>(2, std::size_t(want))]
-            .push_back(b);
-        }
-      const double to_db = 10. / std::log(10.);
-      for (const auto &[n, which] : by_length)
-        {
-          const std::size_t   hop   = std::max<std::size_t>(1, n / 2);
-          const unsigned      K     = n == N ? 1u : unsigned(1 + (N - n) / hop);
-          const std::size_t   start = N - (n + (K - 1) * hop);
-          const auto          w     = hann(n);
-          const std::size_t   M     = fast_length(n);
-          const double        overlap = overlap_factor(w, hop, K);
-          const auto          r       = line_correlation(w, M);
-          std::vector<FrequencyBand> bands;
-          for (const std::size_t b : which)
-            bands.push_back(s.bands[b]);
+          const auto                       &which = by_length.second;
+          const SegmentGroup                g(N, dt, s.bands, which, lines_per_segment);
+          const auto                       &lines   = g.lines;
+          const unsigned                    K       = g.layout.K;
+          const double                      overlap = g.overlap;
           std::vector<std::vector<double>> power(K);
-          std::vector<BandLines>           lines;
           for (unsigned k = 0; k < K; ++k)
-            segment_mean_squares(x, start + k * hop, w, M, dt, bands, power[k], lines);
+            power[k] = segment_mean_squares(x, g.layout.start + k * g.layout.hop, g.window, g.M,
+                                            lines);
           for (std::size_t c = 0; c < which.size(); ++c)
             {
               const std::size_t b = which[c];
@@ -399,8 +472,7 @@ namespace greentread
               s.rms[b]      = std::sqrt(mean);
               s.level[b]    = level_of(s.rms[b], reference, s.bands[b]);
               s.segments[b] = K;
-              s.predicted_error[b] =
-                to_db * std::sqrt(gaussian_relative_variance(r, lines[c].weight) * overlap / K);
+              s.predicted_error[b] = g.predicted_error(c);
               if (K >= min_observed_segments && mean > 0.)
                 {
                   double scatter = 0.;
@@ -420,6 +492,63 @@ namespace greentread
             }
         }
       return s;
+    }
+
+
+
+    std::vector<double>
+    predicted_standard_errors(const std::size_t                 n_samples,
+                              const double                      dt,
+                              const std::vector<FrequencyBand> &bands,
+                              const unsigned int                lines_per_segment)
+    {
+      if (lines_per_segment == 0 || n_samples < 2 || !(dt > 0.))
+        throw InputError("predicted standard errors: " + std::to_string(n_samples) +
+                         " samples, dt = " + format_short(dt) + " s, " +
+                         std::to_string(lines_per_segment) +
+                         " lines per segment; allowed: >= 2 samples, dt > 0, >= 1 line");
+      std::vector<double> error(bands.size(), INFINITY);
+      for (const auto &by_length : bands_by_segment_length(n_samples, dt, bands, lines_per_segment))
+        {
+          const auto        &which = by_length.second;
+          const SegmentGroup g(n_samples, dt, bands, which, lines_per_segment);
+          for (std::size_t c = 0; c < which.size(); ++c)
+            if (!g.lines[c].weight.empty())
+              error[which[c]] = g.predicted_error(c);
+        }
+      return error;
+    }
+
+
+
+    std::size_t
+    samples_for_error(const double                      dt,
+                      const std::vector<FrequencyBand> &bands,
+                      const unsigned int                lines_per_segment,
+                      const double                      target,
+                      const std::size_t                 at_least,
+                      const std::size_t                 at_most)
+    {
+      const auto meets = [&](const std::size_t N) {
+        for (const double e : predicted_standard_errors(N, dt, bands, lines_per_segment))
+          if (!(e <= target))
+            return false;
+        return true;
+      };
+      std::size_t lo = std::max<std::size_t>(2, at_least);
+      if (bands.empty() || meets(lo))
+        return lo;
+      std::size_t hi = std::max(lo, at_most);
+      if (!meets(hi))
+        return hi + 1;
+      // The prediction does not rise with the record (a band's segment
+      // count and its lines only grow), so bisection finds the smallest N.
+      while (hi - lo > 1)
+        {
+          const std::size_t mid = lo + (hi - lo) / 2;
+          (meets(mid) ? hi : lo) = mid;
+        }
+      return hi;
     }
 
 
@@ -450,8 +579,10 @@ namespace greentread
         throw InputError("band spectrum file '" + file.string() + "': " + std::to_string(B) +
                          " bands but " + std::to_string(s.standard_error.size()) +
                          " standard errors");
+      const bool sources = s.time_step.size() == B && s.duration.size() == B;
       o << "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB"
-        << (errors ? ",standard_error_dB,predicted_error_dB,segments" : "") << '\n';
+        << (errors ? ",standard_error_dB,predicted_error_dB,segments" : "")
+        << (errors && sources ? ",time_step_s,record_s" : "") << '\n';
       for (std::size_t b = 0; b < B; ++b)
         {
           o << s.bands[b].nominal << ',' << s.bands[b].centre << ',' << s.bands[b].lower << ','
@@ -459,6 +590,8 @@ namespace greentread
           if (errors)
             o << ',' << s.standard_error[b] << ',' << s.predicted_error[b] << ','
               << s.segments[b];
+          if (errors && sources)
+            o << ',' << s.time_step[b] << ',' << s.duration[b];
           o << '\n';
         }
       out.commit();

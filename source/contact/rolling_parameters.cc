@@ -15,8 +15,9 @@ namespace greentread
       {
         prm.declare_entry("Speeds (kph)", "50, 70, 90", dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
                           "Rolling speeds V0 in km/h, a comma-separated list (1 to 400).");
-        prm.declare_entry("Distance", "2", base::RangePattern::closed(0.01, 20., "m"),
-                          "Distance rolled in each run (the paper: 2 m).");
+        prm.declare_entry("Distance", "2", base::RangePattern::closed(0.01, 200., "m"),
+                          "Distance rolled in each run at 'Time stepping/Time step' (the "
+                          "paper: 2 m); the low bands' run of 'Spectra' may roll further.");
         prm.declare_entry("Static load", "600", base::RangePattern::closed(0., 1e5, "N"),
                           "Static load carried by the patch; the indentation that carries it is "
                           "found on the road where the run starts and then held (the rim does "

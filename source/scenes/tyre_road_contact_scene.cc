@@ -223,31 +223,81 @@ namespace greentread
       // speeds. A run on one thread is memory- and FFT-bound, and a second
       // thread on its modal sums gained 10% (1.1 cores used): two runs at
       // once use both cores.
+      // A road's runs need its profiles under the points only, not the
+      // texture (6 MB per metre).
       struct RoadOfRuns
       {
         std::string     name;
-        road::Texture   texture;
         road::PatchRoad patch_road;
       };
+      // Each road at each speed: the run at the scene's step and, for the
+      // low bands, a longer one at a coarser step (analysis::plan_band_runs()).
+      struct Job
+      {
+        std::size_t       road, speed;
+        analysis::BandRun run;
+      };
+      std::vector<Job>                               jobs;
+      std::vector<std::vector<analysis::BandRun>>    plans;
+      std::vector<double>                            road_length(roads.roads.size(), 0.);
+      for (std::size_t r = 0; r < roads.roads.size(); ++r)
+        for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
+          {
+            const auto   file    = texture_files.find(roads.roads[r]);
+            const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
+            const double V       = rolling.speeds[v] / 3.6;
+            const double dt      = rolling.time_step > 0. ? rolling.time_step : spacing / V;
+            analysis::SpectraParameters limits = spectra;
+            // A texture file bounds the low-rate run by the length its
+            // points can roll over.
+            if (file != texture_files.end())
+              limits.longest_distance = std::min(
+                spectra.longest_distance,
+                road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
+                  .usable_length());
+            plans.push_back(analysis::plan_band_runs(limits, V, dt, rolling.distance,
+                                                     spectrum_top_band(dt)));
+            for (const auto &run : plans.back())
+              {
+                if (run.target_out_of_reach)
+                  std::cout << "  " << roads.roads[r] << " at " << format_number(rolling.speeds[v])
+                            << " km/h: the low-rate run stops at " << format_short(run.distance)
+                            << " m ('Spectra/Longest distance'"
+                            << (file != texture_files.end() ? ", or the texture file's length" : "")
+                            << "), short of the standard error target\n";
+                jobs.push_back({r, v, run});
+                road_length[r] = std::max(road_length[r], run.distance);
+              }
+          }
+      // The longest runs first, so that two threads end together.
+      std::stable_sort(jobs.begin(), jobs.end(), [](const Job &a, const Job &b) {
+        return a.run.steps > b.run.steps;
+      });
+
       std::vector<std::unique_ptr<RoadOfRuns>> road_list;
-      for (const auto &road_name : roads.roads)
+      for (std::size_t r = 0; r < roads.roads.size(); ++r)
         {
+          const std::string &road_name = roads.roads[r];
           // The texture's width from the patch's, not the grid's: every
-          // contact grid rolls on the same realisation.
+          // contact grid rolls on the same realisation; its length what the
+          // longest run needs (the patch and a margin of 0.1 m beyond it).
           const double width = green.patch.width + 0.03;
           std::cout << "Road '" << road_name << "'\n";
           const auto          file    = texture_files.find(road_name);
-          road::Texture       texture = file != texture_files.end() ? file->second : roads.make(road_name, width);
+          road::Texture       texture = file != texture_files.end() ?
+                                          file->second :
+                                          roads.make(road_name, width,
+                                                     road_length[r] + green.patch.length + 0.1);
           road::PatchRoad     patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
           road_list.push_back(std::make_unique<RoadOfRuns>(
-            RoadOfRuns{road_name, std::move(texture), std::move(patch_road)}));
+            RoadOfRuns{road_name, std::move(patch_road)}));
         }
-      const std::size_t  n_runs  = road_list.size() * rolling.speeds.size();
+      const std::size_t  n_runs  = jobs.size();
       const unsigned int threads = dealii::MultithreadInfo::n_threads();
       const unsigned int side_by_side =
         static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
-      std::vector<analysis::RunSpectrum> run_spectra(n_runs);
+      std::vector<analysis::RunSpectrum> job_spectra(n_runs);
       std::vector<std::exception_ptr>    failures(n_runs);
       std::atomic<std::size_t>           next{0};
       std::atomic<unsigned int>          done{0};
@@ -259,12 +309,12 @@ namespace greentread
         [&]() {
           for (std::size_t k; !failed && (k = next++) < n_runs;)
             {
-              const RoadOfRuns &r = *road_list[k / rolling.speeds.size()];
+              const RoadOfRuns &r = *road_list[jobs[k].road];
               try
                 {
-                  run_spectra[k] = roll(model, grid, G0, tread, lattice, r.texture, r.patch_road,
-                                    r.name, rolling.speeds[k % rolling.speeds.size()],
-                                    directory, record, std::max(1u, threads / side_by_side));
+                  job_spectra[k] = roll(model, grid, G0, tread, lattice, r.patch_road, r.name,
+                                        rolling.speeds[jobs[k].speed], jobs[k].run, directory,
+                                        record, std::max(1u, threads / side_by_side));
                 }
               catch (...)
                 {
@@ -279,10 +329,48 @@ namespace greentread
         if (f)
           std::rethrow_exception(f);
 
+      // Each band from the run that fits it, in the order of the roads and speeds.
+      std::vector<analysis::RunSpectrum> run_spectra;
+      for (std::size_t r = 0; r < roads.roads.size(); ++r)
+        for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
+          {
+            const auto job_of = [&](const std::string &name) {
+              return std::find_if(jobs.begin(), jobs.end(), [&](const Job &j) {
+                       return j.road == r && j.speed == v && j.run.name == name;
+                     }) - jobs.begin();
+            };
+            analysis::RunSpectrum merged = job_spectra[job_of("")];
+            const auto           &plan   = plans[r * rolling.speeds.size() + v];
+            for (std::size_t i = 1; i < plan.size(); ++i)
+              {
+                const auto &low = job_spectra[job_of(plan[i].name)];
+                std::string disagreement =
+                  analysis::low_rate_disagreement(merged.spectrum, low.spectrum, plan[i]);
+                if (disagreement.empty())
+                  disagreement = analysis::low_rate_disagreement(merged.force_spectrum,
+                                                                 low.force_spectrum, plan[i]);
+                if (!disagreement.empty())
+                  {
+                    std::cout << "Warning: " << roads.roads[r] << " at "
+                              << format_number(rolling.speeds[v]) << " km/h: the low-rate run ("
+                              << format_short(1e6 * plan[i].time_step)
+                              << " us, 'Spectra/Low-band time step') disagrees with the run at "
+                                 "the scene's step in "
+                              << disagreement
+                              << "; its bands are not used (a smaller 'Spectra/Low-band time "
+                                 "step' may suit this contact)\n";
+                    continue;
+                  }
+                merged.spectrum       = analysis::merge_band_spectra(merged.spectrum, low.spectrum, plan[i]);
+                merged.force_spectrum = analysis::merge_band_spectra(merged.force_spectrum,
+                                                                     low.force_spectrum, plan[i]);
+              }
+            run_spectra.push_back(std::move(merged));
+          }
+
       // Stage analysis: the spectra per road (speeds) and per speed (roads).
       analysis::write_spectra(directory, run_spectra, roads.roads, rolling.speeds,
-                              rolling.stress_reference, model.f_max, spectra, rolling.distance,
-                              record);
+                              rolling.stress_reference, model.f_max, spectra, record);
       if (global.print_timings)
         std::cout << "Total run time "
                   << format_printf("%.3g", std::chrono::duration<double>(
@@ -378,24 +466,26 @@ namespace greentread
                            const Eigen::MatrixXd        &G0,
                            const Eigen::VectorXd        &tread,
                            const analysis::PatchLattice &lattice,
-                           const road::Texture          &texture,
                            const road::PatchRoad        &patch_road,
                            const std::string            &road_name,
                            const double                  speed_kmh,
+                           const analysis::BandRun      &band_run,
                            const std::filesystem::path  &directory,
                            const base::ParameterRecord  &record,
                            const unsigned int            threads) const
     {
-      const double V  = speed_kmh / 3.6;
-      const double dt = rolling.time_step > 0. ? rolling.time_step : texture.dx / V;
-      const unsigned int n_steps = contact::steps_to_cover(rolling.distance, V, dt);
-      if (rolling.distance > patch_road.usable_length())
+      const double       V       = speed_kmh / 3.6;
+      const double       dt      = band_run.time_step;
+      const unsigned int n_steps = band_run.steps;
+      if (band_run.distance > patch_road.usable_length())
         throw InputError("parameter 'Rolling/Distance' = " +
-                         format_short(rolling.distance) + " m is longer than road '" +
+                         format_short(band_run.distance) + " m is longer than road '" +
                          road_name + "' allows (" +
                          format_short(patch_road.usable_length()) +
                          " m once the patch is on it)");
-      const std::string run = analysis::road_label(road_name) + "_" + analysis::speed_label(speed_kmh);
+      const std::string run = analysis::road_label(road_name) + "_" +
+                              analysis::speed_label(speed_kmh) +
+                              (band_run.name.empty() ? "" : "_" + band_run.name);
       // What the run prints goes out in whole blocks (runs go side by side).
       std::ostringstream out;
       const auto         print = [&out]() {
@@ -405,8 +495,11 @@ namespace greentread
         out.str("");
       };
       out << "  run " << run << ": V0 = " << format_number(speed_kmh)
-          << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, " << n_steps
-          << " steps, " << convolution::to_string(rolling.convolution) << '\n';
+          << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, "
+          << format_short(band_run.distance) << " m, " << n_steps << " steps, "
+          << convolution::to_string(rolling.convolution)
+          << (band_run.name.empty() ? "" : ", for the bands up to " + format_number(band_run.f_high) + " Hz")
+          << '\n';
       print();
       const auto t_run = std::chrono::steady_clock::now();
       const unsigned int n_p = grid.n_points();
@@ -467,23 +560,17 @@ namespace greentread
       progress.finish();
       result.seconds    = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
       result.mean_force = impulse_total / (n_steps * dt);
-      const double top_band = spectrum_top_band(dt);
-      if (top_band < 5000.)
+      const double top_band = band_run.name.empty() ? spectrum_top_band(dt) : band_run.f_high;
+      if (band_run.name.empty() && top_band < 5000.)
         out << "    the spectrum ends at the " << format_number(top_band)
                   << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)
                   << " us resolves up to " << format_printf("%.0f", 0.5 / dt) << " Hz\n";
       result.spectrum = analysis::welch_band_spectrum(output.centre_stress(), dt,
                                                       rolling.stress_reference, 100., top_band,
                                                       spectra.lines_per_segment);
-      analysis::write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"),
-                                        result.spectrum,
-                                        "contact stress at the patch centre (the mean over the "
-                                        "reporting cell), Pa");
       const analysis::BandSpectrum force_spectrum =
         analysis::welch_band_spectrum(output.total_force(), dt, 1., 100., top_band,
                                       spectra.lines_per_segment);
-      analysis::write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
-                                        force_spectrum, "total contact force, N");
       out << "    " << run << ": mean total force " << format_printf("%.4g", result.mean_force)
                 << " N (static " << format_printf("%.4g", equilibrium.q.sum())
                 << " N), points in contact " << format_printf("%.0f", 100. * result.min_contact_fraction)

@@ -3,7 +3,9 @@
 # quartic section, tributary areas, the ring's own modes, the contact grid
 # at 8 subdivisions, projected CG), on one road, one speed and a short
 # distance: a 5 um sinusoid of 40 mm at 90 km/h under 3000 N, where the
-# contact is sustained. WORKDIR is kept: its saved stages are the fixture of
+# contact is sustained, with its multi-rate spectra (the bands to 1 kHz from
+# a low-rate run as long as a 2 dB target needs, a quarter of the default
+# 1 dB's). WORKDIR is kept: its saved stages are the fixture of
 # unit/main_job_path. Checked here, from what the run prints:
 # - the route: the harmonic ring, the ring's modes, 7680 contact points by
 #   projected CG, every step converged;
@@ -23,6 +25,7 @@ execute_process(
     --set "Rolling/Speeds (kph)=90"
     --set "Rolling/Static load=3000"
     --set "Rolling/Distance=1.1"
+    --set "Spectra/Standard error target=2"
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 file(WRITE ${WORKDIR}/screen.txt "${out}${err}")
 if(NOT status EQUAL 0)
@@ -40,6 +43,13 @@ require("Stage modal: the ring's own modes" "not the ring's own modes")
 require("= 7680 points, rectangles 0.750 x 0.833 mm" "not the contact grid of 8 subdivisions")
 require("the contact solved by projected CG" "not the projected CG solver")
 require("steps the contact solve did not converge: 0," "a contact step did not converge")
+require("run sinusoid_90kmh_low-rate: V0 = 90 km/h, dt = 76.8 us, [0-9.]+ m, [0-9]+ steps, modal-recursive, for the bands up to 1000 Hz"
+        "not the multi-rate spectra (a low-rate run at 76.8 us for the bands to 1 kHz)")
+# Under 3000 N on 60% of the points the coarse step rings (the total force's
+# standard deviation 660 N against 56 N at the scene's step): the check of
+# the low-rate run against the run at the scene's step must refuse its bands.
+require("Warning: sinusoid at 90 km/h: the low-rate run \\(76.8 us, 'Spectra/Low-band time step'\\) disagrees with the run at the scene's step"
+        "the low-rate run's ringing bands were used")
 
 # E over the 14,400 pairs of 120 points, and passivity.
 include(${CMAKE_CURRENT_LIST_DIR}/synthesis_figures.cmake)

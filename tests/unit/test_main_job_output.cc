@@ -184,14 +184,15 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
     BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
   }
   {
-    // Road-A at a twentieth and a tenth of its heights (a tenth and a fifth
-    // on the texture every contact grid now shares gave 4.6 dB at 2 kHz:
-    // there the contact is not sustained enough): every band from 160 Hz
-    // to 5 kHz within 0.5 dB of +6.02 dB, and on average within 0.2 dB.
-    const auto a = run_scene("road-A-twentieth", "road-A", 90.,
+    // Road-A at a fortieth and a twentieth of its heights (a tenth and a
+    // fifth gave 4.6 dB at 2 kHz, and a twentieth and a tenth 4.9 dB on the
+    // road's realisation of 3750 samples: there the contact is not
+    // sustained enough): every band from 160 Hz to 5 kHz within 0.5 dB of
+    // +6.02 dB, and on average within 0.2 dB.
+    const auto a = run_scene("road-A-fortieth", "road-A", 90.,
+                             {"Rolling/Static load=3000", "Road texture/Height scale=0.025"});
+    const auto b = run_scene("road-A-twentieth", "road-A", 90.,
                              {"Rolling/Static load=3000", "Road texture/Height scale=0.05"});
-    const auto b = run_scene("road-A-tenth", "road-A", 90.,
-                             {"Rolling/Static load=3000", "Road texture/Height scale=0.1"});
     double mean = 0.;
     int    n    = 0;
     for (std::size_t k = 0; k < a.spectrum.level.size(); ++k)

@@ -136,15 +136,16 @@ namespace greentread
      * a column of the CSV files, a shaded band of +- one standard error
      * around each curve, and on screen the bands from
      * @p spectra.target_from up whose error exceeds @p spectra.target_error,
-     * with the distance that would meet it.
+     * with the distance of the run that gave them (BandSpectrum::duration)
+     * that would meet it. Each run's spectra (each band from the run that
+     * gave it) go to spectrum_<run>.csv and spectrum_force_<run>.csv.
      * @param[in] stress_reference sigma_0 of the levels [Pa].
      * @param[in] f_max The Green's functions' highest line [Hz].
-     * @param[in] distance The distance each run rolled [m].
      */
     void
     write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &runs,
                   const std::vector<std::string> &roads, const std::vector<double> &speeds,
                   double stress_reference, double f_max, const SpectraParameters &spectra,
-                  double distance, const base::ParameterRecord &record);
+                  const base::ParameterRecord &record);
   } // namespace analysis
 } // namespace greentread

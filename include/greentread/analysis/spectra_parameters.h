@@ -19,13 +19,18 @@ namespace greentread
       unsigned int lines_per_segment = 8;
       double       target_error      = 1.;   ///< [dB]
       double       target_from       = 250.; ///< the lowest band the target covers [Hz]
+      /// Multi-rate: the highest band of the low-rate run [Hz] (0: one rate),
+      /// its time step [s], and its longest distance [m].
+      double low_bands_up_to    = 1000.;
+      double low_band_time_step = 76.8e-6;
+      double longest_distance   = 50.;
       /// The reporting cell along x and across y [m]; 0: the Green's-function rectangle.
       double reporting_along = 0., reporting_across = 0.;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
-      /// @throws InputError naming 'Spectra/Target from' if it is no band's
-      /// nominal centre from 100 Hz to 5 kHz.
+      /// @throws InputError naming 'Spectra/Target from' or 'Low bands up to'
+      /// if it is no band's nominal centre from 100 Hz to 5 kHz (or 0 for the latter).
       void
       parse_parameters(dealii::ParameterHandler &prm);
     };

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -83,6 +84,10 @@ namespace greentread
       std::vector<double> predicted_error;
       /// The Welch segments of each band (1: the whole record).
       std::vector<unsigned int> segments;
+      /// The sample interval [s] and the record's duration [s] each band
+      /// came from (a multi-rate estimate takes bands from two records:
+      /// merge_band_spectra()).
+      std::vector<double> time_step, duration;
     };
 
     /// The segments a band needs before its standard error is their scatter.
@@ -186,14 +191,44 @@ namespace greentread
                         unsigned int               lines_per_segment = 8);
 
     /**
+     * @brief The standard error of each level that welch_band_spectrum()
+     * predicts for a Gaussian signal (BandSpectrum::predicted_error) from a
+     * record of @p n_samples samples @p dt apart, without the record: what
+     * a run must last to meet a target is known before it runs. A band
+     * with no Fourier line gets infinity.
+     * @throws InputError if @p n_samples < 2, @p dt <= 0 or
+     * @p lines_per_segment = 0.
+     */
+    std::vector<double>
+    predicted_standard_errors(std::size_t                       n_samples,
+                              double                            dt,
+                              const std::vector<FrequencyBand> &bands,
+                              unsigned int                      lines_per_segment);
+
+    /**
+     * @brief The fewest samples, at least @p at_least, whose predicted
+     * standard errors (predicted_standard_errors()) are at most @p target
+     * [dB] in every one of @p bands; @p at_most + 1 if @p at_most samples
+     * do not meet it.
+     */
+    std::size_t
+    samples_for_error(double                            dt,
+                      const std::vector<FrequencyBand> &bands,
+                      unsigned int                      lines_per_segment,
+                      double                            target,
+                      std::size_t                       at_least,
+                      std::size_t                       at_most);
+
+    /**
      * @brief Write @p spectrum as CSV, under a temporary name renamed when
      * complete (base::AtomicFile): a comment line `# ...` naming
      * @p quantity_and_unit (e.g. "sound pressure [Pa]"), the reference and
      * the level floor, the header
      * `nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB`, followed by
-     * `standard_error_dB,predicted_error_dB,segments` when the spectrum has
-     * standard errors (welch_band_spectrum()), and one row per band, 12
-     * significant digits.
+     * `standard_error_dB,predicted_error_dB,segments,time_step_s,record_s`
+     * when the spectrum has standard errors (welch_band_spectrum(): the
+     * time step and the record's duration each band came from), and one
+     * row per band, 12 significant digits.
      * @throws InputError if the file cannot be written.
      */
     void

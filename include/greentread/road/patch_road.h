@@ -54,14 +54,21 @@ namespace greentread
         return road == "road-A" || road == "road-B" || road == "sinusoid" || road == "flat";
       }
 
-      /// The texture named @p road: a preset, "sinusoid", "flat" or a file.
+      /**
+       * The texture named @p road: a preset, "sinusoid", "flat" or a file.
+       * A built-in road is 'Length' long, or @p at_least [m] if longer; a
+       * preset longer than 'Length' is made in pieces of that length
+       * (independent realisations crossfaded over 0.2 m), so that its FFT
+       * needs one piece's memory. Its length is rounded up to a sample
+       * count with prime factors 2, 3 and 5 only.
+       */
       Texture
-      make(const std::string &road, double width) const;
+      make(const std::string &road, double width, double at_least = 0.) const;
 
     private:
-      /// make() before the height scale.
+      /// make() before the height scale, @p road_length [m] long.
       Texture
-      make_unscaled(const std::string &road, double width) const;
+      make_unscaled(const std::string &road, double width, double road_length) const;
     };
 
     /**

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/analysis/band_runs.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/output.h>
@@ -56,7 +57,8 @@ namespace greentread
                   const std::filesystem::path &directory,
                   const base::ParameterRecord &record) const;
 
-      /// One run: road @p road_name at @p speed_kmh on the contact points of
+      /// One run: road @p road_name at @p speed_kmh, at the time step and over
+      /// the distance of @p band_run, on the contact points of
       /// @p grid, from the static contact (the structure's static
       /// compliance @p G0 between the Green's functions' points, which the
       /// grid splits), with its outputs; returns its spectrum. Its modal
@@ -65,8 +67,8 @@ namespace greentread
       analysis::RunSpectrum
       roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
            const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
-           const analysis::PatchLattice &lattice, const road::Texture &texture,
-           const road::PatchRoad &patch_road, const std::string &road_name, double speed_kmh,
+           const analysis::PatchLattice &lattice, const road::PatchRoad &patch_road,
+           const std::string &road_name, double speed_kmh, const analysis::BandRun &band_run,
            const std::filesystem::path &directory, const base::ParameterRecord &record,
            unsigned int threads) const;
 
