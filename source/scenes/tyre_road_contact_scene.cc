@@ -241,20 +241,21 @@ namespace greentread
       std::vector<std::vector<analysis::BandRun>>    plans;
       std::vector<double>                            road_length(roads.roads.size(), 0.);
       for (std::size_t r = 0; r < roads.roads.size(); ++r)
-        for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
+        {
+          const auto   file    = texture_files.find(roads.roads[r]);
+          const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
+          // A texture file bounds the low-rate run by the length its points
+          // can roll over.
+          analysis::SpectraParameters limits = spectra;
+          if (file != texture_files.end())
+            limits.longest_distance = std::min(
+              spectra.longest_distance,
+              road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
+                .usable_length());
+          for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
           {
-            const auto   file    = texture_files.find(roads.roads[r]);
-            const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
             const double V       = rolling.speeds[v] / 3.6;
             const double dt      = rolling.time_step > 0. ? rolling.time_step : spacing / V;
-            analysis::SpectraParameters limits = spectra;
-            // A texture file bounds the low-rate run by the length its
-            // points can roll over.
-            if (file != texture_files.end())
-              limits.longest_distance = std::min(
-                spectra.longest_distance,
-                road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
-                  .usable_length());
             plans.push_back(analysis::plan_band_runs(limits, V, dt, rolling.distance,
                                                      spectrum_top_band(dt)));
             for (const auto &run : plans.back())
@@ -269,6 +270,7 @@ namespace greentread
                 road_length[r] = std::max(road_length[r], run.distance);
               }
           }
+        }
       // The longest runs first, so that two threads end together.
       std::stable_sort(jobs.begin(), jobs.end(), [](const Job &a, const Job &b) {
         return a.run.steps > b.run.steps;
