@@ -24,6 +24,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/convolution/patch_convolution.h>
 #include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/synthesis/mode_truncation.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/synthesis/ring_modes.h>
@@ -142,23 +143,9 @@ main(int argc, char **argv)
       double last_median = NAN, last_worst = NAN; // at the highest cut-off
       for (const double cutoff : cutoffs)
         {
-          std::vector<Eigen::Index> keep;
-          for (Eigen::Index k = 0; k < all.frequency_hz.size(); ++k)
-            if (all.frequency_hz(k) <= cutoff)
-              keep.push_back(k);
-          const Eigen::Index m = keep.size();
-          Eigen::VectorXd    omega(m), xi(m);
-          const bool         coupled = all.shapes_imag.size() > 0;
-          Eigen::MatrixXd    shapes(m, P), imag(coupled ? m : 0, P);
-          for (Eigen::Index r = 0; r < m; ++r)
-            {
-              omega(r)      = 2. * M_PI * all.frequency_hz(keep[r]);
-              xi(r)         = all.damping_ratio(keep[r]);
-              shapes.row(r) = all.shapes.row(keep[r]);
-              if (coupled)
-                imag.row(r) = all.shapes_imag.row(keep[r]);
-            }
-          const auto synthesis = synthesis::synthesise(omega, xi, shapes, imag, green);
+          const auto         synthesis = synthesis::truncate(all, cutoff, green);
+          const Eigen::Index m         = synthesis.n_modes();
+          const bool         coupled   = all.shapes_imag.size() > 0;
           const auto errors    = synthesis::compare(synthesis, green);
           double     driving   = 0.;
           for (unsigned int i = 0; i < P; ++i)
