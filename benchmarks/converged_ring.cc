@@ -102,11 +102,12 @@ namespace
                start = comma + 1)
             fields.push_back(line.substr(start, comma - start));
           fields.push_back(line.substr(start));
-          // 6 fields, 3 more with the standard errors (welch_band_spectrum())
-          // and 2 more with each band's step and record.
-          if (fields.size() != 6 && fields.size() != 9 && fields.size() != 11)
+          // 6 fields, 3 more with the standard errors (welch_band_spectrum()),
+          // 2 more with each band's step and record, and with error bars
+          // their total and one per discretisation estimated (1 to 3).
+          if (fields.size() != 6 && fields.size() != 9 && (fields.size() < 11 || fields.size() > 15))
             throw InputError("'" + file.string() + "': line '" + line +
-                             "' does not have the 6, 9 or 11 fields of a band spectrum");
+                             "' does not have the 6, 9 or 11 to 15 fields of a band spectrum");
           levels[std::stoi(fields[0])] = std::stod(fields[5]);
         }
     return levels;

@@ -1,3 +1,4 @@
+#include <greentread/analysis/error_bars.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/plot.h>
@@ -8,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <iostream>
+#include <limits>
 
 namespace greentread
 {
@@ -291,6 +293,12 @@ namespace greentread
     {
       // Stage analysis: the spectra per road (speeds) and per speed (roads),
       // of the stress at the patch centre and of the total force.
+      // The discretisations estimated in any run, in the order of the first.
+      std::vector<std::string> labels;
+      for (const auto &r : results)
+        for (const auto &e : r.spectrum.discretisation_error)
+          if (std::find(labels.begin(), labels.end(), e.first) == labels.end())
+            labels.push_back(e.first);
       const auto write_csv = [&](const std::string &name, const std::string &what,
                                  const BandSpectrum RunSpectrum::*which) {
         base::AtomicFile f(directory / name);
@@ -302,15 +310,39 @@ namespace greentread
           << " or more, and at least a Gaussian signal's below " << floor_segments
           << "; a Gaussian signal's with fewer)\n"
           << "; time_step_us and record_m: the run each band came from (the low-rate run "
-          << "of 'Spectra/Low bands up to', or the run at the scene's step)\n"
-          << "road,speed_kmh,band_Hz,level_dB,standard_error_dB,segments,time_step_us,record_m\n";
+          << "of 'Spectra/Low bands up to', or the run at the scene's step)"
+          << (labels.empty() ? "" :
+                               "; <discretisation>_dB: the error bars' estimate of that "
+                               "discretisation's error (analysis/error_bars.h; empty: not "
+                               "estimated in the band), total_error_dB: the standard error and "
+                               "the estimates in quadrature")
+          << "\nroad,speed_kmh,band_Hz,level_dB,standard_error_dB,segments,time_step_us,record_m"
+          << (labels.empty() ? "" : ",total_error_dB");
+        for (const auto &l : labels)
+          o << ',' << l << "_dB";
+        o << '\n';
         for (const auto &r : results)
           {
             const BandSpectrum &s = r.*which;
             for (std::size_t b = 0; b < s.bands.size(); ++b)
-              o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ','
-                << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << ','
-                << 1e6 * s.time_step[b] << ',' << s.duration[b] * r.speed_kmh / 3.6 << '\n';
+              {
+                o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ','
+                  << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << ','
+                  << 1e6 * s.time_step[b] << ',' << s.duration[b] * r.speed_kmh / 3.6;
+                if (!labels.empty())
+                  o << ',' << (s.total_error.empty() ? s.standard_error[b] : s.total_error[b]);
+                for (const auto &l : labels)
+                  {
+                    double value = std::numeric_limits<double>::quiet_NaN();
+                    for (const auto &[name, error] : s.discretisation_error)
+                      if (name == l)
+                        value = error[b];
+                    o << ',';
+                    if (!std::isnan(value)) // empty: not estimated in this band
+                      o << value;
+                  }
+                o << '\n';
+              }
           }
         record.write_comments(o);
         f.commit();
@@ -335,7 +367,9 @@ namespace greentread
       const auto plot_spectra = [&](const std::filesystem::path &png, const std::string &title,
                                     const std::string &kind, const std::string &ylabel,
                                     const std::function<bool(const RunSpectrum &)> &take) {
-        // Each curve over its band of +- one standard error, in its colour.
+        // Each curve over its band of +- one standard error (or its error
+        // bar: the standard error and the discretisation estimates), in its
+        // colour.
         std::string bands, curves;
         unsigned    colour = 0;
         for (const auto &r : results)
@@ -344,9 +378,10 @@ namespace greentread
               const std::string csv = base::gnuplot_quote(
                 directory / (kind + road_label(r.road) + "_" + speed_label(r.speed_kmh) + ".csv"));
               const std::string lc = " lc " + std::to_string(++colour);
-              bands += (bands.empty() ? "plot " : ", ") + csv +
-                       " skip 2 using 1:($6-$7):($6+$7) with filledcurves fs transparent solid "
-                       "0.2 noborder" + lc + " notitle";
+              const std::string e = r.spectrum.total_error.empty() ? "$7" : "$12";
+              bands += (bands.empty() ? "plot " : ", ") + csv + " skip 2 using 1:($6-" + e +
+                       "):($6+" + e + ") with filledcurves fs transparent solid 0.2 noborder" +
+                       lc + " notitle";
               curves += ", " + csv + " skip 2 using 1:6 with linespoints lw 2" + lc + " title '" +
                         road_label(r.road) + ", " + format_number(r.speed_kmh) + " km/h'";
             }
@@ -449,6 +484,36 @@ namespace greentread
           }
       if (!all_met)
         std::cout << "  (spectra.csv and spectra_force.csv give every band's standard error)\n";
+      if (labels.empty())
+        return;
+
+      // The error bars: the largest in the bands that carry the most
+      // energy, and what to change to lower it.
+      constexpr double leading = 10.;
+      std::cout << "Error bars from " << format_number(spectra.target_from)
+                << " Hz (the standard error and the discretisation estimates, 'Error "
+                   "bars/Estimates'; in the bands within "
+                << format_number(leading) << " dB of the highest, the largest contributor):\n";
+      for (const auto &r : results)
+        for (const auto &[what, s] : {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
+                                      {"force", &r.force_spectrum}})
+          {
+            double largest = 0., band = 0.;
+            for (std::size_t b = 0; b < s->bands.size(); ++b)
+              if (s->bands[b].nominal >= spectra.target_from * (1. - 1e-9) &&
+                  !s->total_error.empty() && s->total_error[b] > largest)
+                {
+                  largest = s->total_error[b];
+                  band    = s->bands[b].nominal;
+                }
+            const Contributor c = largest_contributor(*s, spectra.target_from, leading);
+            std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
+                      << " km/h, " << what << ": largest " << format_printf("%.2f", largest)
+                      << " dB (" << format_number(band) << " Hz); leading bands: "
+                      << (c.what == "statistics" ? "the standard error" : "the " + c.what + "'s estimate")
+                      << ", " << format_printf("%.2f", c.error) << " dB at "
+                      << format_number(c.band) << " Hz: " << c.parameter << '\n';
+          }
     }
   } // namespace analysis
 } // namespace greentread

@@ -580,9 +580,13 @@ namespace greentread
                          " bands but " + std::to_string(s.standard_error.size()) +
                          " standard errors");
       const bool sources = s.time_step.size() == B && s.duration.size() == B;
+      const bool bars = errors && sources && s.total_error.size() == B;
       o << "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB"
         << (errors ? ",standard_error_dB,predicted_error_dB,segments" : "")
-        << (errors && sources ? ",time_step_s,record_s" : "") << '\n';
+        << (errors && sources ? ",time_step_s,record_s" : "") << (bars ? ",total_error_dB" : "");
+      for (const auto &e : bars ? s.discretisation_error : decltype(s.discretisation_error)())
+        o << ',' << e.first << "_dB";
+      o << '\n';
       for (std::size_t b = 0; b < B; ++b)
         {
           o << s.bands[b].nominal << ',' << s.bands[b].centre << ',' << s.bands[b].lower << ','
@@ -592,6 +596,15 @@ namespace greentread
               << s.segments[b];
           if (errors && sources)
             o << ',' << s.time_step[b] << ',' << s.duration[b];
+          if (bars)
+            {
+              o << ',' << s.total_error[b];
+              for (const auto &e : s.discretisation_error)
+                if (std::isnan(e.second[b]))
+                  o << ','; // not estimated in this band
+                else
+                  o << ',' << e.second[b];
+            }
           o << '\n';
         }
       out.commit();

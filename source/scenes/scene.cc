@@ -1,3 +1,4 @@
+#include <greentread/analysis/error_bar_parameters.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
@@ -88,6 +89,7 @@ namespace greentread
       road::RoadTextureParameters::declare_parameters(prm);
       contact::RollingParameters::declare_parameters(prm);
       analysis::SpectraParameters::declare_parameters(prm);
+      analysis::ErrorBarParameters::declare_parameters(prm);
       contact::ContactGridParameters::declare_parameters(prm);
       declare_renamed_parameters(prm);
     }
@@ -111,7 +113,7 @@ namespace greentread
       return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
               "Identification", "Patch model", "Road texture", "Road/Sinusoid", "Rolling",
               "Contact grid", "Time stepping/Time step", "Convolution/Method",
-              "Convolution/Shape precision", "Spectra"};
+              "Convolution/Shape precision", "Spectra", "Error bars"};
     }
 
 

@@ -1,3 +1,4 @@
+#include <greentread/analysis/error_bars.h>
 #include <greentread/analysis/mode_output.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/third_octave.h>
@@ -11,6 +12,7 @@
 #include <greentread/modal/passivity.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/synthesis/mode_truncation.h>
 #include <greentread/synthesis/mode_stage.h>
 #include <greentread/scenes/tyre_road_contact_scene.h>
 
@@ -21,6 +23,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <tuple>
 #include <chrono>
@@ -55,6 +58,33 @@ namespace greentread
                            " s");
         return top;
       }
+
+      /// The error bars' coarser contact grid ('Contact grid/Subdivisions'
+      /// halved), when some road and speed estimates the grid: its points'
+      /// lattice and tread heights too.
+      struct CoarserGrid
+      {
+        std::unique_ptr<contact::ContactGrid>   grid;
+        std::unique_ptr<analysis::PatchLattice> lattice;
+        Eigen::VectorXd                         tread;
+
+        CoarserGrid(const std::vector<std::array<double, 3>> &coarse_points,
+                    const contact::ContactGrid &fine, const contact::ElasticLayer &layer,
+                    const std::vector<std::vector<analysis::EstimateRun>> &estimates)
+        {
+          bool wanted = false;
+          for (const auto &of_run : estimates)
+            for (const auto &e : of_run)
+              wanted = wanted || e.what == analysis::Discretisation::contact_grid;
+          if (!wanted)
+            return;
+          grid = std::make_unique<contact::ContactGrid>(coarse_points, fine.subdivisions / 2,
+                                                        layer, fine.matrix_free,
+                                                        fine.candidate_set);
+          lattice = std::make_unique<analysis::PatchLattice>(grid->points, "the coarser contact grid");
+          tread   = contact::tread_heights(grid->points);
+        }
+      };
     } // namespace
 
 
@@ -73,6 +103,7 @@ namespace greentread
       roads.parse_parameters(prm);
       rolling.parse_parameters(prm);
       spectra.parse_parameters(prm);
+      error_bars.parse_parameters(prm);
       contact_grid.parse_parameters(prm);
       // The solver against the patch model, refused now rather than after
       // the Green's functions.
@@ -144,22 +175,6 @@ namespace greentread
 
 
 
-    namespace
-    {
-      /// The results of one run that the summaries need.
-      struct RunResult
-      {
-        std::string                 road;
-        double                      speed = 0.;
-        analysis::BandSpectrum      spectrum;
-        double                      seconds = 0., mean_force = 0.;
-        unsigned int                steps = 0, failed_steps = 0, fallback_points = 0;
-        double                      max_contact_fraction = 0., min_contact_fraction = 1.;
-      };
-    } // namespace
-
-
-
     void
     TyreRoadContactScene::run()
     {
@@ -176,7 +191,8 @@ namespace greentread
       const base::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
 
       // Stage 4: modal, the patch model (saved too).
-      const modal::PatchModel model = modal_stage(G, green_key, directory, record);
+      std::optional<CoarserModel> coarser_model;
+      const modal::PatchModel     model = modal_stage(G, green_key, directory, record, &coarser_model);
 
       // The contact grid (the Green's functions' points, or finer with the
       // tread's layer below them), its lattice, the tread's own height (its
@@ -228,7 +244,8 @@ namespace greentread
       struct RoadOfRuns
       {
         std::string     name;
-        road::PatchRoad patch_road;
+        road::PatchRoad                  patch_road;
+        std::unique_ptr<road::PatchRoad> coarser; ///< under the coarser grid's points
       };
       // Each road at each speed: the run at the scene's step and, for the
       // low bands, a longer one at a coarser step (analysis::plan_band_runs()).
@@ -236,9 +253,13 @@ namespace greentread
       {
         std::size_t       road, speed;
         analysis::BandRun run;
+        /// -1, or the index of the error bars' other level it is.
+        int estimate = -1;
       };
       std::vector<Job>                               jobs;
       std::vector<std::vector<analysis::BandRun>>    plans;
+      // The error bars' coarser levels of each road and speed's runs.
+      std::vector<std::vector<analysis::EstimateRun>> estimates;
       std::vector<double>                            road_length(roads.roads.size(), 0.);
       for (std::size_t r = 0; r < roads.roads.size(); ++r)
         {
@@ -269,8 +290,29 @@ namespace greentread
                 jobs.push_back({r, v, run});
                 road_length[r] = std::max(road_length[r], run.distance);
               }
+            estimates.push_back(analysis::plan_estimate_runs(plans.back(), error_bars,
+                                                             spectra.target_from, V,
+                                                             grid.subdivisions));
+            auto &e = estimates.back();
+            e.erase(std::remove_if(e.begin(), e.end(),
+                                   [&](const analysis::EstimateRun &x) {
+                                     return x.what == analysis::Discretisation::mode_cutoff &&
+                                            !coarser_model;
+                                   }),
+                    e.end());
+            for (std::size_t k = 0; k < e.size(); ++k)
+              {
+                if (e[k].what == analysis::Discretisation::mode_cutoff)
+                  e[k].factor = coarser_model->factor;
+                if (e[k].run.steps > 0)
+                  jobs.push_back({r, v, e[k].run, int(k)});
+              }
           }
         }
+      // The error bars' coarser grid (its road under its own points).
+      const CoarserGrid coarser(model.points, grid,
+                                {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
+                                estimates);
       // The longest runs first, so that two threads end together.
       std::stable_sort(jobs.begin(), jobs.end(), [](const Job &a, const Job &b) {
         return a.run.steps > b.run.steps;
@@ -293,7 +335,10 @@ namespace greentread
           road::PatchRoad     patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
           road_list.push_back(std::make_unique<RoadOfRuns>(
-            RoadOfRuns{road_name, std::move(patch_road)}));
+            RoadOfRuns{road_name, std::move(patch_road),
+                       coarser.grid ? std::make_unique<road::PatchRoad>(
+                                        texture, coarser.grid->points, roads.sampling, road_name) :
+                                      nullptr}));
         }
       const std::size_t  n_runs  = jobs.size();
       const unsigned int threads = dealii::MultithreadInfo::n_threads();
@@ -314,9 +359,20 @@ namespace greentread
               const RoadOfRuns &r = *road_list[jobs[k].road];
               try
                 {
-                  job_spectra[k] = roll(model, grid, G0, tread, lattice, r.patch_road, r.name,
-                                        rolling.speeds[jobs[k].speed], jobs[k].run, directory,
-                                        record, std::max(1u, threads / side_by_side));
+                  const Job &job = jobs[k];
+                  const auto what =
+                    job.estimate < 0 ?
+                      std::optional<analysis::Discretisation>() :
+                      estimates[job.road * rolling.speeds.size() + job.speed][job.estimate].what;
+                  const bool on_coarser_grid = what == analysis::Discretisation::contact_grid;
+                  job_spectra[k] =
+                    roll(what == analysis::Discretisation::mode_cutoff ? coarser_model->model : model,
+                         on_coarser_grid ? *coarser.grid : grid, G0,
+                         on_coarser_grid ? coarser.tread : tread,
+                         on_coarser_grid ? *coarser.lattice : lattice,
+                         on_coarser_grid ? *r.coarser : r.patch_road, r.name,
+                         rolling.speeds[job.speed], job.run, directory, record,
+                         std::max(1u, threads / side_by_side), job.estimate < 0);
                 }
               catch (...)
                 {
@@ -343,6 +399,7 @@ namespace greentread
             };
             analysis::RunSpectrum merged = job_spectra[job_of("")];
             const auto           &plan   = plans[r * rolling.speeds.size() + v];
+            std::vector<bool>     used(plan.size(), true);
             for (std::size_t i = 1; i < plan.size(); ++i)
               {
                 const auto &low = job_spectra[job_of(plan[i].name)];
@@ -361,12 +418,19 @@ namespace greentread
                               << disagreement
                               << "; its bands are not used (a smaller 'Spectra/Low-band time "
                                  "step' may suit this contact)\n";
+                    used[i] = false;
                     continue;
                   }
                 merged.spectrum       = analysis::merge_band_spectra(merged.spectrum, low.spectrum, plan[i]);
                 merged.force_spectrum = analysis::merge_band_spectra(merged.force_spectrum,
                                                                      low.force_spectrum, plan[i]);
               }
+            analysis::add_error_bars(
+              merged, estimates[r * rolling.speeds.size() + v], plan, used,
+              [&](const std::string &name) -> const analysis::RunSpectrum & {
+                return job_spectra[job_of(name)];
+              },
+              rolling.stress_reference, spectra.lines_per_segment);
             run_spectra.push_back(std::move(merged));
           }
 
@@ -425,7 +489,8 @@ namespace greentread
     TyreRoadContactScene::modal_stage(const base::FrequencyResponseMatrix &G,
                                   const std::string                    &green_key,
                                   const std::filesystem::path          &directory,
-                                  const base::ParameterRecord          &record) const
+                                  const base::ParameterRecord          &record,
+                                  std::optional<CoarserModel>          *coarser) const
     {
       if (patch_model.source == modal::PatchModelSource::identified)
         {
@@ -437,6 +502,9 @@ namespace greentread
           modal::print_passivity(passivity, "the identified patch model");
           modal::check_passivity(passivity, patch_model.allow_non_passive,
                                  "the identified patch model");
+          if (error_bars.estimates_any(analysis::Discretisation::mode_cutoff))
+            std::cout << "  the mode cut-off's error bar needs the ring's own modes ('Patch "
+                         "model/Source' = fe modes): not estimated\n";
           return model;
         }
       const synthesis::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
@@ -457,138 +525,27 @@ namespace greentread
       for (unsigned int i = 0; i < n_p; ++i)
         for (unsigned int j = 0; j < n_p; ++j)
           E(i, j) = errors.pair_error[i * n_p + j];
+      if (coarser && error_bars.estimates_any(analysis::Discretisation::mode_cutoff))
+        {
+          // The error bar's coarser level: the same modes up to a lower
+          // cut-off, with their own residual. The estimate scales the level
+          // difference by how much closer to the direct lines the finer
+          // level is (E's median): the observed convergence.
+          const double cutoff = error_bars.cutoff_ratio * patch_model.mode_cutoff;
+          const synthesis::ModeSynthesis fewer = synthesis::truncate(synthesis, cutoff, G);
+          const double e_fewer = synthesis::compare(fewer, G).median;
+          const double factor =
+            e_fewer > errors.median ? errors.median / (e_fewer - errors.median) : 1.;
+          std::cout << "  the mode cut-off's error bar: the " << fewer.n_modes()
+                    << " modes to " << format_number(cutoff) << " Hz ('Error bars/Coarser mode "
+                    << "cutoff'), E median " << format_printf("%.3g", 100. * e_fewer)
+                    << "% against " << format_printf("%.3g", 100. * errors.median)
+                    << "%: the estimate is " << format_printf("%.3g", factor)
+                    << " times the level difference\n";
+          *coarser = CoarserModel{synthesis::to_patch_model(fewer, E, G.df * (G.n_lines - 1)),
+                                  cutoff, factor};
+        }
       return synthesis::to_patch_model(synthesis, E, G.df * (G.n_lines - 1));
-    }
-
-
-
-    analysis::RunSpectrum
-    TyreRoadContactScene::roll(const modal::PatchModel      &model,
-                           const contact::ContactGrid   &grid,
-                           const Eigen::MatrixXd        &G0,
-                           const Eigen::VectorXd        &tread,
-                           const analysis::PatchLattice &lattice,
-                           const road::PatchRoad        &patch_road,
-                           const std::string            &road_name,
-                           const double                  speed_kmh,
-                           const analysis::BandRun      &band_run,
-                           const std::filesystem::path  &directory,
-                           const base::ParameterRecord  &record,
-                           const unsigned int            threads) const
-    {
-      const double       V       = speed_kmh / 3.6;
-      const double       dt      = band_run.time_step;
-      const unsigned int n_steps = band_run.steps;
-      if (band_run.distance > patch_road.usable_length())
-        throw InputError("parameter 'Rolling/Distance' = " +
-                         format_short(band_run.distance) + " m is longer than road '" +
-                         road_name + "' allows (" +
-                         format_short(patch_road.usable_length()) +
-                         " m once the patch is on it)");
-      const std::string run = analysis::road_label(road_name) + "_" +
-                              analysis::speed_label(speed_kmh) +
-                              (band_run.name.empty() ? "" : "_" + band_run.name);
-      // What the run prints goes out in whole blocks (runs go side by side).
-      std::ostringstream out;
-      const auto         print = [&out]() {
-        static std::mutex                 mutex;
-        const std::lock_guard<std::mutex> lock(mutex);
-        std::cout << out.str() << std::flush;
-        out.str("");
-      };
-      out << "  run " << run << ": V0 = " << format_number(speed_kmh)
-          << " km/h, dt = " << format_printf("%.4g", 1e6 * dt) << " us, "
-          << format_short(band_run.distance) << " m, " << n_steps << " steps, "
-          << convolution::to_string(rolling.convolution)
-          << (band_run.name.empty() ? "" : ", for the bands up to " + format_number(band_run.f_high) + " Hz")
-          << '\n';
-      print();
-      const auto t_run = std::chrono::steady_clock::now();
-      const unsigned int n_p = grid.n_points();
-
-      // The road under the points, the static start and the run's set-up.
-      const contact::PatchRoadHeights road_heights =
-        [&](const double s, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
-          patch_road.heights(s, z, slope);
-        };
-      contact::RollingSetup setup;
-      setup.speed         = V;
-      setup.time_step     = dt;
-      setup.n_steps       = n_steps;
-      setup.static_load   = rolling.static_load;
-      setup.indentation   = rolling.indentation;
-      setup.static_start  = rolling.static_start;
-      setup.convolution   = rolling.convolution;
-      setup.direct_kernel = rolling.direct_kernel;
-      setup.threads       = threads;
-      setup.shape_precision = rolling.shape_precision;
-      const auto equilibrium = contact::start_grid_contact(grid, G0, tread, road_heights, setup);
-      out << "    " << run << ": static contact: indentation "
-                << format_printf("%.4g", 1e3 * equilibrium.delta) << " mm, load "
-                << format_printf("%.4g", equilibrium.q.sum()) << " N, "
-                << equilibrium.n_contact << " of " << n_p << " points in contact\n";
-      const double tributary = patch_road.dx_points * patch_road.dy_points;
-      const Eigen::VectorXd reporting =
-        grid.reporting_weights(spectra.reporting_along, spectra.reporting_across);
-
-      RunResult result;
-      result.road  = road_name;
-      result.speed = speed_kmh;
-      result.steps = n_steps;
-      analysis::RunOutput output(directory, run, lattice, V, tributary, reporting,
-                                 n_steps, rolling.frames, record);
-      base::Progress      progress("    " + run, n_steps);
-      const auto observe = [&](const contact::RollingStep &step) {
-        if (!step.report.converged && result.failed_steps < 5)
-          out << "    step " << step.step << " (" << run << ", t = " << format_short(step.time)
-                    << " s): the contact solve did not converge: " << step.report.message
-                    << '\n';
-        result.failed_steps += step.report.converged ? 0 : 1;
-        output.add(step);
-        if (global.print_timings)
-          progress.update(step.step + 1);
-      };
-      const auto convolution = contact::make_grid_convolution(
-        contact::make_patch_convolution(setup.convolution, model, dt, n_steps,
-                                        setup.direct_kernel, setup.threads,
-                                        setup.shape_precision),
-        grid);
-      const auto summary =
-        contact::roll_patch(*convolution, tread, road_heights, equilibrium, setup, observe);
-      result.fallback_points      = summary.fallback_points;
-      result.min_contact_fraction = summary.min_contact_fraction;
-      result.max_contact_fraction = summary.max_contact_fraction;
-      const double impulse_total  = summary.impulse;
-      progress.finish();
-      result.seconds    = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
-      result.mean_force = impulse_total / (n_steps * dt);
-      const double top_band = band_run.name.empty() ? spectrum_top_band(dt) : band_run.f_high;
-      if (band_run.name.empty() && top_band < 5000.)
-        out << "    the spectrum ends at the " << format_number(top_band)
-                  << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)
-                  << " us resolves up to " << format_printf("%.0f", 0.5 / dt) << " Hz\n";
-      result.spectrum = analysis::welch_band_spectrum(output.centre_stress(), dt,
-                                                      rolling.stress_reference, 100., top_band,
-                                                      spectra.lines_per_segment);
-      const analysis::BandSpectrum force_spectrum =
-        analysis::welch_band_spectrum(output.total_force(), dt, 1., 100., top_band,
-                                      spectra.lines_per_segment);
-      out << "    " << run << ": mean total force " << format_printf("%.4g", result.mean_force)
-                << " N (static " << format_printf("%.4g", equilibrium.q.sum())
-                << " N), points in contact " << format_printf("%.0f", 100. * result.min_contact_fraction)
-                << "% to " << format_printf("%.0f", 100. * result.max_contact_fraction)
-                << "%, largest penetration at a step's end "
-                << format_printf("%.2g", summary.max_penetration)
-                << " m, steps the contact solve did not converge: " << result.failed_steps
-                << ", point-steps on the fallback: " << result.fallback_points << '\n';
-      if (global.print_timings)
-        out << "    " << run << ": " << format_printf("%.3g", result.seconds) << " s, "
-                  << format_printf("%.3g", 1e3 * result.seconds / n_steps)
-                  << " ms per step\n";
-
-      output.finish("Road " + road_name + ", " + format_number(speed_kmh) + " km/h");
-      print();
-      return {road_name, speed_kmh, result.spectrum, force_spectrum};
     }
   } // namespace scenes
 } // namespace greentread

@@ -125,6 +125,11 @@ namespace greentread
       double       speed_kmh = 0.;
       BandSpectrum spectrum;       ///< of the stress at the patch centre
       BandSpectrum force_spectrum; ///< of the total contact force, dB re 1 N
+      /// The run's histories, step by step: the stress at the patch centre
+      /// [Pa] and the total force [N], @p time_step [s] apart (the error
+      /// bars' windows come from them).
+      std::vector<double> stress_history, force_history;
+      double              time_step = 0.;
     };
 
     /**

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -88,6 +89,13 @@ namespace greentread
       /// came from (a multi-rate estimate takes bands from two records:
       /// merge_band_spectra()).
       std::vector<double> time_step, duration;
+      /// The discretisation error estimates of each level [dB], by what was
+      /// coarsened ("time_step", "contact_grid", "mode_cutoff";
+      /// analysis/error_bars.h), NaN in a band not estimated. Empty: none.
+      std::vector<std::pair<std::string, std::vector<double>>> discretisation_error;
+      /// The standard error and the estimates combined in quadrature [dB]
+      /// (combine_errors()); empty without estimates.
+      std::vector<double> total_error;
     };
 
     /// The segments a band needs before its standard error is their scatter.
@@ -227,7 +235,10 @@ namespace greentread
      * `nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB`, followed by
      * `standard_error_dB,predicted_error_dB,segments,time_step_s,record_s`
      * when the spectrum has standard errors (welch_band_spectrum(): the
-     * time step and the record's duration each band came from), and one
+     * time step and the record's duration each band came from), then
+     * `total_error_dB` and one `<label>_dB` per discretisation estimate when
+     * it has error bars (BandSpectrum::total_error; empty where a
+     * discretisation is not estimated), and one
      * row per band, 12 significant digits.
      * @throws InputError if the file cannot be written.
      */

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <greentread/analysis/band_runs.h>
+#include <greentread/analysis/error_bar_parameters.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/output.h>
@@ -18,6 +19,8 @@
 #include <greentread/scenes/tyre_cell_scene.h>
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -49,13 +52,23 @@ namespace greentread
       green_stage(const std::filesystem::path &h5, const std::string &key,
                   const base::ParameterRecord &record) const;
 
+      /// A coarser level of the patch model, for the mode cut-off's error
+      /// bar, and the factor that scales its difference into an estimate.
+      struct CoarserModel
+      {
+        modal::PatchModel model;
+        double            cutoff = 0.; ///< [Hz]
+        double            factor = 0.;
+      };
       /// Stage modal: the patch model from 'Patch model/Source', the LSCE fit
       /// or the ring's own modes, each saved beside @p h5 and reused when its
-      /// key matches.
+      /// key matches. With @p coarser (the ring's modes only), also the model
+      /// of the modes up to 'Error bars/Coarser mode cutoff' times the cut-off.
       modal::PatchModel
       modal_stage(const base::FrequencyResponseMatrix &G, const std::string &green_key,
                   const std::filesystem::path &directory,
-                  const base::ParameterRecord &record) const;
+                  const base::ParameterRecord &record,
+                  std::optional<CoarserModel> *coarser = nullptr) const;
 
       /// One run: road @p road_name at @p speed_kmh, at the time step and over
       /// the distance of @p band_run, on the contact points of
@@ -63,14 +76,15 @@ namespace greentread
       /// compliance @p G0 between the Green's functions' points, which the
       /// grid splits), with its outputs; returns its spectrum. Its modal
       /// convolution runs on @p threads threads. Runs may go side by side:
-      /// a run prints its lines in whole blocks.
+      /// a run prints its lines in whole blocks. Without @p write_outputs (a
+      /// coarser run of the error bars) it keeps its histories only.
       analysis::RunSpectrum
       roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
            const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
            const analysis::PatchLattice &lattice, const road::PatchRoad &patch_road,
            const std::string &road_name, double speed_kmh, const analysis::BandRun &band_run,
            const std::filesystem::path &directory, const base::ParameterRecord &record,
-           unsigned int threads) const;
+           unsigned int threads, bool write_outputs = true) const;
 
       dealii::ParameterHandler          &prm;
       GlobalParameters                   global;
@@ -83,6 +97,7 @@ namespace greentread
       road::RoadTextureParameters        roads;
       contact::RollingParameters         rolling;
       analysis::SpectraParameters        spectra;
+      analysis::ErrorBarParameters       error_bars;
       contact::ContactGridParameters     contact_grid;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the

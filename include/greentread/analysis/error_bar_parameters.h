@@ -1,0 +1,56 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The parameters of the discretisation error bars (subsection "Error bars"):
+ * which discretisations get an estimate, how long the coarser runs roll and
+ * how coarse the modes' level is. The method is in analysis/error_bars.h.
+ */
+
+namespace greentread
+{
+  namespace analysis
+  {
+    /// What one coarser level coarsens.
+    enum class Discretisation
+    {
+      time_step,
+      contact_grid,
+      mode_cutoff
+    };
+
+    /// Subsection "Error bars".
+    struct ErrorBarParameters
+    {
+      /// The discretisations estimated, in the order of 'Estimates'.
+      std::vector<Discretisation> estimates = {Discretisation::time_step,
+                                               Discretisation::contact_grid,
+                                               Discretisation::mode_cutoff};
+      /// The Fourier lines the lowest band of a coarser run's window holds.
+      unsigned int window_lines = 4;
+      /// The coarser level's mode cut-off over 'Patch model/Mode cutoff'.
+      double cutoff_ratio = 0.75;
+
+      bool
+      estimates_any(Discretisation d) const;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// "time_step", "contact_grid", "mode_cutoff": a column's name part.
+    std::string
+    label(Discretisation d);
+
+    /// "time step", "contact grid", "mode cutoff": as 'Estimates' names it.
+    std::string
+    describe(Discretisation d);
+  } // namespace analysis
+} // namespace greentread
