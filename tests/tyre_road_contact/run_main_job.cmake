@@ -12,7 +12,9 @@
 # - the synthesis' E of Eq. (50) against the run's own direct lines, every
 #   pair (bound WORST_BOUND, %);
 # - the patch model passive (its smallest eigenvalue of -Im g over its
-#   largest not negative beyond round-off).
+#   largest not negative beyond round-off);
+# - the error bars: the runs at half the step, on half the subdivisions and
+#   with the modes to 6 kHz, and their summary.
 # unit/main_job_path checks the outputs against physics.
 file(REMOVE_RECURSE ${WORKDIR})
 execute_process(
@@ -52,5 +54,16 @@ require("Warning: sinusoid at 90 km/h: the low-rate run \\(76.8 us, 'Spectra/Low
         "the low-rate run's ringing bands were used")
 
 # E over the 14,400 pairs of 120 points, and passivity.
+require("the mode cut-off's error bar: the [0-9]+ modes to 6000 Hz \\('Error bars/Coarser mode cutoff'\\)"
+        "no coarser mode cut-off for the error bars")
+require("run sinusoid_90kmh_finer_time_step: V0 = 90 km/h, dt = 7.68 us"
+        "no run at half the step for the error bars")
+require("run sinusoid_90kmh_coarser_contact_grid: V0 = 90 km/h, dt = 15.36 us"
+        "no run on the coarser grid for the error bars")
+require("run sinusoid_90kmh_coarser_mode_cutoff: V0 = 90 km/h, dt = 15.36 us"
+        "no run with the coarser cut-off for the error bars")
+require("Error bars from 250 Hz .*sinusoid at 90 km/h, stress: largest [0-9.]+ dB"
+        "no summary of the error bars")
+
 include(${CMAKE_CURRENT_LIST_DIR}/synthesis_figures.cmake)
 check_synthesis_figures("${out}" 14400 ${WORST_BOUND})

@@ -1,12 +1,13 @@
 #pragma once
 
 // The data rows of a CSV file the program wrote: after its '#' comment lines
-// and its header, each row's cells as numbers.
+// and its header, each row's cells as numbers (an empty cell as NaN).
 
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,11 +31,19 @@ namespace test
             header = false;
             continue;
           }
+        // Every cell, the empty ones (a value the program did not estimate)
+        // as NaN, a trailing one too.
         std::vector<double> row;
-        std::stringstream   ss(line);
-        std::string         cell;
-        while (std::getline(ss, cell, ','))
-          row.push_back(std::stod(cell));
+        std::size_t         start = 0;
+        while (true)
+          {
+            const std::size_t comma = line.find(',', start);
+            const std::string cell  = line.substr(start, comma - start);
+            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(cell));
+            if (comma == std::string::npos)
+              break;
+            start = comma + 1;
+          }
         rows.push_back(row);
       }
     return rows;
