@@ -108,7 +108,8 @@ namespace greentread
         grid.reporting_weights(spectra.reporting_along, spectra.reporting_across);
 
       RunResult result;
-      // A coarser run of the error bars keeps its histories only.
+      // An error-bar run (the other level of a discretisation) keeps its
+      // histories only.
       std::optional<analysis::RunOutput> output;
       if (write_outputs)
         output.emplace(directory, run, lattice, V, tributary, reporting, n_steps,
