@@ -10,7 +10,8 @@
  * @file
  * One-third-octave band spectra of uniformly sampled time signals (IEC
  * 61260-1 base-10 bands), e.g. of a contact force or a sound pressure, and
- * their CSV output.
+ * their CSV output. Implemented in source/analysis/third_octave.cc and, the
+ * CSV output, source/analysis/band_spectrum_csv.cc.
  */
 
 namespace greentread
