@@ -95,6 +95,7 @@ namespace greentread
         {
           ProjectedCgOptions      options;
           options.operator_norm = end_norm;
+          options.tolerance     = psi.tolerance;
           const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
             y.setZero(x.size());
             psi.add_u(2, x, y);

@@ -4,6 +4,7 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <vector>
 
@@ -26,33 +27,56 @@ namespace greentread
       /// A thread's work arrays: FFTW's new-array execute functions may run
       /// concurrently on arrays of their own (same sizes and alignment as
       /// at planning, which fftw_alloc gives), so that one convolution
-      /// serves several threads (rolling runs side by side).
+      /// serves several threads (rolling runs side by side). The input's
+      /// padding (the columns j >= ny of its rows) and the rows i >= nx of
+      /// the row transforms' output are zeroed once, at allocation: no
+      /// transform writes them (the column transform is out of place and
+      /// keeps its input).
       struct Work
       {
-        std::size_t   n_real = 0, n_complex = 0;
-        double       *field    = nullptr;
-        fftw_complex *spectrum = nullptr;
+        std::array<unsigned int, 4> shape{{0, 0, 0, 0}}; // nx, ny, mx, my
+        double       *input = nullptr, *output = nullptr;
+        fftw_complex *rows = nullptr, *spectrum = nullptr;
 
         void
-        reserve(const std::size_t real, const std::size_t complex)
+        reserve(const unsigned int nx, const unsigned int ny, const unsigned int mx,
+                const unsigned int my)
         {
-          if (real == n_real && complex == n_complex)
+          const std::array<unsigned int, 4> wanted{{nx, ny, mx, my}};
+          if (wanted == shape)
             return;
-          fftw_free(field);
+          release();
+          const std::size_t n_real = std::size_t(nx) * my, n_complex = std::size_t(mx) * (my / 2 + 1);
+          input    = fftw_alloc_real(n_real);
+          output   = fftw_alloc_real(n_real);
+          rows     = fftw_alloc_complex(n_complex);
+          spectrum = fftw_alloc_complex(n_complex);
+          if (!input || !output || !rows || !spectrum)
+            {
+              release();
+              throw NumericalError("lattice convolution: cannot allocate the FFT buffers of " +
+                                   std::to_string(mx) + " x " + std::to_string(my) + " points");
+            }
+          std::fill(input, input + n_real, 0.);
+          std::fill(&rows[0][0], &rows[0][0] + 2 * n_complex, 0.);
+          shape = wanted;
+        }
+
+        void
+        release()
+        {
+          fftw_free(input);
+          fftw_free(output);
+          fftw_free(rows);
           fftw_free(spectrum);
-          field     = fftw_alloc_real(real);
-          spectrum  = fftw_alloc_complex(complex);
-          n_real    = real;
-          n_complex = complex;
-          if (field == nullptr || spectrum == nullptr)
-            throw NumericalError("lattice convolution: cannot allocate the FFT buffers of " +
-                                 std::to_string(real) + " points");
+          input = output = nullptr;
+          rows = spectrum = nullptr;
+          shape = {{0, 0, 0, 0}};
         }
 
         ~Work()
         {
-          fftw_free(field);
-          fftw_free(spectrum);
+          release();
         }
       };
     } // namespace
@@ -62,10 +86,9 @@ namespace greentread
     struct LatticeConvolution::Plans
     {
       unsigned int  nx = 0, mx = 0, my = 0, my_c = 0; // the period, and ny's half spectrum
-      double       *field    = nullptr;
-      fftw_complex *spectrum = nullptr;
-      /// Row r2c on the first nx rows; column DFTs (both ways, in place) on
-      /// all my_c columns; row c2r on the first nx rows.
+      /// Row r2c on the first nx rows (input to rows); column DFTs forward
+      /// out of place (rows to spectrum) and backward in place on all my_c
+      /// columns; row c2r on the first nx rows (spectrum to output).
       fftw_plan rows_forward = nullptr, columns_forward = nullptr, columns_backward = nullptr,
                 rows_backward = nullptr;
       std::vector<double> kernel_spectrum; // real: the kernel is even
@@ -76,23 +99,22 @@ namespace greentread
         , my(2 * ny)
         , my_c(ny + 1)
       {
-        field    = fftw_alloc_real(std::size_t(mx) * my);
-        spectrum = fftw_alloc_complex(std::size_t(mx) * my_c);
-        if (field == nullptr || spectrum == nullptr)
-          throw NumericalError("lattice convolution: cannot allocate the FFT buffers of " +
-                               std::to_string(mx) + " x " + std::to_string(my) + " points");
+        // Planned on a work set of their own (FFTW_MEASURE overwrites the
+        // arrays), executed on each thread's.
+        Work w;
+        w.reserve(nx, ny, mx, my);
         const int      n_row = my, n_column = mx;
         const unsigned flags = FFTW_MEASURE;
-        rows_forward = fftw_plan_many_dft_r2c(1, &n_row, nx, field, nullptr, 1, my, spectrum,
+        rows_forward = fftw_plan_many_dft_r2c(1, &n_row, nx, w.input, nullptr, 1, my, w.rows,
                                               nullptr, 1, my_c, flags);
         columns_forward =
-          fftw_plan_many_dft(1, &n_column, my_c, spectrum, nullptr, my_c, 1, spectrum, nullptr,
+          fftw_plan_many_dft(1, &n_column, my_c, w.rows, nullptr, my_c, 1, w.spectrum, nullptr,
                              my_c, 1, FFTW_FORWARD, flags);
         columns_backward =
-          fftw_plan_many_dft(1, &n_column, my_c, spectrum, nullptr, my_c, 1, spectrum, nullptr,
-                             my_c, 1, FFTW_BACKWARD, flags);
-        rows_backward = fftw_plan_many_dft_c2r(1, &n_row, nx, spectrum, nullptr, 1, my_c, field,
-                                               nullptr, 1, my, flags);
+          fftw_plan_many_dft(1, &n_column, my_c, w.spectrum, nullptr, my_c, 1, w.spectrum,
+                             nullptr, my_c, 1, FFTW_BACKWARD, flags);
+        rows_backward = fftw_plan_many_dft_c2r(1, &n_row, nx, w.spectrum, nullptr, 1, my_c,
+                                               w.output, nullptr, 1, my, flags);
         if (!rows_forward || !columns_forward || !columns_backward || !rows_backward)
           throw NumericalError("lattice convolution: FFTW could not plan the transforms of " +
                                std::to_string(mx) + " x " + std::to_string(my) + " points");
@@ -102,26 +124,6 @@ namespace greentread
       {
         for (fftw_plan p : {rows_forward, columns_forward, columns_backward, rows_backward})
           fftw_destroy_plan(p);
-        fftw_free(field);
-        fftw_free(spectrum);
-      }
-
-      /// The 2D forward transform of @p f's first nx rows (the others are
-      /// zero) into @p c.
-      void
-      forward(double *f, fftw_complex *c) const
-      {
-        fftw_execute_dft_r2c(rows_forward, f, c);
-        std::fill(&c[std::size_t(nx) * my_c][0], &c[std::size_t(mx) * my_c][0], 0.);
-        fftw_execute_dft(columns_forward, c, c);
-      }
-
-      /// The 2D backward transform of @p c, its first nx rows into @p f.
-      void
-      backward(fftw_complex *c, double *f) const
-      {
-        fftw_execute_dft(columns_backward, c, c);
-        fftw_execute_dft_c2r(rows_backward, c, f);
       }
     };
 
@@ -139,21 +141,31 @@ namespace greentread
       // The kernel wrapped onto the period: offset m at m and at 2 nx - m.
       // Whole (its rows i >= nx are not zero): by a plan of its own, once.
       const unsigned int mx = plans->mx, my = plans->my;
-      fftw_plan          whole =
-        fftw_plan_dft_r2c_2d(mx, my, plans->field, plans->spectrum, FFTW_ESTIMATE);
+      const std::size_t  n_c = std::size_t(mx) * plans->my_c;
+      double            *field    = fftw_alloc_real(std::size_t(mx) * my);
+      fftw_complex      *spectrum = fftw_alloc_complex(n_c);
+      if (field == nullptr || spectrum == nullptr)
+        {
+          fftw_free(field);
+          fftw_free(spectrum);
+          throw NumericalError("lattice convolution: cannot allocate the kernel's FFT buffers of " +
+                               std::to_string(mx) + " x " + std::to_string(my) + " points");
+        }
+      fftw_plan whole = fftw_plan_dft_r2c_2d(mx, my, field, spectrum, FFTW_ESTIMATE);
       for (unsigned int i = 0; i < mx; ++i)
         for (unsigned int j = 0; j < my; ++j)
           {
             const unsigned int m = i <= nx ? i : mx - i, n = j <= ny ? j : my - j;
-            plans->field[std::size_t(i) * my + j] = m < nx && n < ny ? T(m, n) : 0.;
+            field[std::size_t(i) * my + j] = m < nx && n < ny ? T(m, n) : 0.;
           }
       fftw_execute(whole);
       fftw_destroy_plan(whole);
-      const std::size_t n_c = std::size_t(mx) * plans->my_c;
       plans->kernel_spectrum.resize(n_c);
       // Normalised once: FFTW's backward transform is not.
       for (std::size_t k = 0; k < n_c; ++k)
-        plans->kernel_spectrum[k] = plans->spectrum[k][0] / (double(mx) * my);
+        plans->kernel_spectrum[k] = spectrum[k][0] / (double(mx) * my);
+      fftw_free(field);
+      fftw_free(spectrum);
     }
 
 
@@ -168,27 +180,26 @@ namespace greentread
       if (x.size() != Eigen::Index(nx) * ny)
         throw InputError("lattice convolution: a field of " + std::to_string(x.size()) +
                          " values on a lattice of " + std::to_string(nx * ny) + " points");
-      const Plans        &p = *plans;
-      thread_local Work   w;
-      const std::size_t   n_c = std::size_t(p.mx) * p.my_c;
-      w.reserve(std::size_t(p.mx) * p.my, n_c);
+      const Plans      &p = *plans;
+      thread_local Work w;
+      w.reserve(nx, ny, p.mx, p.my);
       for (unsigned int i = 0; i < nx; ++i)
-        {
-          double *row = w.field + std::size_t(i) * p.my;
-          std::copy(x.data() + std::size_t(i) * ny, x.data() + std::size_t(i + 1) * ny, row);
-          std::fill(row + ny, row + p.my, 0.);
-        }
-      p.forward(w.field, w.spectrum);
+        std::copy(x.data() + std::size_t(i) * ny, x.data() + std::size_t(i + 1) * ny,
+                  w.input + std::size_t(i) * p.my);
+      fftw_execute_dft_r2c(p.rows_forward, w.input, w.rows);
+      fftw_execute_dft(p.columns_forward, w.rows, w.spectrum);
+      const std::size_t n_c = std::size_t(p.mx) * p.my_c;
       for (std::size_t k = 0; k < n_c; ++k)
         {
           w.spectrum[k][0] *= p.kernel_spectrum[k];
           w.spectrum[k][1] *= p.kernel_spectrum[k];
         }
-      p.backward(w.spectrum, w.field);
+      fftw_execute_dft(p.columns_backward, w.spectrum, w.spectrum);
+      fftw_execute_dft_c2r(p.rows_backward, w.spectrum, w.output);
       y.resize(x.size());
       for (unsigned int i = 0; i < nx; ++i)
-        for (unsigned int j = 0; j < ny; ++j)
-          y[i * ny + j] = w.field[std::size_t(i) * p.my + j];
+        std::copy(w.output + std::size_t(i) * p.my, w.output + std::size_t(i) * p.my + ny,
+                  y.data() + std::size_t(i) * ny);
     }
 
 

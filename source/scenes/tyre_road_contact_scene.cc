@@ -203,7 +203,7 @@ namespace greentread
         {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
         contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                  unsigned(model.points.size())),
-        contact_grid.candidate_set());
+        contact_grid.candidate_set(), contact_grid.tolerance);
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "

@@ -85,6 +85,9 @@ namespace greentread
       /// `Solver`: `auto`, `pivoting`, `projected CG` or `projected CG on
       /// the whole grid` (the file documentation).
       std::string solver = "auto";
+      /// `Tolerance`: the matrix-free solve's projected gradient at its end,
+      /// relative to the road's largest demand.
+      double tolerance = 1e-6;
 
       /// The most contact points `pivoting` takes (its N x N matrices: 0.8 GB
       /// each at 10,000 points).
@@ -134,11 +137,14 @@ namespace greentread
        *            as its FFT product, ContactGrid::local stays empty.
        * @param[in] candidate_set With @p matrix_free: the solve on the
        *            candidate set (ContactGrid::candidate_set).
+       * @param[in] tolerance With @p matrix_free: the solve's tolerance
+       *            (ContactGrid::tolerance).
        * @throws InputError if the points are not a lattice or s is 0.
        */
       ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
                   unsigned int subdivisions, const ElasticLayer &layer,
-                  bool matrix_free = false, bool candidate_set = true);
+                  bool matrix_free = false, bool candidate_set = true,
+                  double tolerance = 1e-6);
 
       unsigned int
       n_points() const
@@ -158,6 +164,10 @@ namespace greentread
       Eigen::VectorXd
       gather(const Eigen::VectorXd &fine) const;
 
+      /// The same into @p coarse (resized), without an allocation once sized.
+      void
+      gather(const Eigen::VectorXd &fine, Eigen::VectorXd &coarse) const;
+
       /// The static compliance between the contact points, \f$A^T G_0 A\f$
       /// plus the local term.
       Eigen::MatrixXd
@@ -170,6 +180,12 @@ namespace greentread
       /// y = \f$A^T M A x\f$ + the local term times x, without the N x N matrix.
       void
       apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x, Eigen::VectorXd &y) const;
+
+      /// y += \f$A^T M A x\f$ (none when @p coarse is null) + the local
+      /// term times x: apply() without clearing y, each cell sum taken once.
+      void
+      add_product(const Eigen::MatrixXd *coarse, const Eigen::VectorXd &x,
+                  Eigen::VectorXd &y) const;
 
       /**
        * @brief A block of apply()'s operator, entry by entry: out(k, l) =
@@ -212,6 +228,8 @@ namespace greentread
       /// (candidate_set.h; `projected CG`) or on the whole grid (`projected
       /// CG on the whole grid`).
       bool candidate_set = true;
+      /// The matrix-free solve's tolerance (`Contact grid/Tolerance`).
+      double tolerance = 1e-6;
       /// \f$L_f\f$ on the lattice, by FFT; empty when s = 1.
       std::shared_ptr<const convolution::LatticeConvolution> layer_product;
 
@@ -220,6 +238,8 @@ namespace greentread
       tabulate_cell_sums();
 
       unsigned int n_coarse = 0, cnx = 0, cny = 0;
+      /// The coarse point of coarse cell (c_x, c_y), at c_x cny + c_y.
+      std::vector<unsigned int> coarse_at;
       /// For block(): the layer's kernel summed over a coarse cell's s x s
       /// offsets, over s^2 (offset (dx, dy) at (dx + nx - 1, dy + ny - 1)),
       /// and over two cells' offsets, over s^4 (cell offset (cx, cy) at

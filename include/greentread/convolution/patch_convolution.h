@@ -62,6 +62,10 @@ namespace greentread
       std::function<void(const std::vector<unsigned int> &rows,
                          const std::vector<unsigned int> &columns, Eigen::MatrixXd &out)>
         block_u;
+      /// With add_u: the matrix-free solve's tolerance, the projected
+      /// gradient it ends at relative to the road's largest demand
+      /// (greentread/contact/projected_cg.h).
+      double tolerance = 1e-10;
     };
 
     /// y += \f$\Psi^u_g\f$ x, from the matrix's columns where x is not zero
