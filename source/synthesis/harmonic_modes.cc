@@ -73,6 +73,50 @@ namespace greentread
         const Eigen::SimplicialLLT<Sparse>  &mass;
       };
 
+      /**
+       * The shift-invert operator with the modes already found projected
+       * out, P A P with P = I - Y Y^T (Y orthonormal, in standard form):
+       * their eigenvalues become 0, so that a search for the largest finds
+       * those left. One Krylov space holds a near-degenerate pair as about
+       * one vector, so a search can miss a pair's other member; searched
+       * again with the first deflated, it is found.
+       */
+      class Deflated
+      {
+      public:
+        using Scalar = double;
+
+        Deflated(const StandardShiftInvert &op_, const Eigen::MatrixXd &Y_)
+          : op(op_)
+          , Y(Y_)
+        {}
+
+        Eigen::Index
+        rows() const
+        {
+          return op.rows();
+        }
+        Eigen::Index
+        cols() const
+        {
+          return op.cols();
+        }
+
+        void
+        perform_op(const double *x_in, double *y_out) const
+        {
+          const Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
+          Eigen::Map<Eigen::VectorXd>             y(y_out, rows());
+          const Eigen::VectorXd                   p = x - Y * (Y.transpose() * x);
+          op.perform_op(p.data(), y_out);
+          y -= Y * (Y.transpose() * y);
+        }
+
+      private:
+        const StandardShiftInvert &op;
+        const Eigen::MatrixXd     &Y;
+      };
+
       /// L D L^T of K_n - s M, nudged off a zero pivot; its negative
       /// pivots count the eigenvalues below s (Sylvester). The pattern is
       /// the same for every n and s: @p ldlt is analysed once.
@@ -177,41 +221,75 @@ namespace greentread
             continue;
           const double low   = j == 0 ? -cut2 : top[j - 1];
           const double shift = j == 0 ? -cut2 / 400. : 0.5 * (low + top[j]);
-          const unsigned int extra = j == 0 ? 0 : std::min<Eigen::Index>(wanted / 4 + 4, size - wanted - 2);
-          const Eigen::Index nev = wanted + extra;
-          const Eigen::Index ncv = std::min<Eigen::Index>(size, std::max<Eigen::Index>(2 * nev + 1, nev + 20));
           factorise_shifted(section, n, shift, ldlt, analysed);
           StandardShiftInvert op(ldlt, mass);
-          Spectra::SymEigsSolver<StandardShiftInvert> solver(op, nev, ncv);
-          solver.init();
-          solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11, Spectra::SortRule::LargestAlge);
-          if (solver.info() != Spectra::CompInfo::Successful)
-            throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                                 ": Spectra's shift-invert Lanczos did not converge on " +
-                                 std::to_string(nev) + " modes near " +
-                                 format_short(std::sqrt(std::max(shift, 0.)) / (2. * M_PI)) + " Hz");
-          modes.n_solves += static_cast<unsigned int>(solver.num_operations());
-          modes.krylov_dimension += static_cast<unsigned int>(ncv);
-          const Eigen::VectorXd nu     = solver.eigenvalues();
-          const Eigen::MatrixXd shapes = op.shapes(solver.eigenvectors());
-          unsigned int          kept   = 0;
-          for (Eigen::Index r = 0; r < nu.size(); ++r)
+          // The slice's modes in standard form (the deflation's Y) and as
+          // shapes. A first search asks for the count (and a few more in a
+          // slice shifted to its middle); a count it misses is searched
+          // again with what it found projected out (Deflated), twice at most.
+          Eigen::MatrixXd     Y(size, 0);
+          std::vector<double> slice_lambda;
+          for (unsigned int pass = 0; pass < 3 && slice_lambda.size() < wanted; ++pass)
             {
-              const double l = shift + 1. / nu(r);
-              if (!(l > low && l <= top[j] * (1. + 1e-12)))
-                continue;
-              if (lambda.size() == m)
-                break;
-              U.col(lambda.size()) = shapes.col(r);
-              lambda.push_back(l);
-              ++kept;
+              const unsigned int missing = wanted - slice_lambda.size();
+              const Eigen::Index extra   = std::min<Eigen::Index>(
+                j == 0 && pass == 0 ? 0 : missing / 4 + 4, size - Y.cols() - missing - 2);
+              const Eigen::Index nev = missing + std::max<Eigen::Index>(extra, 0);
+              const Eigen::Index ncv = std::min<Eigen::Index>(
+                size - Y.cols(), std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+              const auto found = [&](auto &solver) {
+                solver.init();
+                solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11,
+                               Spectra::SortRule::LargestAlge);
+                if (solver.info() != Spectra::CompInfo::Successful)
+                  throw NumericalError("the modes of harmonic " + std::to_string(n) +
+                                       ": Spectra's shift-invert Lanczos did not converge on " +
+                                       std::to_string(nev) + " modes near " +
+                                       format_short(std::sqrt(std::max(shift, 0.)) / (2. * M_PI)) +
+                                       " Hz");
+                modes.n_solves += static_cast<unsigned int>(solver.num_operations());
+                modes.krylov_dimension += static_cast<unsigned int>(ncv);
+                const Eigen::VectorXd nu = solver.eigenvalues();
+                const Eigen::MatrixXd y  = solver.eigenvectors();
+                for (Eigen::Index r = 0; r < nu.size(); ++r)
+                  {
+                    if (nu(r) == 0.)
+                      continue;
+                    const double l = shift + 1. / nu(r);
+                    if (!(l > low && l <= top[j] * (1. + 1e-12)) || slice_lambda.size() == wanted)
+                      continue;
+                    Y.conservativeResize(Eigen::NoChange, Y.cols() + 1);
+                    Y.col(Y.cols() - 1) = y.col(r);
+                    slice_lambda.push_back(l);
+                  }
+              };
+              if (pass == 0)
+                {
+                  Spectra::SymEigsSolver<StandardShiftInvert> solver(op, nev, ncv);
+                  found(solver);
+                }
+              else
+                {
+                  // Y's columns from separate searches: orthonormal again.
+                  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+                  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(size, Y.cols());
+                  Deflated deflated(op, Q);
+                  Spectra::SymEigsSolver<Deflated> solver(deflated, nev, ncv);
+                  found(solver);
+                }
             }
-          if (kept != wanted)
+          if (slice_lambda.size() != wanted)
             throw NumericalError("the modes of harmonic " + std::to_string(n) + ": " +
-                                 std::to_string(kept) + " eigenvalues found in (" +
+                                 std::to_string(slice_lambda.size()) + " eigenvalues found in (" +
                                  format_short(std::max(low, 0.)) + ", " + format_short(top[j]) +
-                                 "] rad^2/s^2, where the inertia counts " +
+                                 "] rad^2/s^2 after three searches, where the inertia counts " +
                                  std::to_string(wanted));
+          const Eigen::MatrixXd slice_u = op.shapes(Y);
+          for (unsigned int r = 0; r < wanted && lambda.size() < m; ++r)
+            {
+              U.col(lambda.size()) = slice_u.col(r);
+              lambda.push_back(slice_lambda[r]);
+            }
         }
 
       // Ascending, each residual checked.
