@@ -22,7 +22,9 @@ check_saved_stages contact_studies.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-run() { run_saved "$@"; }
+# One run at one rate, without the error bars' runs: these studies compare
+# single runs ('Spectra/Low bands up to' = 0, 'Error bars/Estimates' empty).
+run() { run_saved "$@" --set "Spectra/Low bands up to=0" --set "Error bars/Estimates="; }
 
 # The numbers of one run: seconds, points in contact, mean force, steps not
 # converged, largest penetration.

@@ -12,9 +12,9 @@ namespace greentread
     {
       /// The candidate set is solved on while |N|^2 <= dense_limit n: its
       /// products cost |N|^2, the whole grid's FFT products about n log n.
-      /// Measured on the main job's 7680-point grid: 9.0 against 15.1 ms per
-      /// step with |N| of 300 to 450 (road-A), 36 against 17 ms with |N|
-      /// about 820 (road-B), which puts the crossover near |N| = 510.
+      /// Chosen on the main job's 7680-point grid, where the crossover was
+      /// near |N| = 510 (CHANGELOG.md); the runs of
+      /// benchmarks/contact_solvers.sh (doc/benchmarks.md) show both sides.
       constexpr double dense_limit = 34.;
     } // namespace
 
