@@ -46,7 +46,7 @@ namespace greentread
                         "exceeds this fraction of the road's largest demand at the step "
                         "(|u^h - d|_inf), so that a point in contact ends the step inside "
                         "the road by at most that much (the run prints the largest). The "
-                        "default 1e-6 (about 3 nm on the main job's roads) moves the band "
+                        "default 1e-6 (2 to 6 nm on the main job's roads) moves the band "
                         "levels by less than 1e-4 dB from 1e-10 and takes a third fewer "
                         "products (doc/methods/contact.md).");
       prm.leave_subsection();
