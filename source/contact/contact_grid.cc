@@ -461,8 +461,7 @@ namespace greentread
                   }
                 const Eigen::VectorXd xc = grid.gather(x);
                 if (xc.cwiseAbs().maxCoeff() > 0.)
-                  y += grid.expand(Eigen::VectorXd(
-                    (g == 2 ? end_compliance : coarse->influence().u[g]) * xc));
+                  y += grid.expand(Eigen::VectorXd(coarse->influence().u[g] * xc));
               };
               if (grid.candidate_set)
                 psi.block_u = [this](const std::vector<unsigned int> &rows,
