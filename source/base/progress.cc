@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <iostream>
 #include <thread>
 #include <vector>
@@ -85,6 +86,37 @@ namespace greentread
         work();
       for (auto &t : threads)
         t.join();
+    }
+
+
+
+    void
+    for_each_index(const std::size_t                                       count,
+                   const unsigned int                                      n_threads,
+                   const std::function<void(std::size_t, unsigned int)> &item)
+    {
+      std::vector<std::exception_ptr> failure(count);
+      std::atomic<std::size_t>        next{0};
+      const auto                      work = [&](const unsigned int t) {
+        for (std::size_t i = next++; i < count; i = next++)
+          try
+            {
+              item(i, t);
+            }
+          catch (...)
+            {
+              failure[i] = std::current_exception();
+            }
+      };
+      std::vector<std::thread> threads;
+      for (unsigned int t = 1; t < std::min<std::size_t>(std::max(1u, n_threads), count); ++t)
+        threads.emplace_back(work, t);
+      work(0);
+      for (auto &t : threads)
+        t.join();
+      for (const auto &e : failure)
+        if (e)
+          std::rethrow_exception(e);
     }
   } // namespace base
 } // namespace greentread

@@ -1,12 +1,16 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
 #include <greentread/periodic/harmonic_ring.h>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#include <deal.II/base/multithread_info.h>
+
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 namespace greentread
 {
@@ -24,6 +28,33 @@ namespace greentread
       {
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
         return ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0.).all();
+      }
+
+      /**
+       * The static terms (w_i / W_i)^T K_n^{-1} (w_j / W_j) of the harmonics
+       * @p first to @p first + @p count - 1, spread over the threads, each
+       * thread with its own factorisation: the same figures as one after the
+       * other, in a fraction of the time. A harmonic whose static stiffness
+       * is not positive definite gets an empty matrix.
+       */
+      std::vector<Eigen::MatrixXd>
+      static_terms_of(const fe::HarmonicSection &section, const Eigen::MatrixXd &loads,
+                      const unsigned int first, const unsigned int count)
+      {
+        const unsigned int n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
+        std::vector<Eigen::MatrixXd>                                    terms(count);
+        std::vector<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> ldlt(n_threads);
+        std::vector<char>                                               analysed(n_threads, 0);
+        base::for_each_index(count, n_threads, [&](const std::size_t i, const unsigned int t) {
+          const Eigen::SparseMatrix<double> K = section.stiffness(first + i);
+          if (!analysed[t])
+            ldlt[t].analyzePattern(K);
+          analysed[t] = 1;
+          ldlt[t].factorize(K);
+          if (ldlt[t].info() == Eigen::Success && (ldlt[t].vectorD().array() > 0.).all())
+            terms[i] = loads.transpose() * ldlt[t].solve(loads);
+        });
+        return terms;
       }
     } // namespace
 
@@ -56,20 +87,24 @@ namespace greentread
 
       // Static sums until the tail's bound meets the tolerance, then more
       // harmonics until the highest line is well below the next ones.
-      Eigen::VectorXd                                     driving = Eigen::VectorXd::Zero(ny);
-      std::vector<double>                                 h;
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-      unsigned int                                        n = 0;
+      // The terms are computed ahead in batches over the threads and taken
+      // one at a time, so that the choice of N is the sequential one; a
+      // batch's terms past N are dropped.
+      Eigen::VectorXd             driving = Eigen::VectorXd::Zero(ny);
+      std::vector<double>         h;
+      std::deque<Eigen::MatrixXd> ahead; // harmonics n, n + 1, ...
+      unsigned int                n     = 0;
+      const unsigned int          batch = 8 * std::max(1u, dealii::MultithreadInfo::n_threads());
       const auto add_harmonic = [&]() {
-        const Eigen::SparseMatrix<double> K = section.stiffness(n);
-        if (n == 0)
-          ldlt.analyzePattern(K);
-        ldlt.factorize(K);
-        if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.).all())
+        if (ahead.empty())
+          for (auto &H : static_terms_of(section, loads, n, std::min(batch, max_harmonics - n)))
+            ahead.push_back(std::move(H));
+        const Eigen::MatrixXd H = std::move(ahead.front());
+        ahead.pop_front();
+        if (H.size() == 0)
           throw NumericalError("the harmonic ring: the static stiffness of harmonic " +
                                std::to_string(n) + " is not positive definite (an unheld "
                                "section, or a prestress that buckles it)");
-        const Eigen::MatrixXd H = loads.transpose() * ldlt.solve(loads);
         driving += weight(n) * H.diagonal();
         h.push_back(H.diagonal().maxCoeff());
         static_terms.push_back(H);

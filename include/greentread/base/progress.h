@@ -72,5 +72,17 @@ namespace greentread
                    std::size_t                      total,
                    Progress                        *progress,
                    const std::function<bool()>     &failed);
+
+    /**
+     * @brief Calls @p item(i, t) for i = 0 .. @p count - 1 on up to
+     * @p n_threads threads (the calling one among them, t = 0), the items
+     * taken in order; t < @p n_threads numbers the thread, for state a
+     * thread keeps between its items. If any item throws, the others still
+     * finish, and the exception of the lowest i is rethrown here.
+     */
+    void
+    for_each_index(std::size_t                                             count,
+                   unsigned int                                            n_threads,
+                   const std::function<void(std::size_t, unsigned int)> &item);
   } // namespace base
 } // namespace greentread
