@@ -1,10 +1,13 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
 #include <greentread/synthesis/harmonic_modes.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <Spectra/SymEigsSolver.h>
+
+#include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
 #include <cmath>
@@ -298,10 +301,14 @@ namespace greentread
         order[r] = r;
       std::sort(order.begin(), order.end(),
                 [&](const unsigned int a, const unsigned int b) { return lambda[a] < lambda[b]; });
-      Eigen::MatrixXd V(size, m);
+      // Row-major: Eigen's product of a column-major sparse matrix with a
+      // dense one adds rows of the dense one, which are then contiguous
+      // (three times faster than with columns).
+      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      RowMajor V(size, m);
       for (unsigned int r = 0; r < m; ++r)
         V.col(r) = U.col(order[r]);
-      const Eigen::MatrixXd MV = M * V, KV = K * V;
+      const RowMajor MV = M * V, KV = K * V;
       modes.omega.resize(m);
       for (unsigned int r = 0; r < m; ++r)
         {
@@ -321,7 +328,8 @@ namespace greentread
           modes.max_residual = std::max(modes.max_residual, residual);
           modes.omega(r)     = std::sqrt(l);
         }
-      const Eigen::MatrixXd B = V.transpose() * (section.damping(n) * V);
+      const RowMajor        CV = section.damping(n) * V;
+      const Eigen::MatrixXd B  = V.transpose() * CV;
       modes.modal_damping     = B.cast<std::complex<double>>();
       modes.damping_ratio     = B.diagonal().cwiseQuotient(2. * modes.omega);
       modes.shapes            = V.cast<std::complex<double>>();
@@ -341,11 +349,24 @@ namespace greentread
       // (one factorisation each, cheap beside the search). Harmonics N to
       // N + 7 have none (checked first), so the count ends by N + 7 and every
       // harmonic it keeps is one the Green's functions sum (n_k <= N).
+      // The counts are taken in batches over the threads (one factorisation
+      // each), then read in order.
       periodic::check_mode_cutoff(ring, cutoff);
-      unsigned int n_k = 0;
+      const unsigned int n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
+      std::vector<unsigned int> counts;
+      unsigned int              n_k = 0;
       for (unsigned int n = 0, empty = 0; empty < 8; ++n)
         {
-          if (count_harmonic_modes(ring.section, n, cutoff) == 0)
+          if (n == counts.size())
+            {
+              counts.resize(n + 8 * n_threads);
+              base::for_each_index(8 * n_threads, n_threads,
+                                   [&](const std::size_t i, unsigned int) {
+                                     counts[n + i] =
+                                       count_harmonic_modes(ring.section, n + i, cutoff);
+                                   });
+            }
+          if (counts[n] == 0)
             {
               ++empty;
               continue;

@@ -16,6 +16,7 @@
 #include <mutex>
 #include <numeric>
 #include <thread>
+#include <type_traits>
 
 namespace greentread
 {
@@ -45,6 +46,48 @@ namespace greentread
         dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(),
                      &n, work.data(), &lwork, rwork.data(), &info);
         return info == 0 && lambda.allFinite() && vectors.allFinite();
+      }
+
+      /// The same for a real @p L by dgeev: a quarter of zgeev's arithmetic.
+      /// Its complex eigenvalues come in conjugate pairs, with the real and
+      /// imaginary parts of the first one's vector in two columns; both are
+      /// returned as complex columns, as zgeev gives them.
+      bool
+      eigen_decomposition(Eigen::MatrixXd L, Eigen::VectorXcd &lambda, Eigen::MatrixXcd &vectors)
+      {
+        const auto lock = base::lock_serial_blas();
+        const dealii::types::blas_int n = L.rows();
+        dealii::types::blas_int       lwork = -1, info = 0, one = 1;
+        Eigen::VectorXd               wr(n), wi(n);
+        Eigen::MatrixXd               vr(n, n);
+        double                        query = 0., unused = 0.;
+        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(),
+                     &n, &query, &lwork, &info);
+        lwork = static_cast<dealii::types::blas_int>(query);
+        std::vector<double> work(std::max<dealii::types::blas_int>(lwork, 1));
+        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(),
+                     &n, work.data(), &lwork, &info);
+        if (info != 0)
+          return false;
+        lambda.resize(n);
+        vectors.resize(n, n);
+        for (Eigen::Index j = 0; j < n; ++j)
+          {
+            lambda(j) = {wr(j), wi(j)};
+            if (wi(j) == 0.)
+              vectors.col(j) = vr.col(j).cast<std::complex<double>>();
+            else if (wi(j) > 0. && j + 1 < n)
+              {
+                vectors.col(j).real() = vr.col(j);
+                vectors.col(j).imag() = vr.col(j + 1);
+                vectors.col(j + 1)    = vectors.col(j).conjugate();
+                lambda(j + 1)         = std::conj(lambda(j));
+                ++j;
+              }
+            else
+              return false;
+          }
+        return lambda.allFinite() && vectors.allFinite();
       }
 
       /// a(r, q): Bloch mode r seen by the unit load of point q,
@@ -136,13 +179,22 @@ namespace greentread
 
       // (s^2 I + s B + W^2) x = 0 in the modal coordinates, B = Psi^H C Psi,
       // linearised with z = [W x; s x]: s z = [[0, W], [-W, -B]] z.
-      Eigen::MatrixXcd L = Eigen::MatrixXcd::Zero(2 * m, 2 * m);
-      L.topRightCorner(m, m).diagonal()   = modes.omega.cast<periodic::Complex>();
-      L.bottomLeftCorner(m, m).diagonal() = -modes.omega.cast<periodic::Complex>();
-      L.bottomRightCorner(m, m)           = -B;
+      // A real B (the harmonic route's) takes the real solver.
+      const auto linearised = [&](const auto &damping) {
+        using Matrix = std::decay_t<decltype(damping)>;
+        Matrix L = Matrix::Zero(2 * m, 2 * m);
+        const auto omega = modes.omega.template cast<typename Matrix::Scalar>();
+        L.topRightCorner(m, m).diagonal()   = omega;
+        L.bottomLeftCorner(m, m).diagonal() = -omega;
+        L.bottomRightCorner(m, m)           = -damping;
+        return L;
+      };
       Eigen::VectorXcd lambda;
       Eigen::MatrixXcd z;
-      if (!eigen_decomposition(L, lambda, z))
+      const bool       decomposed = B.imag().isZero(0.) ?
+                                      eigen_decomposition(linearised(Eigen::MatrixXd(B.real())), lambda, z) :
+                                      eigen_decomposition(linearised(B), lambda, z);
+      if (!decomposed)
         return diagonal();
       const Eigen::MatrixXcd x = modes.omega.cwiseInverse().asDiagonal() * z.topRows(m);
 
