@@ -188,11 +188,14 @@ namespace greentread
       // Stages 1-3: geometry, fe, periodic: the Green's functions (saved).
       const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
       const fs::path                       h5        = directory / "green_functions.h5";
-      const base::FrequencyResponseMatrix G         = green_stage(h5, green_key, record);
+      std::unique_ptr<periodic::InflatedTyre> tyre;
+      const base::FrequencyResponseMatrix     G = green_stage(h5, green_key, record, tyre);
 
       // Stage 4: modal, the patch model (saved too).
       std::optional<CoarserModel> coarser_model;
-      const modal::PatchModel     model = modal_stage(G, green_key, directory, record, &coarser_model);
+      const modal::PatchModel     model =
+        modal_stage(G, green_key, directory, record, tyre.get(), &coarser_model);
+      tyre.reset();
 
       // The contact grid (the Green's functions' points, or finer with the
       // tread's layer below them), its lattice, the tread's own height (its
@@ -450,7 +453,8 @@ namespace greentread
     base::FrequencyResponseMatrix
     TyreRoadContactScene::green_stage(const std::filesystem::path &h5,
                                   const std::string           &key,
-                                  const base::ParameterRecord &record) const
+                                  const base::ParameterRecord &record,
+                                  std::unique_ptr<periodic::InflatedTyre> &tyre) const
     {
       base::FrequencyResponseMatrix G;
       const bool green_cached =
@@ -470,11 +474,11 @@ namespace greentread
           auto harmonic = green.harmonic();
           if (harmonic && patch_model.source == modal::PatchModelSource::fe_modes)
             harmonic->mode_cutoff = 2. * M_PI * patch_model.mode_cutoff;
-          const periodic::InflatedTyre tyre(geometry, materials, inflation, green.patch,
-                                            harmonic);
-          std::cout << "  " << tyre.patch.describe() << '\n'
-                    << (tyre.harmonic ? tyre.harmonic->describe() : std::string());
-          const auto result = periodic::run_green_stage(tyre, green, key, h5, record, false,
+          tyre = std::make_unique<periodic::InflatedTyre>(geometry, materials, inflation,
+                                                          green.patch, harmonic);
+          std::cout << "  " << tyre->patch.describe() << '\n'
+                    << (tyre->harmonic ? tyre->harmonic->describe() : std::string());
+          const auto result = periodic::run_green_stage(*tyre, green, key, h5, record, false,
                                               global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;
           std::cout << "  every solve checked: largest backward error "
@@ -490,6 +494,7 @@ namespace greentread
                                   const std::string                    &green_key,
                                   const std::filesystem::path          &directory,
                                   const base::ParameterRecord          &record,
+                                  const periodic::InflatedTyre         *tyre,
                                   std::optional<CoarserModel>          *coarser) const
     {
       if (patch_model.source == modal::PatchModelSource::identified)
@@ -508,7 +513,7 @@ namespace greentread
           return model;
         }
       const synthesis::ModeStageInputs inputs{geometry, materials, inflation, green.patch,
-                                             patch_model.mode_cutoff, green.harmonic()};
+                                             patch_model.mode_cutoff, green.harmonic(), tyre};
       // The modes' part at every line, when the stage computes it (not
       // when it is reused): compare() then only adds the residual.
       synthesis::ModalLines          lines;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace greentread
@@ -52,8 +53,12 @@ namespace greentread
       std::cout << "Stage modal: the ring's own modes up to "
                 << format_number(inputs.cutoff_hz) << " Hz, per circumferential "
                 << (inputs.harmonic ? "harmonic of the section\n" : "wavenumber\n");
-      const periodic::InflatedTyre tyre(inputs.geometry, inputs.materials, inputs.inflation,
-                                        inputs.patch, inputs.harmonic);
+      std::unique_ptr<periodic::InflatedTyre> built;
+      if (inputs.tyre == nullptr)
+        built = std::make_unique<periodic::InflatedTyre>(inputs.geometry, inputs.materials,
+                                                         inputs.inflation, inputs.patch,
+                                                         inputs.harmonic);
+      const periodic::InflatedTyre &tyre = inputs.tyre ? *inputs.tyre : *built;
       const unsigned int P = green.n_points();
       if (tyre.patch.points.size() != P)
         throw NumericalError("modal stage: the tyre has " +

@@ -26,8 +26,14 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace greentread::periodic
+{
+  struct InflatedTyre;
+}
 
 namespace greentread
 {
@@ -49,8 +55,11 @@ namespace greentread
       /// Stages geometry, fe, periodic: the Green's functions, read from
       /// @p h5 when its key is @p key, computed and saved otherwise.
       base::FrequencyResponseMatrix
+      /// When it computes them, the inflated tyre it built is left in
+      /// @p tyre, for the modal stage.
       green_stage(const std::filesystem::path &h5, const std::string &key,
-                  const base::ParameterRecord &record) const;
+                  const base::ParameterRecord               &record,
+                  std::unique_ptr<periodic::InflatedTyre> &tyre) const;
 
       /// A coarser level of the patch model, for the mode cut-off's error
       /// bar, and the factor that scales its difference into an estimate.
@@ -64,10 +73,13 @@ namespace greentread
       /// or the ring's own modes, each saved beside @p h5 and reused when its
       /// key matches. With @p coarser (the ring's modes only), also the model
       /// of the modes up to 'Error bars/Coarser mode cutoff' times the cut-off.
+      /// @p tyre: the Green's stage's inflated tyre, if it built one (else
+      /// the modes build their own).
       modal::PatchModel
       modal_stage(const base::FrequencyResponseMatrix &G, const std::string &green_key,
                   const std::filesystem::path &directory,
                   const base::ParameterRecord &record,
+                  const periodic::InflatedTyre *tyre,
                   std::optional<CoarserModel> *coarser = nullptr) const;
 
       /// One run: road @p road_name at @p speed_kmh, at the time step and over

@@ -47,6 +47,9 @@ namespace greentread
       /// With the `harmonic` method: the modes come from the section's
       /// harmonics (synthesis/harmonic_modes.h), not from Bloch cells.
       std::optional<periodic::HarmonicOptions> harmonic = std::nullopt;
+      /// The tyre built with these inputs, if one is at hand (the Green's
+      /// stage's, in the same run); built here otherwise.
+      const periodic::InflatedTyre *tyre = nullptr;
     };
 
     /**
