@@ -5,7 +5,8 @@
 # step halved and the subdivisions halved, the difference scaled by the
 # order) against runs refined further in each discretisation on the same
 # road from the same start: the time step a quarter, 'Contact
-# grid/Subdivisions' doubled. The runs are single-rate ('Spectra/Low
+# grid/Subdivisions' doubled, 'Geometry/Mesh size' halved (the 4 mm
+# section, whose stages FINER_SECTION holds). The runs are single-rate ('Spectra/Low
 # bands up to' = 0) and as long as the estimates' window (4 Fourier lines in
 # the 250 Hz band, 69 ms, or the texture file's length), so that each level
 # and its estimate cover the same record. Prints per band the estimate and
@@ -13,14 +14,19 @@
 # bands the estimates cover), the bands within a factor 2, and the ratio of
 # the rms over the bands (a single band's difference can pass through zero).
 #
-#   bash benchmarks/error_bars.sh [output directory of the main job] [program] [cases] [discretisations]
+#   bash benchmarks/error_bars.sh [output directory of the main job] [program] [cases] [discretisations] [FINER_SECTION]
 #
 # cases: any of "default texture-file load" (default: all three):
 #   default       road-A at 90 km/h, 600 N (the main job's first road)
 #   texture-file  the worked example's texture file (make_example_road, 1 mm
 #                 grid, 0.8 m) at 50 km/h
 #   load          road-B at 50 km/h under 900 N
-# discretisations: any of "time_step contact_grid" (default: both).
+# discretisations: any of "time_step contact_grid ring_section" (default:
+#   the first two). ring_section needs FINER_SECTION: the output directory
+#   of a run of the program with 'Geometry/Mesh size' = 0.004 (every other
+#   default, 'Error bars/Estimates' empty: about 30 minutes), whose stages
+#   the refined runs reuse; the main job's output must hold its
+#   coarser_section/ (the default 'Error bars/Estimates' saves it).
 # About 30 minutes on this 2-core machine (the refined grid, 16 subdivisions
 # on 30,720 points, is most of it).
 set -euo pipefail
@@ -29,8 +35,21 @@ saved=${1:-output}
 program=${2:-build/greentread}
 cases=${3:-default texture-file load}
 discretisations=${4:-time_step contact_grid}
+finer_section=${5:-}
 source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
 check_saved_stages error_bars.sh
+if [[ " $discretisations " == *" ring_section "* ]]; then
+  if [[ -z "$finer_section" || ! -f "$finer_section/green_functions.h5" ]]; then
+    echo "error_bars.sh: ring_section needs FINER_SECTION (argument 5), the output of a run" \
+         "with 'Geometry/Mesh size' = 0.004; '$finer_section' holds no green_functions.h5" >&2
+    exit 1
+  fi
+  if [[ ! -f "$saved/coarser_section/green_functions.h5" ]]; then
+    echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
+         "default 'Error bars/Estimates' first" >&2
+    exit 1
+  fi
+fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -56,6 +75,9 @@ run_case() {
   [[ " $discretisations " == *" contact_grid "* ]] &&
     run_saved "${name}_contact_grid" "${common[@]}" --set "Error bars/Estimates=" \
       --set "Contact grid/Subdivisions=16"
+  [[ " $discretisations " == *" ring_section "* ]] &&
+    saved=$finer_section run_saved "${name}_ring_section" "${common[@]}" \
+      --set "Error bars/Estimates=" --set "Geometry/Mesh size=0.004"
   return 0
 }
 

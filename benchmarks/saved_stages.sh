@@ -17,15 +17,18 @@ check_saved_stages() {
 }
 
 # run_saved NAME ARGS...: one run of the program with ARGS on a fresh copy of
-# the saved stages; its screen output goes to $work/NAME.log and its outputs
-# to $work/NAME/. Fails unless both stages (the Green's functions and the
-# patch model) were reused.
+# the saved stages (those of $saved, and of its coarser_section/ if there);
+# its screen output goes to $work/NAME.log and its outputs to $work/NAME/.
+# Fails unless both stages (the Green's functions and the patch model) were
+# reused. `saved=DIR run_saved ...` takes another directory's stages.
 run_saved() {
   local name=$1
   shift
   mkdir -p "$work/$name"
   cp "$saved"/green_functions.h5 "$work/$name"/
   cp "$saved"/*_model.h5 "$work/$name"/ 2>/dev/null || true
+  # The error bars' coarser section, if the main job saved its stages.
+  [[ -d "$saved/coarser_section" ]] && cp -r "$saved/coarser_section" "$work/$name"/
   "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" "$@" \
     > "$work/$name.log" 2>&1 || { echo "run $name failed:"; tail -5 "$work/$name.log"; exit 1; }
   if (( $(grep -c "Reusing" "$work/$name.log") < 2 )); then

@@ -11,7 +11,8 @@ namespace greentread
     namespace
     {
       constexpr Discretisation all[] = {Discretisation::time_step, Discretisation::contact_grid,
-                                        Discretisation::mode_cutoff};
+                                        Discretisation::mode_cutoff,
+                                        Discretisation::ring_section};
     } // namespace
 
 
@@ -27,6 +28,8 @@ namespace greentread
             return "contact_grid";
           case Discretisation::mode_cutoff:
             return "mode_cutoff";
+          case Discretisation::ring_section:
+            return "ring_section";
         }
       return "";
     }
@@ -57,15 +60,17 @@ namespace greentread
       prm.enter_subsection("Error bars");
       {
         prm.declare_entry(
-          "Estimates", "time step, contact grid, mode cutoff",
-          dealii::Patterns::MultipleSelection("time step|contact grid|mode cutoff"),
+          "Estimates", "time step, contact grid, mode cutoff, ring section",
+          dealii::Patterns::MultipleSelection("time step|contact grid|mode cutoff|ring section"),
           "The discretisations whose error each band level gets an estimate of, each from one "
           "other level on the saved stages: 'time step' (the scene's step halved; the "
           "low-rate run's bands against the run at the scene's step, no extra run), 'contact "
           "grid' ('Contact grid/Subdivisions' halved), 'mode cutoff' (the modes up to 'Coarser "
-          "mode cutoff' times 'Patch model/Mode cutoff'). The estimate is the level difference "
-          "scaled by the order (doc/methods/analysis.md); spectra.csv gives each, and their "
-          "combination with the standard error. Empty: no estimate, no extra run.");
+          "mode cutoff' times 'Patch model/Mode cutoff'), 'ring section' ('Geometry/Mesh size' "
+          "doubled: its own Green's functions and modes, saved in coarser_section/). The "
+          "estimate is the level difference scaled by the order (doc/methods/analysis.md); "
+          "spectra.csv gives each, and their combination with the standard error. Empty: no "
+          "estimate, no extra run.");
         prm.declare_entry(
           "Lines in the lowest band", "4", dealii::Patterns::Integer(1, 1000),
           "The error bars' runs roll only as long as gives the lowest band they estimate this many "

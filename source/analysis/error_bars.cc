@@ -102,6 +102,8 @@ namespace greentread
                   e.factor = richardson_factor(double(subdivisions) / (subdivisions / 2),
                                                contact_grid_order);
                 }
+              else if (d == Discretisation::ring_section)
+                e.factor = richardson_factor(2., ring_section_order);
               // Whole steps of the other level, both levels over the same
               // record (the window: the other run's duration, whole steps
               // of the run's own step too).
@@ -247,6 +249,8 @@ namespace greentread
                               "'Time stepping/Time step'";
               else if (name == label(Discretisation::contact_grid))
                 parameter = "'Contact grid/Subdivisions'";
+              else if (name == label(Discretisation::ring_section))
+                parameter = "'Geometry/Mesh size'";
               std::string what = name;
               std::replace(what.begin(), what.end(), '_', ' ');
               consider(what, parameter, error[b], f);

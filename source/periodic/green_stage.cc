@@ -120,7 +120,9 @@ namespace greentread
 
 
     std::string
-    green_stage_key(const dealii::ParameterHandler &prm, const std::string &geo_file)
+    green_stage_key(const dealii::ParameterHandler           &prm,
+                    const std::string                        &geo_file,
+                    const std::map<std::string, std::string> &replaced)
     {
       std::ostringstream key;
       // What the Green's functions depend on, and nothing else: the digest
@@ -142,7 +144,10 @@ namespace greentread
         if (path != "Green's functions/Pairs" &&
             path != "Green's functions/Deflection shape frequency" &&
             path != "Geometry/Geometry file")
-          key << path << " = " << value << '\n';
+          {
+            const auto other = replaced.find(path);
+            key << path << " = " << (other != replaced.end() ? other->second : value) << '\n';
+          }
       return key.str();
     }
 

@@ -13,8 +13,9 @@
 #   pair (bound WORST_BOUND, %);
 # - the patch model passive (its smallest eigenvalue of -Im g over its
 #   largest not negative beyond round-off);
-# - the error bars: the runs at half the step, on half the subdivisions and
-#   with the modes to 6 kHz, and their summary.
+# - the error bars: the runs at half the step, on half the subdivisions,
+#   with the modes to 6 kHz and on the section twice as coarse (its own
+#   Green's functions and modes), and their summary.
 # unit/main_job_path checks the outputs against physics.
 file(REMOVE_RECURSE ${WORKDIR})
 execute_process(
@@ -62,6 +63,10 @@ require("run sinusoid_90kmh_coarser_contact_grid: V0 = 90 km/h, dt = 15.36 us"
         "no run on the coarser grid for the error bars")
 require("run sinusoid_90kmh_coarser_mode_cutoff: V0 = 90 km/h, dt = 15.36 us"
         "no run with the coarser cut-off for the error bars")
+require("The ring section's error bar: the section at 16 mm \\('Geometry/Mesh size' doubled\\)"
+        "no coarser section for the error bars")
+require("run sinusoid_90kmh_coarser_ring_section: V0 = 90 km/h, dt = 15.36 us"
+        "no run on the coarser section for the error bars")
 require("Error bars from 250 Hz .*sinusoid at 90 km/h, stress: largest [0-9.]+ dB"
         "no summary of the error bars")
 

@@ -9,7 +9,8 @@
  * @file
  * The parameters of the discretisation error bars (subsection "Error bars"):
  * which discretisations get an estimate, how long the coarser runs roll and
- * how coarse the modes' level is. The method is in analysis/error_bars.h.
+ * how coarse the modes' level is (the ring section's coarser level is
+ * 'Geometry/Mesh size' doubled). The method is in analysis/error_bars.h.
  */
 
 namespace greentread
@@ -21,7 +22,8 @@ namespace greentread
     {
       time_step,
       contact_grid,
-      mode_cutoff
+      mode_cutoff,
+      ring_section
     };
 
     /// Subsection "Error bars".
@@ -30,7 +32,8 @@ namespace greentread
       /// The discretisations estimated, in the order of 'Estimates'.
       std::vector<Discretisation> estimates = {Discretisation::time_step,
                                                Discretisation::contact_grid,
-                                               Discretisation::mode_cutoff};
+                                               Discretisation::mode_cutoff,
+                                               Discretisation::ring_section};
       /// The Fourier lines the lowest band of a coarser run's window holds.
       unsigned int window_lines = 4;
       /// The coarser level's mode cut-off over 'Patch model/Mode cutoff'.
@@ -45,11 +48,13 @@ namespace greentread
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// "time_step", "contact_grid", "mode_cutoff": a column's name part.
+    /// "time_step", "contact_grid", "mode_cutoff", "ring_section": a
+    /// column's name part.
     std::string
     label(Discretisation d);
 
-    /// "time step", "contact grid", "mode cutoff": as 'Estimates' names it.
+    /// "time step", "contact grid", "mode cutoff", "ring section": as
+    /// 'Estimates' names it.
     std::string
     describe(Discretisation d);
   } // namespace analysis

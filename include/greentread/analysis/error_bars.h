@@ -36,6 +36,10 @@ namespace greentread
     /// 1.58 for the force, rms over the bands), below the midpoint rule's 2.
     constexpr double time_step_order    = 2.;
     constexpr double contact_grid_order = 1.5;
+    /// The order in the section's mesh size at its element degree, observed
+    /// on the main job over the 16, 8 and 4 mm quartic sections
+    /// (error_bars.sh; doc/methods/analysis.md).
+    constexpr double ring_section_order = 2.; // provisional, until error_bars.sh measures it
 
     /// Richardson's factor: the finer level's error is
     /// |L_coarse - L_fine| / (ratio^order - 1) for a coarsening by @p ratio.
@@ -61,10 +65,10 @@ namespace greentread
       /// The bands estimated (nominal centres) [Hz].
       double f_low = 0., f_high = 0.;
       /// The run's error over |L_other - L_run|: richardson_factor() for the
-      /// grid, 1 + richardson_factor() for the time step (the other level is
-      /// finer, or for the low-rate run the run at the scene's step); for the
-      /// mode cutoff set by the scene, from the two levels' errors against
-      /// the direct lines.
+      /// grid and the ring section, 1 + richardson_factor() for the time step
+      /// (the other level is finer, or for the low-rate run the run at the
+      /// scene's step); for the mode cutoff set by the scene, from the two
+      /// levels' errors against the direct lines.
       double factor = 0.;
     };
 
@@ -77,7 +81,8 @@ namespace greentread
      * halved (a doubled step would skip road samples at one sample per
      * step), the low-rate run against the run at the scene's step (no run).
      * The contact grid: @p subdivisions halved (none at 1). The mode cut-off:
-     * the same step and grid (factor left 0 for the scene).
+     * the same step and grid (factor left 0 for the scene). The ring
+     * section: the same step and grid, on the section twice as coarse.
      */
     std::vector<EstimateRun>
     plan_estimate_runs(const std::vector<BandRun> &plan, const ErrorBarParameters &parameters,
@@ -145,7 +150,7 @@ namespace greentread
      * discretisation estimates, with the parameter that lowers it
      * ('Spectra/Standard error target', 'Time stepping/Time step' or, in a
      * band of a coarser step, 'Spectra/Low-band time step', 'Contact
-     * grid/Subdivisions', 'Patch model/Mode cutoff').
+     * grid/Subdivisions', 'Patch model/Mode cutoff', 'Geometry/Mesh size').
      */
     Contributor
     largest_contributor(const BandSpectrum &s, double target_from, double within_db);

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <string>
 
 /**
@@ -69,9 +70,14 @@ namespace greentread
      * functions except those that only choose outputs ('Pairs', 'Deflection
      * shape frequency') or name the .geo file. Not the git revision, not the
      * file's path. Stored in green_functions.h5 as the attribute `stage_key`.
+     * An entry of @p replaced ("Geometry/Mesh size" to its value, say) is
+     * keyed with its value there instead of the parameter's: the key of
+     * another level of a discretisation.
      */
     std::string
-    green_stage_key(const dealii::ParameterHandler &prm, const std::string &geo_file);
+    green_stage_key(const dealii::ParameterHandler           &prm,
+                    const std::string                        &geo_file,
+                    const std::map<std::string, std::string> &replaced = {});
 
     /// The Green's functions of a stage run, and how they were obtained.
     struct GreenStageResult

@@ -52,13 +52,15 @@ namespace greentread
       run() override;
 
     private:
-      /// Stages geometry, fe, periodic: the Green's functions, read from
-      /// @p h5 when its key is @p key, computed and saved otherwise.
+      /// Stages geometry, fe, periodic: the Green's functions of the tyre of
+      /// @p tyre_geometry, read from @p h5 when its key is @p key, computed
+      /// and saved otherwise. When it computes them, the inflated tyre it
+      /// built is left in @p tyre, for the modal stage.
+      /// Implemented, with the modal stage, in tyre_road_contact_stages.cc.
       base::FrequencyResponseMatrix
-      /// When it computes them, the inflated tyre it built is left in
-      /// @p tyre, for the modal stage.
-      green_stage(const std::filesystem::path &h5, const std::string &key,
-                  const base::ParameterRecord               &record,
+      green_stage(const geometry::GeometryParameters &tyre_geometry,
+                  const std::filesystem::path &h5, const std::string &key,
+                  const base::ParameterRecord             &record,
                   std::unique_ptr<periodic::InflatedTyre> &tyre) const;
 
       /// A coarser level of the patch model, for the mode cut-off's error
@@ -70,17 +72,36 @@ namespace greentread
         double            factor = 0.;
       };
       /// Stage modal: the patch model from 'Patch model/Source', the LSCE fit
-      /// or the ring's own modes, each saved beside @p h5 and reused when its
-      /// key matches. With @p coarser (the ring's modes only), also the model
-      /// of the modes up to 'Error bars/Coarser mode cutoff' times the cut-off.
-      /// @p tyre: the Green's stage's inflated tyre, if it built one (else
-      /// the modes build their own).
+      /// or the ring's own modes, each saved in @p directory and reused when
+      /// its key matches. With @p coarser (the ring's modes only), also the
+      /// model of the modes up to 'Error bars/Coarser mode cutoff' times the
+      /// cut-off. @p tyre: the Green's stage's inflated tyre, if it built
+      /// one (else the modes build their own).
       modal::PatchModel
-      modal_stage(const base::FrequencyResponseMatrix &G, const std::string &green_key,
+      modal_stage(const geometry::GeometryParameters &tyre_geometry,
+                  const base::FrequencyResponseMatrix &G, const std::string &green_key,
                   const std::filesystem::path &directory,
                   const base::ParameterRecord &record,
                   const periodic::InflatedTyre *tyre,
                   std::optional<CoarserModel> *coarser = nullptr) const;
+
+      /// The ring section's coarser level, for its error bar: the patch
+      /// model and static compliance of the section with 'Geometry/Mesh
+      /// size' doubled, and the factor that scales the level difference.
+      struct CoarserSection
+      {
+        modal::PatchModel model;
+        Eigen::MatrixXd   G0;
+        double            mesh_size = 0.; ///< [m]
+        double            factor    = 0.;
+      };
+      /// When 'Error bars/Estimates' holds 'ring section' (and the patch
+      /// model is the ring's own modes on the section's harmonics): the
+      /// coarser section's Green's functions and modes, stages of their own
+      /// under @p directory/coarser_section, saved and reused as the run's.
+      std::optional<CoarserSection>
+      coarser_section(const std::filesystem::path &directory,
+                      const base::ParameterRecord &record) const;
 
       /// One run: road @p road_name at @p speed_kmh, at the time step and over
       /// the distance of @p band_run, on the contact points of
