@@ -170,10 +170,13 @@ main(int argc, char **argv)
   std::printf("(in columns 2 and 3: time, largest residual, largest relative frequency "
               "difference from column 1)\nWritten: %s\n",
               (options.output / "harmonic_mode_search.csv").c_str());
-  // Every solver's frequencies against the generalised solve's: 3e-11 at
-  // most with --quick, 7e-11 in full (both the 0th harmonic); bound 3x the
-  // larger, the search's tolerance being 1e-9.
+  // Every solver's frequencies against the generalised solve's, the
+  // largest at the 0th harmonic: 3e-11 with --quick; in full 8e-11 for the
+  // standard form and, for the own block Krylov search, 7e-11 on an AVX2
+  // machine but 3.3e-10 on an AVX-512 one (the same code: that search stops
+  // at its tolerance, 1e-9, so its last digits follow the round-off). The
+  // bound is that tolerance, 3x the largest measured.
   benchmark::Checks checks("harmonic_mode_search");
-  checks.at_most("frequencies against the generalised solve (relative)", worst, 2e-10);
+  checks.at_most("frequencies against the generalised solve (relative)", worst, 1e-9);
   return checks.exit_code();
 }
