@@ -1,6 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
-#include <greentread/geometry/tyre_cell.h>
+#include <greentread/geometry/geometry_parameters.h>
 
 #include <cmath>
 #include <regex>
