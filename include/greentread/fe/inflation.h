@@ -1,8 +1,8 @@
 #pragma once
 
 #include <greentread/fe/elastic_model.h>
+#include <greentread/fe/inflation_parameters.h>
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
 #include <utility>
@@ -18,19 +18,6 @@ namespace greentread
 {
   namespace fe
   {
-    /**
-     * @brief Subsection "Inflation".
-     */
-    struct InflationParameters
-    {
-      double pressure = 2e5; ///< gauge pressure on the inner surface [Pa]
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /**
      * @brief The static inflation of the cell in the ring: rim seat clamped,
      * rotational periodicity over the cell's angle @p cell_angle [rad],
