@@ -2,7 +2,7 @@
 // the identification itself is in identification.cc.
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
-#include <greentread/modal/identification.h>
+#include <greentread/modal/identification_parameters.h>
 
 #include <cstdlib>
 #include <string>
