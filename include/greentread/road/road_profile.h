@@ -1,9 +1,6 @@
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
-#include <memory>
-#include <string>
+#include <greentread/road/road_parameters.h>
 
 /**
  * @file
@@ -128,40 +125,6 @@ namespace greentread
       {
         return speed * speed * speed * profile.third_derivative(x0 + speed * t);
       }
-    };
-
-    /**
-     * @brief Subsection "Road/Sinusoid": the one sinusoidal road, read by the
-     * 1-DoF scene (its only profile) and by the rolling scene (its road
-     * 'sinusoid'). Declaring it twice is harmless.
-     */
-    struct SinusoidParameters
-    {
-      double amplitude  = 5e-3;
-      double wavelength = 1e-2;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
-    /**
-     * @brief Subsection "Road": which profile, and its parameters (those of
-     * the sinusoid, Road/Sinusoid, inherited).
-     */
-    struct RoadParameters : SinusoidParameters
-    {
-      std::string profile = "sinusoid";
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-
-      /// Build the profile these parameters describe.
-      std::unique_ptr<RoadProfile>
-      create() const;
     };
   } // namespace road
 } // namespace greentread
