@@ -1,5 +1,7 @@
 #pragma once
 
+#include <greentread/scenes/global_parameters.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <memory>
@@ -17,22 +19,6 @@ namespace greentread
 {
   namespace scenes
   {
-    /**
-     * @brief The top-level parameters every scene has.
-     */
-    struct GlobalParameters
-    {
-      std::string scene            = "sdof";
-      std::string output_directory = "output";
-      bool        print_timings    = true;
-      bool        reuse            = true;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /**
      * @brief A runnable scene.
      */

@@ -1,8 +1,7 @@
 #pragma once
 
 #include <greentread/modal/modal_model.h>
-
-#include <deal.II/base/parameter_handler.h>
+#include <greentread/sdof/oscillator_parameters.h>
 
 /**
  * @file
@@ -14,27 +13,6 @@ namespace greentread
 {
   namespace sdof
   {
-    /**
-     * @brief Subsection "Oscillator" (Table A.1).
-     */
-    struct OscillatorParameters
-    {
-      double mass          = 1.;
-      double stiffness     = 4e5;
-      double damping_ratio = 0.02;
-      double gravity       = 9.81;
-      double speed         = 0.1;
-      /// Take the Green's function from LSCE of the oscillator's own FRF.
-      bool   identified_green = false;
-      double frf_max_frequency = 1000.;
-      double frf_line_spacing  = 1.;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-    };
-
     /**
      * @brief The oscillator's closed-form responses.
      *
