@@ -369,16 +369,18 @@ namespace greentread
               try
                 {
                   const Job &job = jobs[k];
-                  const auto what =
-                    job.estimate < 0 ?
-                      std::optional<analysis::Discretisation>() :
-                      estimates[job.road * rolling.speeds.size() + job.speed][job.estimate].what;
-                  const bool on_coarser_grid = what == analysis::Discretisation::contact_grid;
-                  const bool on_coarser_section = what == analysis::Discretisation::ring_section;
+                  // The discretisation this run is the other level of, if any.
+                  const auto is = [&](const analysis::Discretisation d) {
+                    return job.estimate >= 0 &&
+                           estimates[job.road * rolling.speeds.size() + job.speed][job.estimate]
+                               .what == d;
+                  };
+                  const bool on_coarser_grid    = is(analysis::Discretisation::contact_grid);
+                  const bool on_coarser_section = is(analysis::Discretisation::ring_section);
                   job_spectra[k] =
-                    roll(what == analysis::Discretisation::mode_cutoff ? coarser_model->model :
-                         on_coarser_section                            ? section->model :
-                                                                         model,
+                    roll(is(analysis::Discretisation::mode_cutoff) ? coarser_model->model :
+                         on_coarser_section                          ? section->model :
+                                                                       model,
                          on_coarser_grid ? *coarser.grid : grid,
                          on_coarser_section ? section->G0 : G0,
                          on_coarser_grid ? coarser.tread : tread,
