@@ -6,7 +6,8 @@
 # order) against runs refined further in each discretisation on the same
 # road from the same start: the time step a quarter, 'Contact
 # grid/Subdivisions' doubled, 'Geometry/Mesh size' halved (the 4 mm
-# section, whose stages FINER_SECTION holds). The runs are single-rate ('Spectra/Low
+# section, whose stages $FINER_SECTION holds), 'Patch model/Mode cutoff' at
+# 10 kHz (whose modes $FINER_CUTOFF holds). The runs are single-rate ('Spectra/Low
 # bands up to' = 0) and as long as the estimates' window (4 Fourier lines in
 # the 250 Hz band, 69 ms, or the texture file's length), so that each level
 # and its estimate cover the same record. Prints per band the estimate and
@@ -14,41 +15,48 @@
 # bands the estimates cover), the bands within a factor 2, and the ratio of
 # the rms over the bands (a single band's difference can pass through zero).
 #
-#   bash benchmarks/error_bars.sh [output directory of the main job] [program] [cases] [discretisations] [FINER_SECTION]
+#   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] bash benchmarks/error_bars.sh \
+#     [output directory of the main job] [program] [cases] [discretisations]
 #
 # cases: any of "default texture-file load" (default: all three):
 #   default       road-A at 90 km/h, 600 N (the main job's first road)
 #   texture-file  the worked example's texture file (make_example_road, 1 mm
 #                 grid, 0.8 m) at 50 km/h
 #   load          road-B at 50 km/h under 900 N
-# discretisations: any of "time_step contact_grid ring_section" (default:
-#   the first two). ring_section needs FINER_SECTION: the output directory
-#   of a run of the program with 'Geometry/Mesh size' = 0.004 (every other
-#   default, 'Error bars/Estimates' empty: about 30 minutes), whose stages
-#   the refined runs reuse; the main job's output must hold its
-#   coarser_section/ (the default 'Error bars/Estimates' saves it).
-# About 30 minutes on this 2-core machine (the refined grid, 16 subdivisions
-# on 30,720 points, is most of it).
+# discretisations: any of "time_step contact_grid mode_cutoff ring_section"
+#   (default: the first two, which need only the main job's stages).
+#   mode_cutoff needs FINER_CUTOFF: the output directory of a run of the
+#   program with 'Patch model/Mode cutoff' = 10000 on a copy of the main
+#   job's green_functions.h5 ('Error bars/Estimates' empty and one short
+#   run, as doc/benchmarks.md gives it: about 5 minutes).
+#   ring_section needs FINER_SECTION: the output directory of a run with
+#   'Geometry/Mesh size' = 0.004 (the same way: about 20 minutes), and the
+#   main job's output must hold its coarser_section/ (the default 'Error
+#   bars/Estimates' saves it).
+# About 30 minutes on this 2-core machine for the first two (the refined
+# grid, 16 subdivisions on 30,720 points, is most of it), 5 for the other two.
 set -euo pipefail
 
 saved=${1:-output}
 program=${2:-build/greentread}
 cases=${3:-default texture-file load}
 discretisations=${4:-time_step contact_grid}
-finer_section=${5:-}
 source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
 check_saved_stages error_bars.sh
-if [[ " $discretisations " == *" ring_section "* ]]; then
-  if [[ -z "$finer_section" || ! -f "$finer_section/green_functions.h5" ]]; then
-    echo "error_bars.sh: ring_section needs FINER_SECTION (argument 5), the output of a run" \
-         "with 'Geometry/Mesh size' = 0.004; '$finer_section' holds no green_functions.h5" >&2
+# needs_stages DISCRETISATION DIR VARIABLE: refuse a refined level without its stages.
+needs_stages() {
+  if [[ " $discretisations " == *" $1 "* && ( -z "$2" || ! -f "$2/green_functions.h5" ) ]]; then
+    echo "error_bars.sh: $1 needs $3, the output directory of the refined level's run" \
+         "(see this script's header); '$2' holds no green_functions.h5" >&2
     exit 1
   fi
-  if [[ ! -f "$saved/coarser_section/green_functions.h5" ]]; then
-    echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
-         "default 'Error bars/Estimates' first" >&2
-    exit 1
-  fi
+}
+needs_stages ring_section "${FINER_SECTION:-}" FINER_SECTION
+needs_stages mode_cutoff "${FINER_CUTOFF:-}" FINER_CUTOFF
+if [[ " $discretisations " == *" ring_section "* && ! -f "$saved/coarser_section/green_functions.h5" ]]; then
+  echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
+       "default 'Error bars/Estimates' first" >&2
+  exit 1
 fi
 
 work=$(mktemp -d)
@@ -76,8 +84,11 @@ run_case() {
     run_saved "${name}_contact_grid" "${common[@]}" --set "Error bars/Estimates=" \
       --set "Contact grid/Subdivisions=16"
   [[ " $discretisations " == *" ring_section "* ]] &&
-    saved=$finer_section run_saved "${name}_ring_section" "${common[@]}" \
+    saved=$FINER_SECTION run_saved "${name}_ring_section" "${common[@]}" \
       --set "Error bars/Estimates=" --set "Geometry/Mesh size=0.004"
+  [[ " $discretisations " == *" mode_cutoff "* ]] &&
+    saved=$FINER_CUTOFF run_saved "${name}_mode_cutoff" "${common[@]}" \
+      --set "Error bars/Estimates=" --set "Patch model/Mode cutoff=10000"
   return 0
 }
 

@@ -5,7 +5,7 @@
 #
 # BUILD_DIR (default build/) holds greentread and the benchmarks.
 # MAIN_JOB_OUTPUT is the output folder of a finished main job (build/greentread
-# writes output/); without it the main job is run here (about 18 minutes on 2 cores).
+# writes output/); without it the main job is run here (about 13 minutes on 2 cores).
 # QUICK=1 keeps green_functions.png instead of running the tyre-green scene
 # (its 257 lines take 5 to 12 minutes).
 # converged_ring_road-A_90kmh.png comes from the converged_ring benchmark's

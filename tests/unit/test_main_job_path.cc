@@ -81,6 +81,42 @@ namespace
     const fs::path file = directory / "spectrum_sinusoid_90kmh.csv";
     return {csv_column(file, 1), csv_column(file, 5)};
   }
+
+  /// The program on a copy of the stages in @p from (and of its
+  /// coarser_section/, if there), on the fixture's road and load, with
+  /// @p settings added: its output directory (a scratch directory named
+  /// after @p name), what it printed, and how many saved stages it reused.
+  struct Run
+  {
+    fs::path    dir;
+    std::string screen;
+    std::size_t reused = 0;
+  };
+
+  Run
+  run_on_saved_stages(const std::string &name, const fs::path &from, const std::string &settings)
+  {
+    Run run{test::scratch_directory("main-job-path-" + name), {}, 0};
+    for (const std::string file : {"green_functions.h5", "modal_model.h5"})
+      fs::copy_file(from / file, run.dir / file);
+    if (fs::exists(from / "coarser_section"))
+      fs::copy(from / "coarser_section", run.dir / "coarser_section", fs::copy_options::recursive);
+    const std::string command =
+      std::string("\"") + GREENTREAD_PROGRAM + "\" --set \"Output directory=" + run.dir.string() +
+      "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
+      "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=sinusoid\" --set "
+      "\"Road/Sinusoid/Amplitude=0.000005\" --set \"Road/Sinusoid/Wavelength=0.04\" --set "
+      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" " +
+      settings + " > \"" + (run.dir / "screen.txt").string() + "\" 2>&1";
+    const int     status = std::system(command.c_str());
+    std::ifstream screen(run.dir / "screen.txt");
+    run.screen.assign(std::istreambuf_iterator<char>(screen), std::istreambuf_iterator<char>());
+    BOOST_TEST_REQUIRE(status == 0, run.screen);
+    for (std::size_t at = run.screen.find("Reusing"); at != std::string::npos;
+         at = run.screen.find("Reusing", at + 1))
+      ++run.reused;
+    return run;
+  }
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(main_job_path)
@@ -107,23 +143,12 @@ BOOST_AUTO_TEST_CASE(the_sinusoid_peaks_at_speed_over_wavelength_and_the_load_is
 BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustained)
 {
   // The program again, on a copy of the saved stages, with the heights doubled.
-  const fs::path dir = test::scratch_directory("main-job-path-doubled");
-  for (const std::string file : {"green_functions.h5", "modal_model.h5"})
-    fs::copy_file(stages / file, dir / file);
-  const std::string command =
-    std::string("\"") + GREENTREAD_PROGRAM + "\" --set \"Output directory=" + dir.string() +
-    "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
-    "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=sinusoid\" --set "
-    "\"Road/Sinusoid/Amplitude=0.000005\" --set \"Road/Sinusoid/Wavelength=0.04\" --set "
-    "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" "
-    "--set \"Spectra/Standard error target=2\" --set \"Error bars/Estimates=\" "
-    "--set \"Road texture/Height scale=2\" > \"" + (dir / "screen.txt").string() + "\" 2>&1";
-  const int         status = std::system(command.c_str());
-  std::ifstream     screen(dir / "screen.txt");
-  const std::string text((std::istreambuf_iterator<char>(screen)), std::istreambuf_iterator<char>());
-  BOOST_TEST_REQUIRE(status == 0, text);
-  BOOST_TEST(text.find("Reusing") != std::string::npos, text);
-  BOOST_TEST(text.find("did not converge: 0,") != std::string::npos, text);
+  const Run run = run_on_saved_stages("doubled", stages,
+                                      "--set \"Spectra/Standard error target=2\" --set \"Error "
+                                      "bars/Estimates=\" --set \"Road texture/Height scale=2\"");
+  const fs::path &dir = run.dir;
+  BOOST_TEST(run.reused == 2u, run.screen); // the Green's functions and the modes
+  BOOST_TEST(run.screen.find("did not converge: 0,") != std::string::npos, run.screen);
 
   const auto [centre, once]  = stress_bands(stages);
   const auto [same, twice]   = stress_bands(dir);
@@ -182,33 +207,13 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
   // section with 'Geometry/Mesh size' doubled, on the stages the main job
   // saved in coarser_section/ (which must be reused: they are what a run of
   // that section computes).
-  const auto run = [](const std::string &name, const fs::path &from, const std::string &settings) {
-    const fs::path dir = test::scratch_directory("main-job-path-" + name);
-    for (const std::string file : {"green_functions.h5", "modal_model.h5"})
-      fs::copy_file(from / file, dir / file);
-    if (fs::exists(from / "coarser_section"))
-      fs::copy(from / "coarser_section", dir / "coarser_section", fs::copy_options::recursive);
-    const std::string command =
-      std::string("\"") + GREENTREAD_PROGRAM + "\" --set \"Output directory=" + dir.string() +
-      "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
-      "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=sinusoid\" --set "
-      "\"Road/Sinusoid/Amplitude=0.000005\" --set \"Road/Sinusoid/Wavelength=0.04\" --set "
-      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" "
-      "--set \"Spectra/Low bands up to=0\" " + settings + " > \"" + (dir / "screen.txt").string() +
-      "\" 2>&1";
-    const int         status = std::system(command.c_str());
-    std::ifstream     screen(dir / "screen.txt");
-    const std::string text((std::istreambuf_iterator<char>(screen)), std::istreambuf_iterator<char>());
-    BOOST_TEST_REQUIRE(status == 0, text);
-    std::size_t reused = 0;
-    for (std::size_t at = text.find("Reusing"); at != std::string::npos; at = text.find("Reusing", at + 1))
-      ++reused;
-    return std::make_pair(dir, reused);
-  };
-  const auto [fine, fine_reused] = run("ring-section", stages, "--set \"Error bars/Estimates=ring section\"");
-  const auto [coarse, coarse_reused] =
-    run("coarser-section", stages / "coarser_section",
-        "--set \"Error bars/Estimates=\" --set \"Geometry/Mesh size=0.016\"");
+  const Run fine_run = run_on_saved_stages(
+    "ring-section", stages, "--set \"Spectra/Low bands up to=0\" --set \"Error bars/Estimates=ring section\"");
+  const Run coarse_run = run_on_saved_stages("coarser-section", stages / "coarser_section",
+                                             "--set \"Spectra/Low bands up to=0\" --set \"Error "
+                                             "bars/Estimates=\" --set \"Geometry/Mesh size=0.016\"");
+  const fs::path &fine = fine_run.dir, &coarse = coarse_run.dir;
+  const std::size_t fine_reused = fine_run.reused, coarse_reused = coarse_run.reused;
   BOOST_TEST(fine_reused == 4u);   // both stages, and both of the coarser section
   BOOST_TEST(coarse_reused == 2u); // the coarser section's, as its own
 

@@ -39,8 +39,8 @@ namespace greentread
     /// The order in the section's mesh size at its element degree: the
     /// section's coarser level is 'Geometry/Mesh size' doubled. Observed over
     /// the 16, 8 and 4 mm quartic sections on error_bars.sh's three cases,
-    /// rms over the bands from 250 Hz: 0.85 to 1.63 (the force's the lower).
-    /// 1.5 puts the estimate at 0.98 to 1.69 times the difference from the 4 mm
+    /// rms over the bands from 250 Hz: 0.86 to 1.62 (the force's the lower).
+    /// 1.5 puts the estimate at 0.99 to 1.68 times the difference from the 4 mm
     /// section in all six (doc/methods/analysis.md).
     constexpr double ring_section_order = 1.5;
 
