@@ -15,7 +15,8 @@
 //   themselves are checked against refined runs in unit/error_bars);
 // - the ring section's estimate is Richardson's factor times the level
 //   difference from a run of the section twice as coarse, made here on its
-//   own, whose stages are those the main job saved for it;
+//   own, whose stages are those the main job saved for it (in the
+//   sinusoid's band: the others are at the contact solve's noise);
 // - the same roll done here through the library, its forces convolved with
 //   the patch model in the frequency domain (frequency_synthesis.h, nothing
 //   shared with the time stepping), leaves no contact point inside the road
