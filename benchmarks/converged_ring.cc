@@ -84,31 +84,42 @@ namespace
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  /// band [Hz] -> level [dB] of a spectrum CSV of the road scene.
+  /// band [Hz] -> level [dB] of a spectrum CSV of the road scene: the
+  /// column its header names level_dB, whatever columns the file holds
+  /// besides (standard errors, each band's run, the error bars).
   std::map<int, double>
   read_levels(const std::filesystem::path &file)
   {
     std::ifstream in(file);
     if (!in)
       throw InputError("cannot read '" + file.string() + "'");
-    std::map<int, double> levels;
-    std::string           line;
+    const auto fields_of = [](const std::string &line) {
+      std::vector<std::string> fields;
+      std::size_t              start = 0;
+      for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+        fields.push_back(line.substr(start, comma - start));
+      fields.push_back(line.substr(start));
+      return fields;
+    };
+    std::map<int, double>    levels;
+    std::vector<std::string> header;
+    std::size_t              level = 0;
+    std::string              line;
     while (std::getline(in, line))
-      if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0])))
+      if (header.empty() && line.rfind("nominal_Hz,", 0) == 0)
         {
-          std::vector<std::string> fields;
-          std::size_t              start = 0;
-          for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos;
-               start = comma + 1)
-            fields.push_back(line.substr(start, comma - start));
-          fields.push_back(line.substr(start));
-          // 6 fields, 3 more with the standard errors (welch_band_spectrum()),
-          // 2 more with each band's step and record, and with error bars
-          // their total and one per discretisation estimated (1 to 4).
-          if (fields.size() != 6 && fields.size() != 9 && (fields.size() < 11 || fields.size() > 16))
-            throw InputError("'" + file.string() + "': line '" + line +
-                             "' does not have the 6, 9 or 11 to 16 fields of a band spectrum");
-          levels[std::stoi(fields[0])] = std::stod(fields[5]);
+          header = fields_of(line);
+          level  = std::find(header.begin(), header.end(), "level_dB") - header.begin();
+          if (level == header.size())
+            throw InputError("'" + file.string() + "': its header has no level_dB column");
+        }
+      else if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0])))
+        {
+          const auto fields = fields_of(line);
+          if (header.empty() || fields.size() != header.size())
+            throw InputError("'" + file.string() + "': line '" + line + "' does not have the " +
+                             std::to_string(header.size()) + " fields of its header");
+          levels[std::stoi(fields[0])] = std::stod(fields[level]);
         }
     return levels;
   }

@@ -213,13 +213,11 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
   const Run coarse_run = run_on_saved_stages("coarser-section", stages / "coarser_section",
                                              "--set \"Spectra/Low bands up to=0\" --set \"Error "
                                              "bars/Estimates=\" --set \"Geometry/Mesh size=0.016\"");
-  const fs::path &fine = fine_run.dir, &coarse = coarse_run.dir;
-  const std::size_t fine_reused = fine_run.reused, coarse_reused = coarse_run.reused;
-  BOOST_TEST(fine_reused == 4u);   // both stages, and both of the coarser section
-  BOOST_TEST(coarse_reused == 2u); // the coarser section's, as its own
+  BOOST_TEST(fine_run.reused == 4u);   // both stages, and both of the coarser section
+  BOOST_TEST(coarse_run.reused == 2u); // the coarser section's, as its own
 
-  const auto fine_rows   = test::read_csv(fine / "spectrum_sinusoid_90kmh.csv");
-  const auto coarse_rows = test::read_csv(coarse / "spectrum_sinusoid_90kmh.csv");
+  const auto fine_rows   = test::read_csv(fine_run.dir / "spectrum_sinusoid_90kmh.csv");
+  const auto coarse_rows = test::read_csv(coarse_run.dir / "spectrum_sinusoid_90kmh.csv");
   BOOST_TEST_REQUIRE(fine_rows.size() == coarse_rows.size());
   const double factor  = analysis::richardson_factor(2., analysis::ring_section_order);
   double       highest = -1e300;
