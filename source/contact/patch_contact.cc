@@ -272,7 +272,8 @@ namespace greentread
          const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand,
          const unsigned int                                                       n_steps,
          const Eigen::VectorXd                                                   &start_force,
-         const std::function<void(const RollingStep &)>                          &observe)
+         const std::function<void(const RollingStep &)>                          &observe,
+         const std::function<unsigned int(unsigned int)>                         &more_steps)
     {
       const unsigned int n  = conv.n_points();
       const double       dt = conv.time_step();
@@ -290,9 +291,17 @@ namespace greentread
       RollingSummary  summary;
       RollingStep     s;
       s.d.resize(n);
-      summary.steps = n_steps;
-      for (unsigned int k = 0; k < n_steps; ++k)
+      unsigned int total = n_steps;
+      for (unsigned int k = 0;; ++k)
         {
+          // At the record's end: on, if asked for more.
+          if (k == total)
+            {
+              const unsigned int more = more_steps ? more_steps(total) : 0;
+              if (more == 0)
+                break;
+              total += more;
+            }
           s.step = k;
           s.time = (k + 1) * dt;
           // A continuous force (an instantaneous compliance) is solved on the
@@ -335,6 +344,7 @@ namespace greentread
           if (observe)
             observe(s);
         }
+      summary.steps = total;
       return summary;
     }
 

@@ -96,7 +96,8 @@ namespace greentread
     RollingSummary
     roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
                const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
+               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe,
+               const std::function<unsigned int(unsigned int)> &more_steps)
     {
       Eigen::VectorXd z(tread.size()), slope(tread.size());
       const auto      demand = [&](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
@@ -105,7 +106,7 @@ namespace greentread
         dd = setup.speed * slope;
       };
       return roll(convolution, demand, setup.n_steps,
-                  setup.static_start ? start.q : Eigen::VectorXd(), observe);
+                  setup.static_start ? start.q : Eigen::VectorXd(), observe, more_steps);
     }
   } // namespace contact
 } // namespace greentread

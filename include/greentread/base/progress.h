@@ -41,6 +41,13 @@ namespace greentread
           check(done);
       }
 
+      /// The loop grew: @p new_total items in all.
+      void
+      extend(std::size_t new_total)
+      {
+        total = new_total;
+      }
+
       /// Print the final line if anything was printed before.
       void
       finish();

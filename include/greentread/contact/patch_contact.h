@@ -148,7 +148,11 @@ namespace greentread
      * (@p demand fills d and its rate dd), the contact solve, the update of
      * the convolution, then @p observe (may be empty). With @p start_force
      * non-empty, the run starts from that force held since \f$t=-\infty\f$
-     * (a static equilibrium), otherwise from rest.
+     * (a static equilibrium), otherwise from rest. When the steps run out,
+     * @p more_steps (may be empty) is asked, with the steps done so far, how
+     * many more to roll: the run goes on from where it is (the same
+     * convolution and contact state) until it answers 0.
+     * RollingSummary::steps is the number rolled.
      * @throws NumericalError naming the step if a force or displacement is
      * not finite.
      */
@@ -157,7 +161,8 @@ namespace greentread
          const std::function<void(double t, Eigen::VectorXd &d, Eigen::VectorXd &dd)> &demand,
          unsigned int                                                       n_steps,
          const Eigen::VectorXd                                             &start_force,
-         const std::function<void(const RollingStep &)>                    &observe);
+         const std::function<void(const RollingStep &)>                    &observe,
+         const std::function<unsigned int(unsigned int steps_done)>        &more_steps = {});
 
     /**
      * @brief The static contact: \f$G_0 q = u\f$, \f$u - d \ge 0\f$, \f$q \ge 0\f$,

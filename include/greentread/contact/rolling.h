@@ -103,10 +103,12 @@ namespace greentread
 
     /// roll_patch() with a convolution made beforehand (benchmarks time the
     /// run without the making of the kernels); @p setup.convolution and
-    /// @p setup.threads are not used.
+    /// @p setup.threads are not used. @p more_steps as in contact::roll():
+    /// the run may go on past setup.n_steps (the road must be long enough).
     RollingSummary
     roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
                const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe);
+               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe,
+               const std::function<unsigned int(unsigned int)> &more_steps = {});
   } // namespace contact
 } // namespace greentread
