@@ -34,11 +34,21 @@ namespace greentread
     plan_band_runs(const SpectraParameters &spectra, const double V, const double dt,
                    const double distance, const double top_band)
     {
+      // The most steps a run may extend to: 'Longest distance', and
+      // longest_extension times its plan, but never fewer than planned.
+      const auto longest_steps = [&](const BandRun &run) -> unsigned int {
+        if (!spectra.extend_runs)
+          return 0;
+        const double cap = std::min(spectra.longest_distance,
+                                    SpectraParameters::longest_extension * run.distance);
+        return std::max(run.steps, unsigned(std::floor(cap / (V * run.time_step))));
+      };
       BandRun fine;
       fine.time_step = dt;
       fine.distance  = distance;
       fine.steps     = unsigned(samples(distance, V, dt));
       fine.f_high    = top_band;
+      fine.longest_steps = longest_steps(fine);
       const double split = std::min(spectra.low_bands_up_to, top_band);
       if (spectra.low_band_time_step <= dt * (1. + 1e-9) || split < 100.)
         return {fine};
@@ -86,9 +96,35 @@ namespace greentread
       if (low.distance <= distance * (1. + 1e-9))
         return {fine};
       low.steps = unsigned(samples(low.distance, V, low.time_step));
+      low.longest_steps = low.target_out_of_reach ? 0 : longest_steps(low);
       const auto above = third_octave_bands(split, 2. * split);
       fine.f_low       = above.size() > 1 ? above[1].nominal : top_band;
       return {fine, low};
+    }
+
+
+
+    unsigned int
+    more_steps_for_target(const SpectraParameters &spectra, const BandRun &run,
+                          const BandSpectrum &stress, const BandSpectrum &force,
+                          const unsigned int steps_done)
+    {
+      if (steps_done == 0 || steps_done >= run.longest_steps)
+        return 0;
+      const double from  = std::max(spectra.target_from, run.f_low);
+      double       worst = 0.;
+      for (const BandSpectrum *s : {&stress, &force})
+        for (std::size_t b = 0; b < s->bands.size(); ++b)
+          {
+            const double f = s->bands[b].nominal;
+            if (f >= from * (1. - 1e-9) && f <= run.f_high * (1. + 1e-9))
+              worst = std::max(worst, s->standard_error[b]);
+          }
+      if (!(worst > spectra.target_error))
+        return 0;
+      const double ratio  = worst / spectra.target_error;
+      const double wanted = std::ceil(1.05 * steps_done * ratio * ratio);
+      return unsigned(std::min<double>(wanted, run.longest_steps)) - steps_done;
     }
 
 

@@ -73,6 +73,7 @@ namespace greentread
               e.run    = plan[i];
               e.run.name = (plan[i].name.empty() ? "" : plan[i].name + "_") + "coarser_" + label(d);
               e.run.target_out_of_reach = false;
+              e.run.longest_steps       = 0; // a window of fixed length
               double step = plan[i].time_step;
               if (d == Discretisation::time_step && i > 0)
                 {

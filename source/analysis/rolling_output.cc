@@ -472,13 +472,19 @@ namespace greentread
                 all_met = false;
                 std::cout << "; above the target in the " << missed << " Hz bands";
                 const double fine_step = s->time_step.back();
+                // With 'Extend runs' a run misses only at its longest.
                 for (const auto &[step, d] : needed)
                   std::cout << "; "
-                            << (step > fine_step * (1. + 1e-9) ?
-                                  "a low-rate run of " + format_printf("%.3g", d) +
-                                    " m ('Spectra/Longest distance')" :
-                                  "'Rolling/Distance' = " + format_printf("%.3g", d) + " m")
-                            << " would meet it";
+                            << (step > fine_step * (1. + 1e-9) ? "a low-rate run of " :
+                                spectra.extend_runs            ? "a run at the scene's step of " :
+                                                                 "'Rolling/Distance' = ")
+                            << format_printf("%.3g", d) << " m would meet it"
+                            << (spectra.extend_runs ?
+                                  " (the run stopped at its longest: 'Spectra/Longest "
+                                  "distance', 3 times its plan, or the road's length)" :
+                                  step > fine_step * (1. + 1e-9) ?
+                                  " ('Spectra/Longest distance', 'Spectra/Extend runs')" :
+                                  "");
                 std::cout << '\n';
               }
           }

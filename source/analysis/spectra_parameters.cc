@@ -47,8 +47,17 @@ namespace greentread
           "default, 76.8 us (5 road samples at 90 km/h), is the step benchmarks/multi_rate.sh "
           "measured against the scene's step on the same road (doc/benchmarks.md).");
         prm.declare_entry("Longest distance", "50", base::RangePattern::closed(0.1, 200., "m"),
-                          "The longest low-rate run: a target it cannot meet within this is "
-                          "reported, with the distance it would need.");
+                          "The longest run: the low-rate run's planned record, and any run's "
+                          "record once extended ('Extend runs'). A target it cannot meet "
+                          "within this is reported, with the distance it would need.");
+        prm.declare_entry(
+          "Extend runs", "true", dealii::Patterns::Bool(),
+          "Each run rolls on past its planned record (the run at the scene's step past "
+          "'Rolling/Distance', the low-rate run past its planned length) until the standard "
+          "error observed in the bands it gives, from 'Target from' up, in the stress and in the "
+          "force, meets 'Standard error target': the plan is a Gaussian signal's prediction, "
+          "and the contact force scatters more than that. At most 'Longest distance', and 3 "
+          "times the planned record. false: every run rolls its planned record only.");
         for (const char *direction : {"along", "across"})
           prm.declare_entry(
             std::string("Reporting cell ") + direction, "0",
@@ -78,6 +87,7 @@ namespace greentread
         low_bands_up_to      = prm.get_double("Low bands up to");
         low_band_time_step   = prm.get_double("Low-band time step");
         longest_distance     = prm.get_double("Longest distance");
+        extend_runs          = prm.get_bool("Extend runs");
         reporting_along   = 1e-3 * prm.get_double("Reporting cell along");
         reporting_across  = 1e-3 * prm.get_double("Reporting cell across");
       }

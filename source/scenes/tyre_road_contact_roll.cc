@@ -54,7 +54,7 @@ namespace greentread
     {
       const double       V       = speed_kmh / 3.6;
       const double       dt      = band_run.time_step;
-      const unsigned int n_steps = band_run.steps;
+      unsigned int       n_steps = band_run.steps; // the steps rolled, once extended
       if (band_run.distance > patch_road.usable_length())
         throw InputError("parameter 'Rolling/Distance' = " +
                          format_short(band_run.distance) + " m is longer than road '" +
@@ -80,6 +80,7 @@ namespace greentread
           << '\n';
       print();
       const auto t_run = std::chrono::steady_clock::now();
+      const double top_band = band_run.f_high;
       const unsigned int n_p = grid.n_points();
 
       // The road under the points, the static start and the run's set-up.
@@ -136,8 +137,35 @@ namespace greentread
                                         setup.direct_kernel, setup.threads,
                                         setup.shape_precision),
         grid);
-      const auto summary =
-        contact::roll_patch(*convolution, tread, road_heights, equilibrium, setup, observe);
+      // On past the planned record while the observed standard errors miss
+      // the target ('Spectra/Extend runs'), as far as the road allows.
+      // (Not the direct convolution: its kernels have the planned length.)
+      analysis::BandRun extensible = band_run;
+      extensible.longest_steps     = std::min<double>(
+        band_run.longest_steps, std::floor(patch_road.usable_length() / (V * dt) * (1. + 1e-9)));
+      if (setup.convolution == convolution::Method::direct)
+        extensible.longest_steps = 0;
+      std::string extended;
+      const auto  more_steps = [&](const unsigned int done) -> unsigned int {
+        if (extensible.longest_steps <= done)
+          return 0;
+        const unsigned int more = analysis::more_steps_for_target(
+          spectra, extensible,
+          analysis::welch_band_spectrum(centre, dt, rolling.stress_reference, 100., top_band,
+                                        spectra.lines_per_segment),
+          analysis::welch_band_spectrum(force, dt, 1., 100., top_band, spectra.lines_per_segment),
+          done);
+        if (more > 0)
+          {
+            extended += (extended.empty() ? "" : ", ") +
+                        format_printf("%.3g", (done + more) * V * dt) + " m";
+            progress.extend(done + more);
+          }
+        return more;
+      };
+      const auto summary = contact::roll_patch(*convolution, tread, road_heights, equilibrium,
+                                               setup, observe, more_steps);
+      n_steps = summary.steps;
       result.fallback_points      = summary.fallback_points;
       result.min_contact_fraction = summary.min_contact_fraction;
       result.max_contact_fraction = summary.max_contact_fraction;
@@ -145,7 +173,14 @@ namespace greentread
       progress.finish();
       result.seconds    = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
       result.mean_force = impulse_total / (n_steps * dt);
-      const double top_band = band_run.f_high;
+      if (!extended.empty())
+        out << "    " << run << ": extended to " << extended
+            << " for the standard error target ('Spectra/Extend runs'): "
+            << format_short(n_steps * V * dt) << " m, " << n_steps << " steps"
+            << (n_steps >= extensible.longest_steps ?
+                  " (its longest: 'Spectra/Longest distance', or 3 times its plan, or the road)" :
+                  "")
+            << '\n';
       if (band_run.name.empty() && top_band < 5000.)
         out << "    the spectrum ends at the " << format_number(top_band)
                   << " Hz band: dt = " << format_printf("%.4g", 1e6 * dt)

@@ -293,7 +293,9 @@ namespace greentread
                             << (file != texture_files.end() ? ", or the texture file's length" : "")
                             << "), short of the standard error target\n";
                 jobs.push_back({r, v, run});
-                road_length[r] = std::max(road_length[r], run.distance);
+                // As long as the run may extend to ('Spectra/Extend runs').
+                road_length[r] = std::max({road_length[r], run.distance,
+                                           run.longest_steps * V * run.time_step});
               }
             estimates.push_back(analysis::plan_estimate_runs(plans.back(), error_bars,
                                                              spectra.target_from, V,

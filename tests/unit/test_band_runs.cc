@@ -12,7 +12,11 @@
 // - the merge takes each band from the run that gave it;
 // - the multi-rate estimate of a signal sampled at two rates agrees with
 //   the single-rate one within the standard errors (a Gaussian process
-//   whose spectrum is known in closed form).
+//   whose spectrum is known in closed form);
+// - a run extended to its observed standard errors ('Spectra/Extend runs')
+//   meets the target: on Gaussian noise at about the record the Gaussian
+//   prediction gives in closed form, on gated noise (whose band power
+//   scatters more) at a longer one, and never past its longest.
 #include <greentread/analysis/band_runs.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/analysis/third_octave.h>
@@ -219,6 +223,92 @@ BOOST_AUTO_TEST_CASE(multi_rate_agrees_with_one_rate_within_the_error_bars)
   // A low-rate spectrum that lacks a band it should give is refused.
   low_run.f_high = 1600.;
   BOOST_CHECK_THROW(analysis::merge_band_spectra(fine, low, low_run), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(a_run_extends_until_its_observed_errors_meet_the_target)
+{
+  // The plan's caps: 3 times each run's planned record, at most 'Longest
+  // distance'; none without 'Extend runs'.
+  analysis::SpectraParameters spectra;
+  const double                V = 25., dt = 0.384e-3 / V;
+  auto                        plan = analysis::plan_band_runs(spectra, V, dt, 2., 5000.);
+  BOOST_TEST_REQUIRE(plan.size() == 2u);
+  BOOST_TEST(plan[0].longest_steps == unsigned(std::floor(6. / (V * dt))));
+  BOOST_TEST(plan[1].longest_steps ==
+             unsigned(std::floor(std::min(50., 3. * plan[1].distance) / (V * 76.8e-6))));
+  spectra.extend_runs = false;
+  plan                = analysis::plan_band_runs(spectra, V, dt, 2., 5000.);
+  BOOST_TEST(plan[0].longest_steps == 0u);
+  BOOST_TEST(plan[1].longest_steps == 0u);
+  spectra.extend_runs = true;
+
+  // The rule on signals sampled at the low-rate step, from the record the
+  // Gaussian prediction plans (as the program does): extended until the
+  // bands from 250 Hz to 1 kHz meet 1 dB.
+  const double h     = 76.8e-6;
+  const auto   bands = analysis::third_octave_bands(250., 1000.);
+  const unsigned int gaussian_record =
+    analysis::samples_for_error(h, bands, 8, 1., 100, 10000000); // the closed form
+  analysis::BandRun run;
+  run.time_step     = h;
+  run.f_low         = 100.;
+  run.f_high        = 1000.;
+  run.longest_steps = 400000;
+  std::mt19937                     random(11);
+  std::normal_distribution<double> normal(0., 1.);
+  std::exponential_distribution<double> on_off(1. / 0.05); // 50 ms on and off, on average
+  for (const bool gated : {false, true})
+    {
+      std::vector<double> x(run.longest_steps);
+      bool                on = true;
+      double              switch_at = on_off(random);
+      for (std::size_t n = 0; n < x.size(); ++n)
+        {
+          if (gated && n * h > switch_at)
+            {
+              on = !on;
+              switch_at += on_off(random);
+            }
+          x[n] = on ? normal(random) : 0.01 * normal(random);
+        }
+      unsigned int N = gaussian_record, rounds = 0;
+      for (;; ++rounds)
+        {
+          const auto s = analysis::welch_band_spectrum(
+            std::vector<double>(x.begin(), x.begin() + N), h, 1., 100., 1000., 8);
+          const unsigned int more = analysis::more_steps_for_target(spectra, run, s, s, N);
+          if (more == 0)
+            {
+              double worst = 0.;
+              for (std::size_t b = 0; b < s.bands.size(); ++b)
+                if (s.bands[b].nominal >= 250.)
+                  worst = std::max(worst, s.standard_error[b]);
+              BOOST_TEST_MESSAGE((gated ? "gated" : "Gaussian")
+                                 << " noise: extended to " << N << " samples in " << rounds
+                                 << " rounds (the Gaussian prediction " << gaussian_record
+                                 << "), largest standard error " << worst << " dB");
+              BOOST_TEST(worst <= 1.);
+              break;
+            }
+          BOOST_TEST_REQUIRE(N + more <= run.longest_steps);
+          N += more;
+          BOOST_TEST_REQUIRE(rounds < 6u);
+        }
+      if (gated)
+        BOOST_TEST(N > 1.5 * gaussian_record);
+      else
+        BOOST_TEST(N < 1.6 * gaussian_record); // the plan, or a round of the 10% margin
+    }
+
+  // At its longest the run stops, met or not; nothing asked of no record.
+  run.longest_steps = 3000;
+  std::vector<double> short_record(2000);
+  for (auto &v : short_record)
+    v = normal(random);
+  const auto s = analysis::welch_band_spectrum(short_record, h, 1., 100., 1000., 8);
+  BOOST_TEST(analysis::more_steps_for_target(spectra, run, s, s, 2000) == 1000u);
+  BOOST_TEST(analysis::more_steps_for_target(spectra, run, s, s, 3000) == 0u);
+  BOOST_TEST(analysis::more_steps_for_target(spectra, run, s, s, 0) == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

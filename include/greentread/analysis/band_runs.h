@@ -34,7 +34,25 @@ namespace greentread
       /// The target is not met, by the prediction, within the longest
       /// distance allowed ('Spectra/Longest distance').
       bool target_out_of_reach = false;
+      /// The most steps the run may extend to while its observed standard
+      /// errors miss the target ('Spectra/Extend runs'); 0: no extension.
+      unsigned int longest_steps = 0;
     };
+
+    /**
+     * @brief How many more steps a run of @p steps_done steps needs so that
+     * the standard errors of @p stress and @p force (their spectra so far)
+     * meet 'Spectra/Standard error target' in the bands @p run gives, from
+     * 'Spectra/Target from' up: 0 if they do, or if the run is at its
+     * longest_steps. Otherwise the record the worst band needs (its error
+     * falls as one over the square root of the record), 5% beyond it so
+     * that the next check, of a scatter that is itself an estimate, is
+     * likely to pass, and at most longest_steps.
+     */
+    unsigned int
+    more_steps_for_target(const SpectraParameters &spectra, const BandRun &run,
+                          const BandSpectrum &stress, const BandSpectrum &force,
+                          unsigned int steps_done);
 
     /**
      * @brief The runs of one road at speed @p speed [m/s]: the run at the

@@ -24,6 +24,11 @@ namespace greentread
       double low_bands_up_to    = 1000.;
       double low_band_time_step = 76.8e-6;
       double longest_distance   = 50.;
+      /// Runs roll on until their observed standard errors meet the target
+      /// (at most longest_distance and longest_extension times the plan).
+      bool extend_runs = true;
+      /// The longest record a run extends to, as a multiple of its planned one.
+      static constexpr double longest_extension = 3.;
       /// The reporting cell along x and across y [m]; 0: the Green's-function rectangle.
       double reporting_along = 0., reporting_across = 0.;
 
