@@ -20,7 +20,9 @@ check_saved_stages() {
 # the saved stages (those of $saved, and of its coarser_section/ if there);
 # its screen output goes to $work/NAME.log and its outputs to $work/NAME/.
 # Fails unless both stages (the Green's functions and the patch model) were
-# reused. `saved=DIR run_saved ...` takes another directory's stages.
+# reused. `saved=DIR run_saved ...` takes another directory's stages. Every
+# run rolls its planned record ('Spectra/Extend runs' = false): the studies
+# compare runs over the same road and record.
 run_saved() {
   local name=$1
   shift
@@ -29,7 +31,8 @@ run_saved() {
   cp "$saved"/*_model.h5 "$work/$name"/ 2>/dev/null || true
   # The error bars' coarser section, if the main job saved its stages.
   [[ -d "$saved/coarser_section" ]] && cp -r "$saved/coarser_section" "$work/$name"/
-  "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" "$@" \
+  "$program" --set "Output directory=$work/$name" --set "Rolling/Frames=1" \
+    --set "Spectra/Extend runs=false" "$@" \
     > "$work/$name.log" 2>&1 || { echo "run $name failed:"; tail -5 "$work/$name.log"; exit 1; }
   if (( $(grep -c "Reusing" "$work/$name.log") < 2 )); then
     echo "run $name did not reuse both saved stages (the Green's functions and the patch model):" >&2

@@ -107,7 +107,8 @@ namespace
       "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
       "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=sinusoid\" --set "
       "\"Road/Sinusoid/Amplitude=0.000005\" --set \"Road/Sinusoid/Wavelength=0.04\" --set "
-      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" " +
+      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" "
+      "--set \"Spectra/Extend runs=false\" " +
       settings + " > \"" + (run.dir / "screen.txt").string() + "\" 2>&1";
     const int     status = std::system(command.c_str());
     std::ifstream screen(run.dir / "screen.txt");
