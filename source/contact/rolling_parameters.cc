@@ -32,7 +32,9 @@ namespace greentread
         prm.declare_entry("Direct kernel length", "0", dealii::Patterns::Integer(0),
                           "Steps kept by 'Convolution/Method' = direct (0: the whole run).");
         prm.declare_entry("Frames", "40", dealii::Patterns::Integer(1, 10000),
-                          "Contact-stress maps written per run (VTU time series).");
+                          "Contact-stress maps written per run (VTU time series), evenly over its planned "
+                          "record; a run rolled on past it ('Spectra/Extend runs') keeps their spacing, "
+                          "so it writes more.");
         prm.declare_entry("Stress reference", "100", base::RangePattern::positive("Pa"),
                           "sigma0 of L_f = 20 log10(|sigma| / sigma0), Eq. (52): the paper "
                           "gives 10^2 (printed N/m; a stress is in N/m^2 = Pa).");
