@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 /**
  * @file
@@ -145,17 +146,26 @@ namespace greentread
         band_run.longest_steps, std::floor(patch_road.usable_length() / (V * dt) * (1. + 1e-9)));
       if (setup.convolution == convolution::Method::direct)
         extensible.longest_steps = 0;
+      const auto stress_spectrum = [&] {
+        return analysis::welch_band_spectrum(centre, dt, rolling.stress_reference, 100., top_band,
+                                             spectra.lines_per_segment);
+      };
+      const auto force_spectrum = [&] {
+        return analysis::welch_band_spectrum(force, dt, 1., 100., top_band,
+                                             spectra.lines_per_segment);
+      };
+      // The spectra of the last check, when it ended the run: the run's own.
+      std::optional<std::pair<analysis::BandSpectrum, analysis::BandSpectrum>> final_spectra;
       std::string extended;
       const auto  more_steps = [&](const unsigned int done) -> unsigned int {
         if (extensible.longest_steps <= done)
           return 0;
-        const unsigned int more = analysis::more_steps_for_target(
-          spectra, extensible,
-          analysis::welch_band_spectrum(centre, dt, rolling.stress_reference, 100., top_band,
-                                        spectra.lines_per_segment),
-          analysis::welch_band_spectrum(force, dt, 1., 100., top_band, spectra.lines_per_segment),
-          done);
-        if (more > 0)
+        auto               stress_so_far = stress_spectrum(), force_so_far = force_spectrum();
+        const unsigned int more =
+          analysis::more_steps_for_target(spectra, extensible, stress_so_far, force_so_far, done);
+        if (more == 0)
+          final_spectra.emplace(std::move(stress_so_far), std::move(force_so_far));
+        else
           {
             extended += (extended.empty() ? "" : ", ") +
                         format_printf("%.3g", (done + more) * V * dt) + " m";
@@ -188,10 +198,10 @@ namespace greentread
       analysis::RunSpectrum spectra_of_run{road_name, speed_kmh, {}, {}, centre, force, dt};
       if (write_outputs)
         {
-          spectra_of_run.spectrum = analysis::welch_band_spectrum(
-            centre, dt, rolling.stress_reference, 100., top_band, spectra.lines_per_segment);
-          spectra_of_run.force_spectrum = analysis::welch_band_spectrum(
-            force, dt, 1., 100., top_band, spectra.lines_per_segment);
+          if (!final_spectra)
+            final_spectra.emplace(stress_spectrum(), force_spectrum());
+          spectra_of_run.spectrum       = std::move(final_spectra->first);
+          spectra_of_run.force_spectrum = std::move(final_spectra->second);
         }
       out << "    " << run << ": mean total force " << format_printf("%.4g", result.mean_force)
                 << " N (static " << format_printf("%.4g", equilibrium.q.sum())
