@@ -189,7 +189,7 @@ namespace greentread
       const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
       const fs::path                       h5        = directory / "green_functions.h5";
       std::unique_ptr<periodic::InflatedTyre> tyre;
-      const base::FrequencyResponseMatrix G = green_stage(geometry, h5, green_key, record, tyre);
+      const base::FrequencyResponseMatrix G = green_stage(geometry, green, h5, green_key, record, tyre);
 
       // Stage 4: modal, the patch model (saved too).
       std::optional<CoarserModel> coarser_model;

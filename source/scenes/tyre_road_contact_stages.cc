@@ -25,6 +25,7 @@ namespace greentread
   {
     base::FrequencyResponseMatrix
     TyreRoadContactScene::green_stage(const geometry::GeometryParameters      &tyre_geometry,
+                                      const periodic::GreenParameters         &lines,
                                       const std::filesystem::path             &h5,
                                       const std::string                       &key,
                                       const base::ParameterRecord             &record,
@@ -40,19 +41,19 @@ namespace greentread
       else
         {
           std::cout << "Stages geometry -> fe -> periodic: the Green's functions at "
-                    << green.patch.points_along * green.patch.points_across << " points, 0 to "
-                    << format_number(green.max_frequency) << " Hz (" << green.n_lines()
+                    << lines.patch.points_along * lines.patch.points_across << " points, 0 to "
+                    << format_number(lines.max_frequency) << " Hz (" << lines.n_lines()
                     << " lines)\n";
           // With the ring's own modes, their cut-off is checked against the
           // harmonics as soon as they are chosen, before anything is written.
-          auto harmonic = green.harmonic();
+          auto harmonic = lines.harmonic();
           if (harmonic && patch_model.source == modal::PatchModelSource::fe_modes)
             harmonic->mode_cutoff = 2. * M_PI * patch_model.mode_cutoff;
           tyre = std::make_unique<periodic::InflatedTyre>(tyre_geometry, materials, inflation,
-                                                          green.patch, harmonic);
+                                                          lines.patch, harmonic);
           std::cout << "  " << tyre->patch.describe() << '\n'
                     << (tyre->harmonic ? tyre->harmonic->describe() : std::string());
-          const auto result = periodic::run_green_stage(*tyre, green, key, h5, record, false,
+          const auto result = periodic::run_green_stage(*tyre, lines, key, h5, record, false,
                                               global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;
           std::cout << "  every solve checked: largest backward error "
@@ -145,14 +146,26 @@ namespace greentread
       // the run's are, under coarser_section/.
       geometry::GeometryParameters coarse = geometry;
       coarse.mesh_size *= 2.;
+      // Its direct lines only at 0 and f_max: the static one is its
+      // compliance, which the runs start from, and the top one fits its
+      // residual's relaxation (the fit weighs each line by w^2, so the top
+      // line carries most of it). The lines between only check its E, which
+      // the run's own section does; each costs a set of solves.
+      periodic::GreenParameters lines = green;
+      lines.frequency_step            = green.max_frequency;
       const std::filesystem::path sub = directory / "coarser_section";
       std::filesystem::create_directories(sub);
       const std::string key = periodic::green_stage_key(
-        prm, geometry.geo_file, {{"Geometry/Mesh size", format_printf("%.17g", coarse.mesh_size)}});
+        prm, geometry.geo_file,
+        {{"Geometry/Mesh size", format_printf("%.17g", coarse.mesh_size)},
+         {"Green's functions/Frequency step", format_printf("%.17g", lines.frequency_step)}});
       std::cout << "The ring section's error bar: the section at " << format_number(1e3 * coarse.mesh_size)
-                << " mm ('Geometry/Mesh size' doubled), its own stages in " << sub.string() << '\n';
+                << " mm ('Geometry/Mesh size' doubled), its direct lines at 0 and "
+                << format_number(lines.max_frequency) << " Hz, its own stages in " << sub.string()
+                << '\n';
       std::unique_ptr<periodic::InflatedTyre> tyre;
-      const base::FrequencyResponseMatrix     G = green_stage(coarse, sub / "green_functions.h5", key, record, tyre);
+      const base::FrequencyResponseMatrix     G =
+        green_stage(coarse, lines, sub / "green_functions.h5", key, record, tyre);
       CoarserSection section{modal_stage(coarse, G, key, sub, record, tyre.get()),
                              synthesis::static_line(G), coarse.mesh_size,
                              analysis::richardson_factor(2., analysis::ring_section_order)};

@@ -206,14 +206,16 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
   // Two runs of the fixture's road, one rate, 1.1 m (44 ms, within the
   // estimates' window of 69 ms, so each level is the whole record): the
   // default section with the ring section's estimate, and on its own the
-  // section with 'Geometry/Mesh size' doubled, on the stages the main job
-  // saved in coarser_section/ (which must be reused: they are what a run of
-  // that section computes).
+  // section with 'Geometry/Mesh size' doubled (and its direct lines at 0
+  // and 4 kHz only, as the error bar computes them), on the stages the main
+  // job saved in coarser_section/ (which must be reused: they are what a
+  // run of that section computes).
   const Run fine_run = run_on_saved_stages(
     "ring-section", stages, "--set \"Spectra/Low bands up to=0\" --set \"Error bars/Estimates=ring section\"");
   const Run coarse_run = run_on_saved_stages("coarser-section", stages / "coarser_section",
                                              "--set \"Spectra/Low bands up to=0\" --set \"Error "
-                                             "bars/Estimates=\" --set \"Geometry/Mesh size=0.016\"");
+                                             "bars/Estimates=\" --set \"Geometry/Mesh size=0.016\" "
+                                             "--set \"Green's functions/Frequency step=4000\"");
   BOOST_TEST(fine_run.reused == 4u);   // both stages, and both of the coarser section
   BOOST_TEST(coarse_run.reused == 2u); // the coarser section's, as its own
 

@@ -53,12 +53,13 @@ namespace greentread
 
     private:
       /// Stages geometry, fe, periodic: the Green's functions of the tyre of
-      /// @p tyre_geometry, read from @p h5 when its key is @p key, computed
-      /// and saved otherwise. When it computes them, the inflated tyre it
-      /// built is left in @p tyre, for the modal stage.
+      /// @p tyre_geometry at the lines of @p lines, read from @p h5 when its
+      /// key is @p key, computed and saved otherwise. When it computes them,
+      /// the inflated tyre it built is left in @p tyre, for the modal stage.
       /// Implemented, with the modal stage, in tyre_road_contact_stages.cc.
       base::FrequencyResponseMatrix
       green_stage(const geometry::GeometryParameters &tyre_geometry,
+                  const periodic::GreenParameters &lines,
                   const std::filesystem::path &h5, const std::string &key,
                   const base::ParameterRecord             &record,
                   std::unique_ptr<periodic::InflatedTyre> &tyre) const;
