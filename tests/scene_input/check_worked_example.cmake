@@ -50,16 +50,21 @@ if(NOT record MATCHES "my_study/my_tyre.geo" OR NOT record MATCHES "my_study/my_
   message(FATAL_ERROR "the run did not record the files beside the scene file: ${record}")
 endif()
 file(REMOVE_RECURSE ${base})
-# The mean contact force over the 2 m run at the scene's step carries the
-# static load (equilibrium of the mean): measured 603.8 N against 600 N
-# (0.63%); the bound is 2%. Its line, by name: the runs print side by side,
-# and the low-rate run's (the coarse model's at a coarser step) may come
-# first.
+# The mean contact force over the run at the scene's step carries the
+# static load. Not exactly: the rim is held at the indentation that carries
+# 600 N where the run starts ('Rolling/Static load'), so the mean moves with
+# the texture under the path. On this 0.8 m texture file the mean over
+# 0.1 m stretches of the run goes from 580 to 638 N (the fe-modes route, AMD
+# EPYC of family 26, 2026-12-02), and over the whole rolled-on record
+# (0.685 m) it measured 616.6 N here (2.8%) and 603.8 N (0.63%) on an Intel
+# Xeon, whose identified model differs in its last digits. The bound is 5%.
+# Its line, by name: the runs print side by side, and the low-rate run's
+# (the coarse model's at a coarser step) may come first.
 if(NOT out MATCHES "my_road_50kmh: mean total force ([0-9.]+) N \\(static 600 N\\)")
   message(FATAL_ERROR "no mean total force in the output:\n${out}")
 endif()
 set(mean ${CMAKE_MATCH_1})
-if(mean LESS 588 OR mean GREATER 612)
-  message(FATAL_ERROR "mean total force ${mean} N is not within 2% of the static load, 600 N")
+if(mean LESS 570 OR mean GREATER 630)
+  message(FATAL_ERROR "mean total force ${mean} N is not within 5% of the static load, 600 N")
 endif()
 message(STATUS "the worked example ran from ${base}/elsewhere:\n${out}")
