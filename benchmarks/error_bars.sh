@@ -15,7 +15,7 @@
 # bands the estimates cover), the bands within a factor 2, and the ratio of
 # the rms over the bands (a single band's difference can pass through zero).
 #
-#   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] bash benchmarks/error_bars.sh \
+#   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] [COARSER_CUTOFF=DIR] bash benchmarks/error_bars.sh \
 #     [output directory of the main job] [program] [cases] [discretisations]
 #
 # cases: any of "default texture-file load" (default: all three):
@@ -28,7 +28,11 @@
 #   mode_cutoff needs FINER_CUTOFF: the output directory of a run of the
 #   program with 'Patch model/Mode cutoff' = 10000 on a copy of the main
 #   job's green_functions.h5 ('Error bars/Estimates' empty and one short
-#   run, as doc/benchmarks.md gives it: about 5 minutes).
+#   run, as doc/benchmarks.md gives it: about 5 minutes). With
+#   COARSER_CUTOFF, the same with 'Mode cutoff' = 6000, each case also rolls
+#   at 6 kHz with its own estimate (from 4.5 kHz), and the script prints how
+#   the levels converge over 4.5, 6, 8 and 10 kHz, and the estimate a
+#   third level would give (the observed ratio of successive differences).
 #   ring_section needs FINER_SECTION: the output directory of a run with
 #   'Geometry/Mesh size' = 0.004 (the same way: about 20 minutes), and the
 #   main job's output must hold its coarser_section/ (the default 'Error
@@ -53,6 +57,11 @@ needs_stages() {
 }
 needs_stages ring_section "${FINER_SECTION:-}" FINER_SECTION
 needs_stages mode_cutoff "${FINER_CUTOFF:-}" FINER_CUTOFF
+if [[ -n "${COARSER_CUTOFF:-}" && ! -f "$COARSER_CUTOFF/green_functions.h5" ]]; then
+  echo "error_bars.sh: COARSER_CUTOFF='$COARSER_CUTOFF' holds no green_functions.h5:" \
+       "the output directory of the run with 'Patch model/Mode cutoff' = 6000 (this script's header)" >&2
+  exit 1
+fi
 if [[ " $discretisations " == *" ring_section "* && ! -f "$saved/coarser_section/green_functions.h5" ]]; then
   echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
        "default 'Error bars/Estimates' first" >&2
@@ -89,7 +98,42 @@ run_case() {
   [[ " $discretisations " == *" mode_cutoff "* ]] &&
     saved=$FINER_CUTOFF run_saved "${name}_mode_cutoff" "${common[@]}" \
       --set "Error bars/Estimates=" --set "Patch model/Mode cutoff=10000"
+  [[ " $discretisations " == *" mode_cutoff "* && -n "${COARSER_CUTOFF:-}" ]] &&
+    saved=$COARSER_CUTOFF run_saved "${name}_cutoff_6k" "${common[@]}" \
+      --set "Error bars/Estimates=mode cutoff" --set "Patch model/Mode cutoff=6000"
   return 0
+}
+
+# cutoff_convergence NAME: with COARSER_CUTOFF, the mode cut-off's four levels
+# (4.5, 6, 8 and 10 kHz) of case NAME: the rms over the bands from 250 Hz of
+# the successive level differences, and how they fall from one step of the
+# cut-off to the next. Each run's estimate is its factor (the run prints it)
+# times the difference from its coarser level, so that difference is the
+# estimate over the factor.
+cutoff_convergence() {
+  local name=$1 quantity f8 f6
+  f8=$(sed -n "s/.*the mode cut-off's error bar:.* the estimate is \([0-9.e+-]*\) times.*/\1/p" "$work/${name}_estimated.log")
+  f6=$(sed -n "s/.*the mode cut-off's error bar:.* the estimate is \([0-9.e+-]*\) times.*/\1/p" "$work/${name}_cutoff_6k.log")
+  for quantity in spectra spectra_force; do
+    awk -F, -v f8="$f8" -v f6="$f6" -v q="$quantity" '
+      FNR == 1 { file++ }
+      /^road,/ { for (i = 1; i <= NF; i++) if ($i == "mode_cutoff_dB") c[file] = i }
+      /^[a-zA-Z0-9_.\/-]+,[0-9.]+,[0-9]/ && $3 >= 250 {
+        if (file == 1) { l8[$3] = $4; e8[$3] = $(c[1]) }
+        else if (file == 2) { e6[$3] = $(c[2]) }
+        else l10[$3] = $4
+      }
+      END {
+        for (k in l8) {
+          if (e8[k] == "" || e6[k] == "" || !(k in l10)) continue
+          n++; d1 += (e6[k] / f6)^2; d2 += (e8[k] / f8)^2; d3 += (l8[k] - l10[k])^2
+        }
+        d1 = sqrt(d1 / n); d2 = sqrt(d2 / n); d3 = sqrt(d3 / n)
+        printf "%s.csv, the mode cut-off'"'"'s levels (%d bands, rms): |L4.5 - L6| %.4f dB, |L6 - L8| %.4f dB, |L8 - L10| %.4f dB; falls %.2f and %.2f times; ", q, n, d1, d2, d3, d1 / d2, d2 / d3
+        printf "the estimate from the 4.5-6-8 kHz convergence, |L6 - L8| / (%.2f - 1), against |L8 - L10|: ratio %s\n", d1 / d2, (d1 > d2 ? sprintf("%.2f", d2 / (d1 / d2 - 1) / d3) : "none (no convergence)")
+      }' "$work/${name}_estimated/$quantity.csv" "$work/${name}_cutoff_6k/$quantity.csv" \
+         "$work/${name}_mode_cutoff/$quantity.csv"
+  done
 }
 
 compare() {
@@ -129,6 +173,10 @@ compare() {
         }' "$work/${name}_estimated/$quantity.csv" "$work/${name}_${refined}/$quantity.csv"
     done
   done
+  if [[ " $discretisations " == *" mode_cutoff "* && -n "${COARSER_CUTOFF:-}" ]]; then
+    echo
+    cutoff_convergence "$name"
+  fi
 }
 
 for c in $cases; do
