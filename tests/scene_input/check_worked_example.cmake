@@ -56,8 +56,8 @@ file(REMOVE_RECURSE ${base})
 # the texture under the path. On this 0.8 m texture file the mean over
 # 0.1 m stretches of the run goes from 580 to 638 N (the fe-modes route, AMD
 # EPYC of family 26, 2026-12-02), and over the whole rolled-on record
-# (0.685 m) it measured 616.6 N here (2.8%) and 603.8 N (0.63%) on an Intel
-# Xeon, whose identified model differs in its last digits. The bound is 5%.
+# (0.685 m) it measured 616.6 N on that machine (2.8%), and 603.8 N (0.63%)
+# when this check was written, before the runs rolled on. The bound is 5%.
 # Its line, by name: the runs print side by side, and the low-rate run's
 # (the coarse model's at a coarser step) may come first.
 if(NOT out MATCHES "my_road_50kmh: mean total force ([0-9.]+) N \\(static 600 N\\)")
