@@ -62,6 +62,9 @@ if [[ -n "${COARSER_CUTOFF:-}" && ! -f "$COARSER_CUTOFF/green_functions.h5" ]]; 
        "the output directory of the run with 'Patch model/Mode cutoff' = 6000 (this script's header)" >&2
   exit 1
 fi
+# The mode cut-off's four levels: with mode_cutoff and COARSER_CUTOFF.
+four_levels=false
+[[ " $discretisations " == *" mode_cutoff "* && -n "${COARSER_CUTOFF:-}" ]] && four_levels=true
 if [[ " $discretisations " == *" ring_section "* && ! -f "$saved/coarser_section/green_functions.h5" ]]; then
   echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
        "default 'Error bars/Estimates' first" >&2
@@ -98,7 +101,7 @@ run_case() {
   [[ " $discretisations " == *" mode_cutoff "* ]] &&
     saved=$FINER_CUTOFF run_saved "${name}_mode_cutoff" "${common[@]}" \
       --set "Error bars/Estimates=" --set "Patch model/Mode cutoff=10000"
-  [[ " $discretisations " == *" mode_cutoff "* && -n "${COARSER_CUTOFF:-}" ]] &&
+  $four_levels &&
     saved=$COARSER_CUTOFF run_saved "${name}_cutoff_6k" "${common[@]}" \
       --set "Error bars/Estimates=mode cutoff" --set "Patch model/Mode cutoff=6000"
   return 0
@@ -110,10 +113,18 @@ run_case() {
 # cut-off to the next. Each run's estimate is its factor (the run prints it)
 # times the difference from its coarser level, so that difference is the
 # estimate over the factor.
+# cutoff_factor LOG: the mode cut-off estimate's factor that the run of LOG printed.
+cutoff_factor() {
+  local f
+  f=$(sed -n "s/.*the mode cut-off's error bar:.* the estimate is \([0-9.e+-]*\) times.*/\1/p" "$1")
+  [[ -n "$f" ]] || { echo "error_bars.sh: $1 prints no mode cut-off factor" >&2; exit 1; }
+  echo "$f"
+}
+
 cutoff_convergence() {
   local name=$1 quantity f8 f6
-  f8=$(sed -n "s/.*the mode cut-off's error bar:.* the estimate is \([0-9.e+-]*\) times.*/\1/p" "$work/${name}_estimated.log")
-  f6=$(sed -n "s/.*the mode cut-off's error bar:.* the estimate is \([0-9.e+-]*\) times.*/\1/p" "$work/${name}_cutoff_6k.log")
+  f8=$(cutoff_factor "$work/${name}_estimated.log")
+  f6=$(cutoff_factor "$work/${name}_cutoff_6k.log")
   for quantity in spectra spectra_force; do
     awk -F, -v f8="$f8" -v f6="$f6" -v q="$quantity" '
       FNR == 1 { file++ }
@@ -173,7 +184,7 @@ compare() {
         }' "$work/${name}_estimated/$quantity.csv" "$work/${name}_${refined}/$quantity.csv"
     done
   done
-  if [[ " $discretisations " == *" mode_cutoff "* && -n "${COARSER_CUTOFF:-}" ]]; then
+  if $four_levels; then
     echo
     cutoff_convergence "$name"
   fi
