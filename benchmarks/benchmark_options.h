@@ -14,8 +14,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -33,8 +33,9 @@ namespace benchmark
   {
   public:
     explicit Checks(std::string name)
-      : name(std::move(name))
-    {}
+        : name(std::move(name))
+    {
+    }
 
     /// Asserts @p measured <= @p bound; @p what names the figure and its reference.
     void
@@ -58,8 +59,11 @@ namespace benchmark
 
   private:
     void
-    report(const std::string &what, const double measured, const char *relation,
-           const double bound, const bool pass)
+    report(const std::string &what,
+           const double       measured,
+           const char        *relation,
+           const double       bound,
+           const bool         pass)
     {
       const bool ok = pass && std::isfinite(measured);
       std::printf("check %s: %.3g %s %.3g: %s\n", what.c_str(), measured, relation, bound,
@@ -115,8 +119,7 @@ namespace benchmark
         }
       else
         {
-          std::cerr << "usage: " << name
-                    << " [--quick] [--output DIR] [--model FILE] [--part N]\n";
+          std::cerr << "usage: " << name << " [--quick] [--output DIR] [--model FILE] [--part N]\n";
           std::exit(2);
         }
     options.output = greentread::base::prepare_output_directory(options.output.string());

@@ -55,15 +55,15 @@ namespace
     // The section's static harmonic solves are part of its set-up, so the time
     // is that of the set-up (meshing, assembly, inflation) and the solve.
     const auto                   start = std::chrono::steady_clock::now();
-    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                      fe::InflationParameters(), request,
-                                      periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
+    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
+                                      request, periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
     periodic::HarmonicGreenSolver solver(*tyre.harmonic);
     periodic::SolveDiagnostics    diagnostics;
-    const Eigen::MatrixXcd        g     = solver.solve(0., diagnostics);
-    StaticGreen                result;
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.G       = g.real();
+    const Eigen::MatrixXcd        g = solver.solve(0., diagnostics);
+    StaticGreen                   result;
+    result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.G = g.real();
     for (const auto &p : tyre.patch.points)
       result.points.push_back({{p.x, p.y, p.radius}});
     return result;
@@ -74,12 +74,13 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto options = benchmark::parse(argc, argv, "contact_grid_split");
+  const auto                options = benchmark::parse(argc, argv, "contact_grid_split");
   const std::vector<double> levels =
     options.quick ? std::vector<double>{0.02} : std::vector<double>{0.008, 0.004};
   const fe::MaterialParameters       materials;
   const geometry::GeometryParameters geometry;
-  const contact::ElasticLayer layer{materials.tread_E, materials.tread_nu, geometry.tread_thickness};
+  const contact::ElasticLayer        layer{materials.tread_E, materials.tread_nu,
+                                    geometry.tread_thickness};
 
   std::printf("Static Green's functions of the default tyre, 60 x 80 mm patch: the finite "
               "elements' 5 x 6 rectangles split 2 x 2 (the tread as a %.0f mm layer below "
@@ -88,14 +89,16 @@ main(int argc, char **argv)
   std::ofstream csv(options.output / "contact_grid_split.csv");
   csv << "mesh_size,model,driving_um_per_N,along_x_um_per_N,across_y_um_per_N,"
          "worst_driving_difference,matrix_difference\n";
-  std::printf("| section | model | centre driving point [um/N] | transfer along x | transfer across y "
-              "| worst driving point difference | matrix difference (Frobenius) | set-up and static solve [s] |\n"
-              "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  std::printf(
+    "| section | model | centre driving point [um/N] | transfer along x | transfer across y "
+    "| worst driving point difference | matrix difference (Frobenius) | set-up and static solve "
+    "[s] |\n"
+    "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   double split_difference = NAN; // on the finest section, Frobenius, relative
   for (const auto &level : levels)
     {
-      const StaticGreen coarse = static_green(level, 5, 6);
-      const StaticGreen fine   = static_green(level, 10, 12);
+      const StaticGreen          coarse = static_green(level, 5, 6);
+      const StaticGreen          fine   = static_green(level, 10, 12);
       const contact::ContactGrid grid(coarse.points, 2, layer);
       // The finite elements' 10 x 12 points in the grid's order.
       std::vector<unsigned int> order(grid.n_points());
@@ -118,20 +121,20 @@ main(int argc, char **argv)
         for (unsigned int q = 0; q < grid.n_points(); ++q)
           reference(p, q) = fine.G(order[p], order[q]);
       const unsigned int centre = (grid.nx / 2) * grid.ny + grid.ny / 2;
-      const auto         row    = [&](const char *name, const Eigen::MatrixXd &m, const double seconds) {
-        const double worst = ((m.diagonal() - reference.diagonal()).array() /
-                              reference.diagonal().array())
-                               .abs()
-                               .maxCoeff();
+      const auto row = [&](const char *name, const Eigen::MatrixXd &m, const double seconds) {
+        const double worst =
+          ((m.diagonal() - reference.diagonal()).array() / reference.diagonal().array())
+            .abs()
+            .maxCoeff();
         const double frob = (m - reference).norm() / reference.norm();
-        std::printf("| %.0f mm | %s | %.4g | %.4g | %.4g | %s | %s | %.3g |\n",
-                    1e3 * level, name, 1e6 * m(centre, centre),
-                    1e6 * m(centre, centre + grid.ny), 1e6 * m(centre, centre + 1),
+        std::printf("| %.0f mm | %s | %.4g | %.4g | %.4g | %s | %s | %.3g |\n", 1e3 * level, name,
+                    1e6 * m(centre, centre), 1e6 * m(centre, centre + grid.ny),
+                    1e6 * m(centre, centre + 1),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * worst).c_str(),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * frob).c_str(), seconds);
-        csv << level << ',' << name << ','
-            << 1e6 * m(centre, centre) << ',' << 1e6 * m(centre, centre + grid.ny) << ','
-            << 1e6 * m(centre, centre + 1) << ',' << worst << ',' << frob << '\n';
+        csv << level << ',' << name << ',' << 1e6 * m(centre, centre) << ','
+            << 1e6 * m(centre, centre + grid.ny) << ',' << 1e6 * m(centre, centre + 1) << ','
+            << worst << ',' << frob << '\n';
       };
       row("finite elements, 10 x 12", reference, fine.seconds);
       const Eigen::MatrixXd split = grid.compliance(coarse.G);

@@ -32,10 +32,10 @@
 
 #include <greentread/base/blas_kernels.h>
 #include <greentread/base/exceptions.h>
+#include <greentread/base/frequency_response.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/plot.h>
-#include <greentread/base/frequency_response.h>
 #include <greentread/scenes/scene.h>
 
 #include <algorithm>
@@ -96,7 +96,8 @@ namespace
     const auto fields_of = [](const std::string &line) {
       std::vector<std::string> fields;
       std::size_t              start = 0;
-      for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+      for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos;
+           start = comma + 1)
         fields.push_back(line.substr(start, comma - start));
       fields.push_back(line.substr(start));
       return fields;
@@ -216,8 +217,8 @@ namespace
     for (const auto &[label, j] : pairs)
       for (unsigned int l = 0; l < n_lines; ++l)
         {
-          const auto gc = at(coarse, !fine_sparser, l, centre, j);
-          const auto gf = at(fine, fine_sparser, l, centre, j);
+          const auto   gc         = at(coarse, !fine_sparser, l, centre, j);
+          const auto   gf         = at(fine, fine_sparser, l, centre, j);
           const double difference = std::abs(gc - gf) / std::abs(gf);
           if (l == 0)
             static_worst = std::max(static_worst, difference);
@@ -294,10 +295,10 @@ main(int argc, char **argv)
         }
       else
         {
-          rings  = {{"default", "default section (quartic, 8 mm)", {}},
-                    {"converged",
-                     "section twice as fine (quartic, 4 mm)",
-                     {"Geometry/Mesh size=0.004", "Green's functions/Frequency step=1000"}}};
+          rings = {{"default", "default section (quartic, 8 mm)", {}},
+                   {"converged",
+                    "section twice as fine (quartic, 4 mm)",
+                    {"Geometry/Mesh size=0.004", "Green's functions/Frequency step=1000"}}};
           // Both rings over the same records: no run extends to its own errors.
           shared = {"Spectra/Extend runs=false"};
         }
@@ -317,9 +318,10 @@ main(int argc, char **argv)
         }
       if (options.part == 1)
         return 0;
-      const auto &a = options.output / rings[0].name;
-      const auto &b = options.output / rings[1].name;
-      const GreenDifferences green = compare_green(a / "green_functions.h5", b / "green_functions.h5");
+      const auto            &a = options.output / rings[0].name;
+      const auto            &b = options.output / rings[1].name;
+      const GreenDifferences green =
+        compare_green(a / "green_functions.h5", b / "green_functions.h5");
 
       std::printf("\nSpectra: the finer section's highest band, and the largest band-level "
                   "difference between the sections in the bands from 100 Hz to 5 kHz within 20 dB "
@@ -341,15 +343,15 @@ main(int argc, char **argv)
       for (const auto &run : runs)
         {
           const auto kind = [&](const std::string &prefix) {
-            const auto d = compare_levels(read_levels(a / (prefix + run + ".csv")),
-                                          read_levels(b / (prefix + run + ".csv")));
-            spectra_worst = std::max(spectra_worst, d.worst[0]);
+            const auto d     = compare_levels(read_levels(a / (prefix + run + ".csv")),
+                                              read_levels(b / (prefix + run + ".csv")));
+            spectra_worst    = std::max(spectra_worst, d.worst[0]);
             std::string text = std::to_string(d.highest.first) + " Hz, " +
                                format_printf("%.1f", d.highest.second) + " dB";
             for (unsigned int r = 0; r < 2; ++r)
               text += d.worst_band[r] == 0 ? std::string(" | none") :
-                                             " | " + format_printf("%.2f", d.worst[r]) +
-                                               " dB (" + std::to_string(d.worst_band[r]) + " Hz)";
+                                             " | " + format_printf("%.2f", d.worst[r]) + " dB (" +
+                                               std::to_string(d.worst_band[r]) + " Hz)";
             return text;
           };
           std::printf("| %s | %s | %s |\n", run.c_str(), kind("spectrum_").c_str(),

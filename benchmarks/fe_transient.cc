@@ -33,8 +33,8 @@
 //   fe_transient [--quick] [--output DIR] [--part N]   (N = 1..5; default: all)
 
 #include "benchmark_options.h"
-#include <greentread/reference/transient_comparison.h>
 #include <greentread/base/exceptions.h>
+#include <greentread/reference/transient_comparison.h>
 
 #include <algorithm>
 #include <chrono>
@@ -79,10 +79,10 @@ main(int argc, char **argv)
         if (wanted(1))
           {
             reference::TransientCaseSetup structure = setup;
-            structure.proportional_damping         = proportional;
-            structure.max_frequency                = 0.;
+            structure.proportional_damping          = proportional;
+            structure.max_frequency                 = 0.;
             const reference::TransientCase study(structure);
-            const char                   *damping = proportional ? "proportional" : "per-layer";
+            const char                    *damping = proportional ? "proportional" : "per-layer";
             std::printf("The structure alone, %s damping (%s):\n%s\n", damping,
                         proportional ? "no inflation, loss factor 0.05 everywhere" :
                                        "the tyre's, inflated",
@@ -138,8 +138,8 @@ main(int argc, char **argv)
 
       // 2. The rolling contact.
       reference::TransientCaseSetup rolling = setup;
-      rolling.patch.points_along           = 4;
-      rolling.patch.points_across          = 3;
+      rolling.patch.points_along            = 4;
+      rolling.patch.points_across           = 3;
       // The mean of a run's total force [N].
       const auto mean = [](const std::vector<double> &f) {
         double sum = 0.;
@@ -180,11 +180,11 @@ main(int argc, char **argv)
                                    const reference::TransientRun &run) {
                 const auto d = reference::compare(run, reference, dt);
                 std::printf("  %-40s %9.2f %11.2e %11.2e %10.2f %10.2f %11.1f %12.3e %10.3f%s\n",
-                            path.c_str(), run.seconds, d.force, d.stress, d.force_band,
-                            d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
+                                  path.c_str(), run.seconds, d.force, d.stress, d.force_band,
+                                  d.stress_band, mean(run.force), run.step_compliance, d.force_rms,
                             run.failed_steps ?
-                              format_printf("  (%g failed steps)", run.failed_steps).c_str() :
-                              "");
+                                    format_printf("  (%g failed steps)", run.failed_steps).c_str() :
+                                    "");
                 std::fflush(stdout);
                 csv << "rolling,per-layer," << road << ',' << path << ',' << modes << ','
                     << 1e6 * dt << ',' << run.seconds << ',' << d.force << ',' << d.stress << ','
@@ -238,15 +238,15 @@ main(int argc, char **argv)
         if (!quick && wanted(part))
           {
             reference::TransientCaseSetup massless = rolling;
-            massless.surface_mass_inward          = true;
+            massless.surface_mass_inward           = true;
             if (part == 5)
               {
                 massless.proportional_damping = true;
                 massless.loss_factor          = 0.1;
               }
-            const char                   *damping = part == 4 ? "per-layer" : "proportional 0.1";
+            const char                    *damping = part == 4 ? "per-layer" : "proportional 0.1";
             const reference::TransientCase moved(massless);
-            const double                  dt = moved.road_time_step();
+            const double                   dt = moved.road_time_step();
             std::printf("\n%u. The tread surface's mass moved inward (massless contact nodes), "
                         "%s, modal-recursive:\n%s\n",
                         part,
@@ -283,7 +283,7 @@ main(int argc, char **argv)
                 std::vector<reference::TransientRun> previous;
                 for (const double fraction : {1., 0.5, 0.25})
                   {
-                    const double                        step = fraction * dt;
+                    const double                         step = fraction * dt;
                     std::vector<reference::TransientRun> runs{moved.reference(road, step)};
                     for (const auto &m : moved_models)
                       runs.push_back(

@@ -82,16 +82,15 @@ namespace
     geometry.mesh_size = level.mesh_size;
     geometry.n_cells   = level.n_cells;
     if (level.crown_refinement > 1)
-      geometry.other_constants =
-        "Crown refinement=" + std::to_string(level.crown_refinement);
+      geometry.other_constants = "Crown refinement=" + std::to_string(level.crown_refinement);
     periodic::PatchRequest request; // the default: 10 x 12 on 60 x 80 mm
     request.load = periodic::PointLoad::tributary_area;
     // The scenes' inflated tyre: mesh, K, M, C, the inflation and Kp.
-    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                      fe::InflationParameters(), request);
-    const auto  &patch  = tyre.patch;
-    const auto   solver = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell,
-                                                    patch);
+    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
+                                      request);
+    const auto                  &patch = tyre.patch;
+    const auto                   solver =
+      periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, patch);
     const unsigned int ny     = patch.points_across;
     const unsigned int centre = (patch.points_along / 2) * ny + ny / 2;
     Result             result;
@@ -180,14 +179,14 @@ namespace
   void
   direction_table(const Level &base, std::ofstream &csv, const bool one_column = false)
   {
-    const unsigned int             crown  = base.crown_refinement;
-    const std::vector<Level>       levels = {base,
-                                             {base.mesh_size / 2, base.n_cells, crown},
-                                             {base.mesh_size, 2 * base.n_cells, crown},
-                                             {base.mesh_size / 2, 2 * base.n_cells, crown}};
-    const char                    *what[4] = {"base", "section halved", "N doubled", "both"};
-    std::vector<Result>            results;
-    const std::vector<double>      zero{0.};
+    const unsigned int        crown   = base.crown_refinement;
+    const std::vector<Level>  levels  = {base,
+                                         {base.mesh_size / 2, base.n_cells, crown},
+                                         {base.mesh_size, 2 * base.n_cells, crown},
+                                         {base.mesh_size / 2, 2 * base.n_cells, crown}};
+    const char               *what[4] = {"base", "section halved", "N doubled", "both"};
+    std::vector<Result>       results;
+    const std::vector<double> zero{0.};
     for (const auto &level : levels)
       {
         results.push_back(run(level, zero, one_column));
@@ -249,8 +248,8 @@ namespace
       {
         const Result c = run(level, frequencies, true);
         print_level(level, c, true);
-        std::printf("%-18s %6s | %10s %10s %10s | %-12s | %s\n", "function", "f [Hz]",
-                    "coarse", "fine", "corrected", "coarse-fine", "corrected-fine  (|g| in um/N)");
+        std::printf("%-18s %6s | %10s %10s %10s | %-12s | %s\n", "function", "f [Hz]", "coarse",
+                    "fine", "corrected", "coarse-fine", "corrected-fine  (|g| in um/N)");
         for (unsigned int q = 0; q < 3; ++q)
           for (std::size_t k = 0; k < frequencies.size(); ++k)
             {
@@ -258,13 +257,13 @@ namespace
               const double scale     = std::abs(f.g[k][q]);
               const double d_coarse  = std::abs(c.g[k][q] - f.g[k][q]) / scale;
               const double d_corr    = std::abs(corrected - f.g[k][q]) / scale;
-              std::printf("%-18s %6.0f | %10.5g %10.5g %10.5g | %11.2f%% | %11.2f%%\n",
-                          names[q], frequencies[k], 1e6 * std::abs(c.g[k][q]), 1e6 * scale,
+              std::printf("%-18s %6.0f | %10.5g %10.5g %10.5g | %11.2f%% | %11.2f%%\n", names[q],
+                          frequencies[k], 1e6 * std::abs(c.g[k][q]), 1e6 * scale,
                           1e6 * std::abs(corrected), 100. * d_coarse, 100. * d_corr);
-              csv << level.mesh_size << ',' << level.n_cells << ',' << level.crown_refinement
-                  << ',' << names[q] << ',' << frequencies[k] << ','
-                  << 1e6 * std::abs(c.g[k][q]) << ',' << 1e6 * scale << ','
-                  << 1e6 * std::abs(corrected) << ',' << d_coarse << ',' << d_corr << '\n';
+              csv << level.mesh_size << ',' << level.n_cells << ',' << level.crown_refinement << ','
+                  << names[q] << ',' << frequencies[k] << ',' << 1e6 * std::abs(c.g[k][q]) << ','
+                  << 1e6 * scale << ',' << 1e6 * std::abs(corrected) << ',' << d_coarse << ','
+                  << d_corr << '\n';
             }
         std::printf("\n");
       }
@@ -276,10 +275,10 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto options = benchmark::parse(argc, argv, "green_mesh_convergence");
-  const std::vector<Level> levels =
-    options.quick ? std::vector<Level>{{0.04, 32}, {0.02, 64}, {0.01, 128}} :
-                    std::vector<Level>{{0.016, 128}, {0.008, 256}, {0.004, 512}};
+  const auto                options = benchmark::parse(argc, argv, "green_mesh_convergence");
+  const std::vector<Level>  levels  = options.quick ?
+                                        std::vector<Level>{{0.04, 32}, {0.02, 64}, {0.01, 128}} :
+                                        std::vector<Level>{{0.016, 128}, {0.008, 256}, {0.004, 512}};
   const std::vector<double> frequencies =
     options.quick ? std::vector<double>{0., 1000.} : std::vector<double>{0., 1000., 2000., 4000.};
   const std::string header = "mesh_size,n_cells,crown_refinement,cell_dofs,"
@@ -343,8 +342,8 @@ main(int argc, char **argv)
     {
       std::printf("\nPart 4. At 0 Hz: the graded 4 mm, N = 512 ring refined in one direction "
                   "at a time, from the centre point's column of g alone.\n\n");
-      Level base             = options.quick ? levels[1] : Level{0.004, 512};
-      base.crown_refinement  = 2;
+      Level base            = options.quick ? levels[1] : Level{0.004, 512};
+      base.crown_refinement = 2;
       std::ofstream split(options.output / "green_mesh_graded_directions.csv");
       split << "refined,mesh_size,n_cells,function,abs_um_per_N\n";
       direction_table(base, split, true);

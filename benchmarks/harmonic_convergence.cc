@@ -63,22 +63,21 @@ namespace
     if (crown > 1)
       geometry.other_constants = "Crown refinement=" + std::to_string(crown);
     periodic::PatchRequest request; // the default: 10 x 12 on 60 x 80 mm
-    request.load = periodic::PointLoad::tributary_area;
-    const auto start = std::chrono::steady_clock::now();
-    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                      fe::InflationParameters(), request,
-                                      periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
-    Result result;
+    request.load                       = periodic::PointLoad::tributary_area;
+    const auto                   start = std::chrono::steady_clock::now();
+    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
+                                      request, periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
+    Result                       result;
     result.setup_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.unknowns  = tyre.section->size();
     result.harmonics = tyre.harmonic->n_harmonics;
     result.tail      = tyre.harmonic->tail_bound;
     periodic::HarmonicGreenSolver solver(*tyre.harmonic);
-    const unsigned int ny = tyre.patch.points_across;
-    const unsigned int c  = (tyre.patch.points_along / 2) * ny + ny / 2;
-    periodic::SolveDiagnostics diagnostics;
-    const auto                 lines = std::chrono::steady_clock::now();
+    const unsigned int            ny = tyre.patch.points_across;
+    const unsigned int            c  = (tyre.patch.points_along / 2) * ny + ny / 2;
+    periodic::SolveDiagnostics    diagnostics;
+    const auto                    lines = std::chrono::steady_clock::now();
     for (const double f : frequencies)
       {
         const auto g = solver.solve(2. * M_PI * f, diagnostics);
@@ -110,9 +109,12 @@ namespace
   /// The functions of each level, its difference from the last (finest)
   /// and, for three levels halving the mesh, the observed order.
   void
-  table(const std::string &title, const std::vector<Level> &levels,
-        const std::vector<Result> &results, const std::vector<double> &frequencies,
-        const bool orders, std::ofstream &csv)
+  table(const std::string         &title,
+        const std::vector<Level>  &levels,
+        const std::vector<Result> &results,
+        const std::vector<double> &frequencies,
+        const bool                 orders,
+        std::ofstream             &csv)
   {
     std::printf("\n%s\n", title.c_str());
     const Result &finest = results.back();
@@ -128,8 +130,8 @@ namespace
               if (l + 1 < levels.size())
                 std::printf(" (%6.2f%%)", 100. * d);
               csv << title << ',' << levels[l].mesh_size << ',' << levels[l].degree << ','
-                  << frequencies[f] << ',' << names[k] << ',' << g.real() << ',' << g.imag()
-                  << ',' << d << '\n';
+                  << frequencies[f] << ',' << names[k] << ',' << g.real() << ',' << g.imag() << ','
+                  << d << '\n';
             }
           if (orders && levels.size() >= 3)
             {
@@ -150,7 +152,9 @@ int
 main(int argc, char **argv)
 {
   const auto options = benchmark::parse(argc, argv, "harmonic_convergence");
-  const auto part    = [&](const unsigned int p) { return options.part == 0 || options.part == p; };
+  const auto part    = [&](const unsigned int p) {
+    return options.part == 0 || options.part == p;
+  };
   const std::vector<double> frequencies =
     options.quick ? std::vector<double>{0.} : std::vector<double>{0., 1000., 2000., 4000.};
   std::ofstream csv(options.output / "harmonic_convergence.csv");
@@ -165,8 +169,8 @@ main(int argc, char **argv)
     {
       for (const auto &level : h)
         results.push_back(run(level, 1, frequencies));
-      table("h-refinement (quadratic elements), crown refinement 1", h, results, frequencies,
-            true, csv);
+      table("h-refinement (quadratic elements), crown refinement 1", h, results, frequencies, true,
+            csv);
       // --quick: the 8 mm quadratic section against the 4 mm one, 11.93%
       // measured (deterministic; bound 1.25x, so that a change of either
       // discretisation shows).
@@ -194,8 +198,8 @@ main(int argc, char **argv)
       for (std::size_t l = 0; l + 1 < graded.size(); ++l)
         by_grading.push_back(run(graded[l], 3, frequencies));
       by_grading.push_back(results.back());
-      table("crown refinement 3 (8 and 4 mm), against the 2 mm quadratic section of part 1",
-            graded, by_grading, frequencies, false, csv);
+      table("crown refinement 3 (8 and 4 mm), against the 2 mm quadratic section of part 1", graded,
+            by_grading, frequencies, false, csv);
     }
   if (part(4) && !options.quick)
     {

@@ -57,10 +57,12 @@ namespace
 
   /// Solver 1: one generalised shift-invert search for all m modes.
   Eigen::VectorXd
-  spectra_generalised(const fe::HarmonicSection &section, const unsigned int n, const double cutoff,
-                      double &residual)
+  spectra_generalised(const fe::HarmonicSection &section,
+                      const unsigned int         n,
+                      const double               cutoff,
+                      double                    &residual)
   {
-    const unsigned int m = synthesis::count_harmonic_modes(section, n, cutoff);
+    const unsigned int                 m = synthesis::count_harmonic_modes(section, n, cutoff);
     const Eigen::SparseMatrix<double>  K = section.stiffness(n);
     const Eigen::SparseMatrix<double> &M = section.mass();
     using Op  = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
@@ -109,15 +111,14 @@ main(int argc, char **argv)
   geometry.degree    = options.quick ? 2 : 4;
   geometry.n_cells   = 64; // only places the points with this method
   periodic::PatchRequest request;
-  request.load = periodic::PointLoad::tributary_area;
-  const double cutoff = 2. * M_PI * (options.quick ? 4000. : 8000.);
-  const std::vector<unsigned int> harmonics =
-    options.quick ? std::vector<unsigned int>{0, 40} :
-                    std::vector<unsigned int>{0, 30, 60, 120, 200, 300};
+  request.load                              = periodic::PointLoad::tributary_area;
+  const double                    cutoff    = 2. * M_PI * (options.quick ? 4000. : 8000.);
+  const std::vector<unsigned int> harmonics = options.quick ?
+                                                std::vector<unsigned int>{0, 40} :
+                                                std::vector<unsigned int>{0, 30, 60, 120, 200, 300};
   const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
-                                    request,
-                                    periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
-  const fe::HarmonicSection &section = *tyre.section;
+                                    request, periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
+  const fe::HarmonicSection   &section = *tyre.section;
   std::printf("The 8 mm section, degree %u: %u unknowns per harmonic; modes to %.0f Hz; one "
               "thread\n\n",
               geometry.degree, section.size(), cutoff / (2. * M_PI));
@@ -132,7 +133,9 @@ main(int argc, char **argv)
     {
       double          r1 = 0.;
       Eigen::VectorXd w1;
-      const double    t1 = seconds_of([&] { w1 = spectra_generalised(section, n, cutoff, r1); });
+      const double    t1 = seconds_of([&] {
+        w1 = spectra_generalised(section, n, cutoff, r1);
+      });
       std::printf("%8u %6ld | %7.2f s, res %7.1e |", n, long(w1.size()), t1, r1);
       csv << n << ',' << w1.size() << ",generalised," << t1 << ',' << r1 << ",0\n";
       total[0] += t1;
@@ -140,9 +143,11 @@ main(int argc, char **argv)
       for (const unsigned int S : {24u, 48u, 96u})
         {
           synthesis::BlochModes modes;
-          const double t = seconds_of([&] { modes = synthesis::harmonic_modes(section, n, cutoff, S); });
-          const double d = largest_difference(modes.omega, w1);
-          worst          = std::max(worst, d);
+          const double          t = seconds_of([&] {
+            modes = synthesis::harmonic_modes(section, n, cutoff, S);
+          });
+          const double          d = largest_difference(modes.omega, w1);
+          worst                   = std::max(worst, d);
           std::printf(" %5.2f s, %6.1e, %5.0e |", t, modes.max_residual, d);
           csv << n << ',' << modes.omega.size() << ",standard S=" << S << ',' << t << ','
               << modes.max_residual << ',' << d << '\n';
@@ -154,11 +159,11 @@ main(int argc, char **argv)
       synthesis::BlochModes own;
       const double          t3 = seconds_of([&] {
         own = synthesis::hermitian_modes(section.stiffness(n).cast<C>(),
-                                         section.damping(n).cast<C>(), section.mass().cast<C>(), n,
-                                         "harmonic " + std::to_string(n), search);
+                                                  section.damping(n).cast<C>(), section.mass().cast<C>(), n,
+                                                  "harmonic " + std::to_string(n), search);
       });
-      const double d3 = largest_difference(own.omega, w1);
-      worst           = std::max(worst, d3);
+      const double          d3 = largest_difference(own.omega, w1);
+      worst                    = std::max(worst, d3);
       std::printf(" %6.2f s, %6.1e, %5.0e\n", t3, own.max_residual, d3);
       csv << n << ',' << own.omega.size() << ",own block Krylov," << t3 << ',' << own.max_residual
           << ',' << d3 << '\n';

@@ -20,20 +20,21 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
-  const auto   options = benchmark::parse(argc, argv, "identification");
-  const benchmark::SyntheticGreen green;
-  const unsigned int n_points = options.quick ? 6 : green.points.size();
-  const unsigned int n_frf    = n_points * n_points;
+  const auto                               options = benchmark::parse(argc, argv, "identification");
+  const benchmark::SyntheticGreen          green;
+  const unsigned int                       n_points = options.quick ? 6 : green.points.size();
+  const unsigned int                       n_frf    = n_points * n_points;
 
   modal::IdentificationParameters parameters; // defaults: N_max 60, eq7, bands auto
   parameters.compare_models = false;
 
   std::printf("Identification benchmark: %u x %u = %u FRFs, 1001 lines to 4 kHz, N_max = %u, "
               "%u threads.\nThe FRFs are sums of %zu known modes (%u below 4 kHz).\n",
-              n_points, n_points, n_frf, parameters.max_modes,
-              dealii::MultithreadInfo::n_threads(), green.frequency.size(),
-              unsigned(std::count_if(green.frequency.begin(), green.frequency.end(),
-                                     [](double f) { return f < 4000.; })));
+              n_points, n_points, n_frf, parameters.max_modes, dealii::MultithreadInfo::n_threads(),
+              green.frequency.size(),
+              unsigned(std::count_if(green.frequency.begin(), green.frequency.end(), [](double f) {
+                return f < 4000.;
+              })));
 
   // The Green's matrix in memory, as the periodic stage would hand it over
   // (not timed).
@@ -55,9 +56,9 @@ main(int argc, char **argv)
             matrix.values[(std::size_t(k) * n_points + j) * n_points + i] = frf.values[k];
       }
 
-  const auto  start  = std::chrono::steady_clock::now();
-  std::size_t reused = 0;
-  const auto  results = modal::identify_pairs(matrix, pairs, parameters, reused);
+  const auto   start   = std::chrono::steady_clock::now();
+  std::size_t  reused  = 0;
+  const auto   results = modal::identify_pairs(matrix, pairs, parameters, reused);
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::size_t identified = n_frf - reused;
@@ -99,7 +100,7 @@ main(int argc, char **argv)
 
   // Beside it, the optional refinement of the poles (Identification/Pole
   // refinement = least squares) on the first FRFs, one at a time.
-  const std::size_t first = std::min<std::size_t>(n_frf, options.quick ? 6 : 24);
+  const std::size_t first  = std::min<std::size_t>(n_frf, options.quick ? 6 : 24);
   auto              refine = parameters;
   refine.polish_poles      = true;
   std::vector<modal::Identification> refined;
@@ -122,24 +123,28 @@ main(int argc, char **argv)
       e = std::max(e, r.error);
     return e;
   };
-  const std::size_t worst =
-    std::max_element(results.begin(), results.end(),
-                     [](const auto &a, const auto &b) { return a.error < b.error; }) -
-    results.begin();
+  const std::size_t worst = std::max_element(results.begin(), results.end(),
+                                             [](const auto &a, const auto &b) {
+                                               return a.error < b.error;
+                                             }) -
+                            results.begin();
   // The worst FRF again with an upper residual: how much of its E is the
   // stiffness left in the band by the modes above it.
   auto with_residual           = parameters;
   with_residual.upper_residual = true;
-  const auto worst_again       = modal::identify(
-    green.frf(pairs[worst].first, pairs[worst].second, 4., 1001), with_residual);
+  const auto worst_again =
+    modal::identify(green.frf(pairs[worst].first, pairs[worst].second, 4., 1001), with_residual);
   std::sort(errors.begin(), errors.end());
   std::sort(modes.begin(), modes.end());
-  const auto pct = [&](double q) { return errors[std::size_t(q * (errors.size() - 1))]; };
-  std::printf("\nTime: %.1f s for %u FRFs: %zu identified (%.2f ms of wall time each, %u threads), %zu the "
-              "same as their reciprocal g_ji and reused.\nWithout reciprocity all %u would take "
-              "about %.0f s.\n",
-              seconds, n_frf, identified, 1e3 * seconds / identified,
-              dealii::MultithreadInfo::n_threads(), reused, n_frf, seconds / identified * n_frf);
+  const auto pct = [&](double q) {
+    return errors[std::size_t(q * (errors.size() - 1))];
+  };
+  std::printf(
+    "\nTime: %.1f s for %u FRFs: %zu identified (%.2f ms of wall time each, %u threads), %zu the "
+    "same as their reciprocal g_ji and reused.\nWithout reciprocity all %u would take "
+    "about %.0f s.\n",
+    seconds, n_frf, identified, 1e3 * seconds / identified, dealii::MultithreadInfo::n_threads(),
+    reused, n_frf, seconds / identified * n_frf);
   std::printf("E (Eq. 50): min %.3g, median %.3g, 95%% %.3g, max %.3g\n", errors.front(), pct(0.5),
               pct(0.95), errors.back());
   std::printf("Worst: g_%u,%u with E = %.3g (%.3g with an upper residual term)\n",
@@ -147,20 +152,22 @@ main(int argc, char **argv)
   std::printf("N_m: min %.0f, median %.0f, max %.0f; zoom LSCE used for %u FRFs\n", modes.front(),
               modes[modes.size() / 2], modes.back(), zoomed);
   std::printf("Largest relative error of an identified pole, over the modes below 3.6 kHz that\n"
-              "carry at least 1%% of an FRF (first 200 FRFs): %.3g\n", pole_error);
+              "carry at least 1%% of an FRF (first 200 FRFs): %.3g\n",
+              pole_error);
   std::printf("Target (issue 3): under 60 s on 2 cores.\n");
-  std::printf("\nThe first %zu FRFs one at a time, LSCE alone against LSCE with the pole refinement:\n"
-              "  LSCE alone:       %8.2f ms per FRF, largest E %.3g, largest pole error %.3g\n"
-              "  with refinement:  %8.2f ms per FRF, largest E %.3g, largest pole error %.3g\n",
-              first, 1e3 * plain_seconds / first, largest_error(plain), pole_error_of(plain, first),
-              1e3 * refine_seconds / first, largest_error(refined), pole_error_of(refined, first));
+  std::printf(
+    "\nThe first %zu FRFs one at a time, LSCE alone against LSCE with the pole refinement:\n"
+    "  LSCE alone:       %8.2f ms per FRF, largest E %.3g, largest pole error %.3g\n"
+    "  with refinement:  %8.2f ms per FRF, largest E %.3g, largest pole error %.3g\n",
+    first, 1e3 * plain_seconds / first, largest_error(plain), pole_error_of(plain, first),
+    1e3 * refine_seconds / first, largest_error(refined), pole_error_of(refined, first));
 
   base::AtomicFile csv(options.output / "identification.csv");
-  csv.stream() << "frfs,identified,seconds,ms_per_frf_identified,E_min,E_median,E_p95,E_max,max_pole_error\n"
-               << n_frf << ',' << identified << ',' << seconds << ',' << 1e3 * seconds / identified
-               << ',' << errors.front()
-               << ',' << pct(0.5) << ',' << pct(0.95) << ',' << errors.back() << ',' << pole_error
-               << '\n';
+  csv.stream()
+    << "frfs,identified,seconds,ms_per_frf_identified,E_min,E_median,E_p95,E_max,max_pole_error\n"
+    << n_frf << ',' << identified << ',' << seconds << ',' << 1e3 * seconds / identified << ','
+    << errors.front() << ',' << pct(0.5) << ',' << pct(0.95) << ',' << errors.back() << ','
+    << pole_error << '\n';
   csv.commit();
   // Against the known synthetic modes: the identified poles (2.44e-10 with
   // --quick, 4.2e-10 over the full matrix; bound 3x the quick figure) and

@@ -16,11 +16,11 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
-  const std::string file = argc > 1 ? argv[1] : "my_road.sdf";
-  greentread::road::RoadTextureParameters road;
-  road.seed    = 7;
-  road.length  = 0.8;
-  road.spacing = 1e-3;
+  const std::string                        file = argc > 1 ? argv[1] : "my_road.sdf";
+  greentread::road::RoadTextureParameters  road;
+  road.seed          = 7;
+  road.length        = 0.8;
+  road.spacing       = 1e-3;
   const auto texture = road.make("road-B", 0.1);
   greentread::road::write_sdf(file, texture, false);
   std::cout << "wrote " << file << ": " << texture.nx << " x " << texture.ny << " points, "

@@ -25,8 +25,8 @@ namespace
     modal::ModalModel model;
     for (unsigned int k = 0; k < n_modes; ++k)
       {
-        const double f  = 50. * std::pow(80., (k + 0.5) / n_modes);
-        const double w  = 2. * M_PI * f, xi = 0.02;
+        const double f = 50. * std::pow(80., (k + 0.5) / n_modes);
+        const double w = 2. * M_PI * f, xi = 0.02;
         const double wd = w * std::sqrt(1. - xi * xi);
         model.add_pair({-xi * w, wd}, {0., -1e-3 / (2. * wd) / (k + 1.)});
       }
@@ -44,8 +44,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
-  const auto   options = benchmark::parse(argc, argv, "modal_update_cost");
-  const double dt      = 1e-5;
+  const auto         options  = benchmark::parse(argc, argv, "modal_update_cost");
+  const double       dt       = 1e-5;
   const unsigned int n_steps  = options.quick ? 20000 : 200000;
   const unsigned int n_direct = options.quick ? 2000 : 20000;
 
@@ -68,10 +68,10 @@ main(int argc, char **argv)
   double worst = 0.; // the largest difference from the direct sum, relative
   for (const unsigned int n_modes : {1u, 2u, 5u, 10u, 20u, 50u, 100u})
     {
-      const auto model = synthetic_model(n_modes);
+      const auto                             model = synthetic_model(n_modes);
       convolution::ModalRecursiveConvolution modal(model, dt);
-      std::vector<double> u_modal(n_steps);
-      auto                start = std::chrono::steady_clock::now();
+      std::vector<double>                    u_modal(n_steps);
+      auto                                   start = std::chrono::steady_clock::now();
       for (unsigned int n = 0; n < n_steps; ++n)
         {
           const auto h = modal.history();
@@ -80,10 +80,14 @@ main(int argc, char **argv)
         }
       const double modal_time = seconds_since(start);
 
-      const auto g  = [&](double t) { return model.impulse_response(t); };
-      const auto dg = [&](double t) { return model.impulse_response_derivative(t); };
+      const auto g = [&](double t) {
+        return model.impulse_response(t);
+      };
+      const auto dg = [&](double t) {
+        return model.impulse_response_derivative(t);
+      };
       convolution::DirectConvolution direct(g, dg, dt, n_direct + 1, n_direct, model.max_modulus());
-      double difference = 0., largest = 0.;
+      double                         difference = 0., largest = 0.;
       start = std::chrono::steady_clock::now();
       for (unsigned int n = 0; n < n_direct; ++n)
         {

@@ -23,10 +23,10 @@
 
 #include <greentread/base/exceptions.h>
 #include <greentread/convolution/patch_convolution.h>
-#include <greentread/synthesis/mode_synthesis.h>
-#include <greentread/synthesis/mode_truncation.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/synthesis/mode_truncation.h>
 #include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
@@ -54,8 +54,8 @@ namespace
     request.points_across = 3;
     request.length        = 0.06;
     request.width         = 0.05;
-    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                      fe::InflationParameters(), request);
+    const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
+                                      request);
     base::FrequencyResponseMatrix green;
     green.df      = 50.;
     green.n_lines = 41;
@@ -72,20 +72,21 @@ namespace
             green.values.push_back(g(i, j));
       }
     synthesis::ModeSearch search;
-    search.cutoff    = 2. * M_PI * cutoff_hz;
-    const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
-                                            MPI_COMM_SELF, false);
-    return {green, synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green)};
+    search.cutoff = 2. * M_PI * cutoff_hz;
+    const auto modes =
+      synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
+    return {green, synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                         modes.shapes_imag, green)};
   }
 
   /// Milliseconds per step of the rank-one update of @p model.
   double
   update_ms(const modal::PatchModel &model, const unsigned int threads)
   {
-    const double       dt = 15.36e-6;
-    auto               c  = convolution::make_modal_patch_convolution(model, dt, threads);
-    const unsigned int P = model.n_points(), steps = 200;
-    Eigen::VectorXd    u(P), v(P);
+    const double           dt = 15.36e-6;
+    auto                   c  = convolution::make_modal_patch_convolution(model, dt, threads);
+    const unsigned int     P = model.n_points(), steps = 200;
+    Eigen::VectorXd        u(P), v(P);
     convolution::PatchLoad load(P);
     load.component[1].setConstant(1.);
     load.component[2].setConstant(1.);
@@ -110,21 +111,22 @@ main(int argc, char **argv)
       const auto         options = benchmark::parse(argc, argv, "mode_cutoff");
       const unsigned int threads = std::min(2u, std::max(1u, std::thread::hardware_concurrency()));
       base::FrequencyResponseMatrix green;
-      synthesis::ModeSynthesis           all;
-      std::vector<double>            cutoffs;
+      synthesis::ModeSynthesis      all;
+      std::vector<double>           cutoffs;
       if (options.model.empty())
         {
-          const double top = options.quick ? 5000. : 10000.;
+          const double top     = options.quick ? 5000. : 10000.;
           std::tie(green, all) = coarse_tyre(top);
-          cutoffs = options.quick ? std::vector<double>{2500., 5000.} :
-                                    std::vector<double>{2500., 3000., 4000., 5000., 7000., 10000.};
+          cutoffs              = options.quick ? std::vector<double>{2500., 5000.} :
+                                                 std::vector<double>{2500., 3000., 4000., 5000., 7000., 10000.};
           std::cout << "The coarse tyre (4 cm mesh, 16 cells, 4 x 3 tributary points), lines to "
                        "2 kHz\n";
         }
       else
         {
-          all   = synthesis::read_modal_model(options.model.string());
-          green = base::read_green_hdf5((options.model.parent_path() / "green_functions.h5").string());
+          all = synthesis::read_modal_model(options.model.string());
+          green =
+            base::read_green_hdf5((options.model.parent_path() / "green_functions.h5").string());
           const double f_max = green.df * (green.n_lines - 1), top = all.frequency_hz.maxCoeff();
           for (const double r : {1.125, 1.25, 1.5, 1.75, 2., 2.5, 3.})
             if (r * f_max < 0.999 * top)
@@ -134,7 +136,7 @@ main(int argc, char **argv)
                     << format_number(top) << " Hz, " << green.n_points() << " points, lines to "
                     << format_number(f_max) << " Hz\n";
         }
-      const unsigned int    P  = green.n_points();
+      const unsigned int P = green.n_points();
       std::cout << "  cut-off [Hz]   modes   E median    E p90   E worst  driving  passivity"
                    "       G_r   MB/step  ms/step\n";
       std::ofstream csv(options.output / "mode_cutoff.csv");
@@ -146,13 +148,14 @@ main(int argc, char **argv)
           const auto         synthesis = synthesis::truncate(all, cutoff, green);
           const Eigen::Index m         = synthesis.n_modes();
           const bool         coupled   = all.shapes_imag.size() > 0;
-          const auto errors    = synthesis::compare(synthesis, green);
-          double     driving   = 0.;
+          const auto         errors    = synthesis::compare(synthesis, green);
+          double             driving   = 0.;
           for (unsigned int i = 0; i < P; ++i)
             driving = std::max(driving, errors.pair_error[i * P + i]);
           // The update reads the shapes once per step (ModePatchConvolution).
           const double mb = (coupled ? 16. : 8.) * m * P / 1e6;
-          const double ms = update_ms(synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 0.), threads);
+          const double ms =
+            update_ms(synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 0.), threads);
           std::cout << format_printf("%14.0f", cutoff) << format_printf("%8.0f", m)
                     << format_printf("%10.3f%%", 100. * errors.median)
                     << format_printf("%8.3f%%", 100. * errors.p90)

@@ -26,8 +26,8 @@
 #include "benchmark_options.h"
 
 #include <greentread/base/blas_kernels.h>
-#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
@@ -45,12 +45,13 @@ namespace
   struct TimedSearch
   {
     synthesis::BlochModes modes;
-    double               search = 0., coupling = 0.;
+    double                search = 0., coupling = 0.;
   };
 
   TimedSearch
-  timed_search(const periodic::InflatedTyre &tyre, const unsigned int k,
-               const synthesis::ModeSearch &search)
+  timed_search(const periodic::InflatedTyre &tyre,
+               const unsigned int            k,
+               const synthesis::ModeSearch  &search)
   {
     TimedSearch timed;
     const auto  t0 = std::chrono::steady_clock::now();
@@ -67,14 +68,15 @@ namespace
   /// of cells; the crown's elements 1 / @p crown_refinement of the mesh
   /// size), three wavenumbers each.
   void
-  graded_cells(const bool                                           quick,
+  graded_cells(const bool                                          quick,
                const std::vector<std::pair<double, unsigned int>> &levels,
-               const unsigned int                                   crown_refinement = 2)
+               const unsigned int                                  crown_refinement = 2)
   {
-    std::printf("\nThe graded cells (Crown refinement=%u), modes to %g Hz, three slices, one "
-                "thread\n"
-                "mesh [mm]  cells   DoFs     k  modes  solves  residual  search [s]  coupling [s]\n",
-                crown_refinement, quick ? 3000. : 8000.);
+    std::printf(
+      "\nThe graded cells (Crown refinement=%u), modes to %g Hz, three slices, one "
+      "thread\n"
+      "mesh [mm]  cells   DoFs     k  modes  solves  residual  search [s]  coupling [s]\n",
+      crown_refinement, quick ? 3000. : 8000.);
     for (const auto &[mesh_size, n_cells] : levels)
       {
         geometry::GeometryParameters geometry;
@@ -84,15 +86,15 @@ namespace
         geometry.other_constants = "Crown refinement=" + std::to_string(crown_refinement);
         periodic::PatchRequest request;
         request.load = periodic::PointLoad::tributary_area;
-        const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                          fe::InflationParameters(), request);
-        double total = 0.;
-        const std::vector<unsigned int> ks = {0, n_cells / 8, n_cells / 2};
+        const periodic::InflatedTyre    tyre(geometry, fe::MaterialParameters(),
+                                             fe::InflationParameters(), request);
+        double                          total = 0.;
+        const std::vector<unsigned int> ks    = {0, n_cells / 8, n_cells / 2};
         for (const unsigned int k : ks)
           {
             synthesis::ModeSearch search;
-            search.cutoff     = 2. * M_PI * (quick ? 3000. : 8000.);
-            const auto timed  = timed_search(tyre, k, search);
+            search.cutoff    = 2. * M_PI * (quick ? 3000. : 8000.);
+            const auto timed = timed_search(tyre, k, search);
             total += timed.search + timed.coupling;
             std::printf("%9.0f %6u %6u %5u %6ld %7u %9.1e %11.2f %13.2f\n", 1e3 * mesh_size,
                         n_cells, tyre.periodic_cell.size(), k, long(timed.modes.omega.size()),
@@ -112,15 +114,16 @@ main(int argc, char **argv)
   base::use_native_blas_kernels(argv);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto options = benchmark::parse(argc, argv, "mode_search_cost");
-  using Levels             = std::vector<std::pair<double, unsigned int>>;
-  const Levels part_2_levels = options.quick ? Levels{{0.04, 16}} :
-                                               Levels{{0.008, 256}, {0.004, 512}};
+  using Levels       = std::vector<std::pair<double, unsigned int>>;
+  const Levels part_2_levels =
+    options.quick ? Levels{{0.04, 16}} : Levels{{0.008, 256}, {0.004, 512}};
   if (options.part >= 2 && options.part <= 4)
     {
       const Levels finer = options.part == 3 ? Levels{{0.002, 1024}} : Levels{{0.004, 512}};
-      graded_cells(options.quick, options.part == 2 ? part_2_levels :
-                                  options.quick     ? Levels{{0.04, 16}} :
-                                                      finer,
+      graded_cells(options.quick,
+                   options.part == 2 ? part_2_levels :
+                   options.quick     ? Levels{{0.04, 16}} :
+                                       finer,
                    options.part == 4 ? 3 : 2);
       return 0;
     }
@@ -133,10 +136,10 @@ main(int argc, char **argv)
       geometry.mesh_size = 0.04;
       geometry.n_cells   = 16;
     }
-  const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(),
-                                    fe::InflationParameters(), request);
-  const std::vector<unsigned int> ks = options.quick ? std::vector<unsigned int>{0, 3} :
-                                                       std::vector<unsigned int>{0, 1, 16, 64, 128};
+  const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
+                                    request);
+  const std::vector<unsigned int> ks =
+    options.quick ? std::vector<unsigned int>{0, 3} : std::vector<unsigned int>{0, 1, 16, 64, 128};
   std::cout << "Mode search of the " << (options.quick ? "coarse" : "default") << " tyre's cell ("
             << tyre.periodic_cell.size() << " DoFs, " << tyre.periodic_cell.n_cells
             << " cells), modes to " << (options.quick ? 3000 : 8000) << " Hz, one thread\n"
@@ -155,14 +158,15 @@ main(int argc, char **argv)
           synthesis::ModeSearch search;
           search.cutoff     = 2. * M_PI * (options.quick ? 3000. : 8000.);
           search.slices     = slices;
-          const auto timed  = timed_search(tyre, ks[i], search);
+          const auto  timed = timed_search(tyre, ks[i], search);
           const auto &modes = timed.modes;
           total += timed.search + timed.coupling;
           if (slices == 1)
             reference[i] = modes.omega;
           double difference = modes.omega.size() == reference[i].size() ? 0. : INFINITY;
           if (std::isfinite(difference))
-            difference = ((modes.omega - reference[i]).cwiseQuotient(reference[i])).cwiseAbs().maxCoeff();
+            difference =
+              ((modes.omega - reference[i]).cwiseQuotient(reference[i])).cwiseAbs().maxCoeff();
           worst_difference = std::max(worst_difference, difference);
           std::printf("%6u %4u %6ld %7u %10u %9.1e %17.1e %11.2f %13.2f\n", slices, ks[i],
                       long(modes.omega.size()), modes.n_solves, modes.krylov_dimension,

@@ -45,7 +45,7 @@ namespace
   synthetic_modes(const unsigned int nx, const unsigned int ny, const unsigned int n_modes)
   {
     synthesis::ModeSynthesis s;
-    const unsigned int   P = nx * ny;
+    const unsigned int       P = nx * ny;
     for (unsigned int i = 0; i < nx; ++i)
       for (unsigned int j = 0; j < ny; ++j)
         s.points.push_back({{0.06 * ((i + 0.5) / nx - 0.5), 0.08 * ((j + 0.5) / ny - 0.5), 0.27}});
@@ -75,11 +75,11 @@ namespace
   Timing
   time_update(convolution::PatchConvolution &c, const unsigned int steps, const bool keep)
   {
-    const unsigned int P = c.n_points();
-    Eigen::VectorXd    u(P), v(P);
+    const unsigned int     P = c.n_points();
+    Eigen::VectorXd        u(P), v(P);
     convolution::PatchLoad load(P);
-    Timing             t;
-    auto               start = std::chrono::steady_clock::now();
+    Timing                 t;
+    auto                   start = std::chrono::steady_clock::now();
     for (unsigned int n = 0; n < steps; ++n)
       {
         if (n == 1)
@@ -103,9 +103,9 @@ namespace
           load.component[2](p) = 1. + std::sin(1e-2 * (n + 1) + p);
         c.advance(load);
       }
-    t.ms_per_step = 1e3 *
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                    (steps - 1);
+    t.ms_per_step =
+      1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+      (steps - 1);
     return t;
   }
 } // namespace
@@ -139,27 +139,30 @@ main(int argc, char **argv)
         modal::PatchModel model;
         bool              full; // build the full form as the reference
       };
-      std::vector<Case> cases;
+      std::vector<Case>                              cases;
       const std::vector<std::array<unsigned int, 2>> grids =
-        options.quick ? std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}} :
-                        std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}, {{40, 48}}};
+        options.quick ?
+          std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}} :
+          std::vector<std::array<unsigned int, 2>>{{{10, 12}}, {{20, 24}}, {{40, 48}}};
       for (const auto &[nx, ny] : grids)
         cases.push_back({"synthetic", synthetic_modes(nx, ny, n_modes), nx * ny == 120});
       if (!options.model.empty())
         {
           const auto synthesis = synthesis::read_modal_model(options.model.string());
-          cases.push_back({"tyre", synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 4000.), false});
+          cases.push_back(
+            {"tyre", synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), 4000.), false});
           std::cout << "  (tyre: " << options.model.string() << ", " << synthesis.n_modes()
                     << " modes)\n";
         }
 
       for (const auto &c : cases)
         {
-          const unsigned int P    = c.model.n_points();
-          const double       rows = double(c.model.shapes.rows()) * (c.model.shapes_imag.size() ? 2 : 1);
-          const auto   make     = [&](const convolution::ShapePrecision precision,
-                                 const unsigned int           block) {
-            return convolution::make_rank_one_patch_convolution(c.model, dt, threads, precision, block);
+          const unsigned int P = c.model.n_points();
+          const double rows = double(c.model.shapes.rows()) * (c.model.shapes_imag.size() ? 2 : 1);
+          const auto   make = [&](const convolution::ShapePrecision precision,
+                                const unsigned int                block) {
+            return convolution::make_rank_one_patch_convolution(c.model, dt, threads, precision,
+                                                                  block);
           };
           using convolution::ShapePrecision;
           // The reference: double shapes, step by step.
@@ -180,23 +183,24 @@ main(int argc, char **argv)
           // per step or once per block. Single precision reads half the
           // bytes and its peak is twice double's.
           const double bytes = 8. * rows * P, flops = 2. * rows * P * 2.;
-          const double peak  = benchmark::peak_flops(threads);
-          const auto   row   = [&](const std::string &form, const unsigned int block,
-                               const Timing &t, const double b, const double f, const double pk,
+          const double peak = benchmark::peak_flops(threads);
+          const auto   row = [&](const std::string &form, const unsigned int block, const Timing &t,
+                               const double b, const double f, const double pk,
                                const std::string &diff) {
             const double rate = f / (1e-3 * t.ms_per_step);
-            std::cout << format_printf("%5.0f", P) << format_printf("%12.0f", rows) << "  "
-                      << form << std::string(8 - form.size(), ' ') << format_printf("%5.0f", block)
-                      << format_printf("%28.1f", t.setup_ms) << format_printf("%9.3f", t.ms_per_step)
-                      << format_printf("%14.1f", b / 1e6) << format_printf("%12.4f", f / 1e9)
-                      << format_printf("%9.2f", rate / 1e9) << format_printf("%10.1f", 100. * rate / pk)
-                      << "   " << diff << '\n';
+            std::cout << format_printf("%5.0f", P) << format_printf("%12.0f", rows) << "  " << form
+                      << std::string(8 - form.size(), ' ') << format_printf("%5.0f", block)
+                      << format_printf("%28.1f", t.setup_ms)
+                      << format_printf("%9.3f", t.ms_per_step) << format_printf("%14.1f", b / 1e6)
+                      << format_printf("%12.4f", f / 1e9) << format_printf("%9.2f", rate / 1e9)
+                      << format_printf("%10.1f", 100. * rate / pk) << "   " << diff << '\n';
             csv << P << ',' << rows << ',' << form << ',' << block << ',' << t.setup_ms << ','
                 << t.ms_per_step << ',' << b / 1e6 << ',' << f / 1e9 << ',' << rate / 1e9 << ','
                 << rate / pk << ',' << diff << '\n';
           };
           row("double", 1, reference, bytes, flops, peak, "(reference)");
-          for (const auto precision : {ShapePrecision::double_precision, ShapePrecision::single_precision})
+          for (const auto precision :
+               {ShapePrecision::double_precision, ShapePrecision::single_precision})
             for (const unsigned int block : {1u, 4u, 8u, 16u})
               {
                 const bool single = precision == ShapePrecision::single_precision;
@@ -226,7 +230,8 @@ main(int argc, char **argv)
               }
           if (!c.full)
             continue;
-          auto dense = convolution::make_modal_patch_convolution(synthesis::full_form(c.model), dt, threads);
+          auto dense =
+            convolution::make_modal_patch_convolution(synthesis::full_form(c.model), dt, threads);
           const Timing full = time_update(*dense, steps, true);
           const double diff = difference(full, reference);
           row("full", 1, full, 2. * 2. * 8. * rows * double(P) * P,

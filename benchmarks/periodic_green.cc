@@ -16,11 +16,11 @@
 
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/elastic_model.h>
+#include <greentread/fe/inflation.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/periodic/contact_patch.h>
 #include <greentread/periodic/green_solvers.h>
 #include <greentread/periodic/periodic_cell.h>
-#include <greentread/fe/inflation.h>
 
 #include <chrono>
 #include <cstdio>
@@ -64,16 +64,15 @@ namespace
       model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
       model->assemble();
       model->assemble_geometric_stiffness(fe::solve_inflation(*model, cell->angle(), 2e5));
-      periodic_cell = periodic::make_periodic_cell(*model, cell->angle(), c.n_cells,
-                                                   geometry::rim_seat, geometry::tread_surface,
-                                                   true);
+      periodic_cell = periodic::make_periodic_cell(
+        *model, cell->angle(), c.n_cells, geometry::rim_seat, geometry::tread_surface, true);
       // The default patch's 12 points across on a coarse mesh would not fit:
       // 3 x 3 points, 3 cells long.
       periodic::PatchRequest request;
       request.points_along = request.points_across = 3;
-      request.length = 3. * 2. * M_PI * 0.2725 / c.n_cells;
-      request.width  = 0.04;
-      patch          = periodic::place_contact_points(periodic_cell, request);
+      request.length                               = 3. * 2. * M_PI * 0.2725 / c.n_cells;
+      request.width                                = 0.04;
+      patch = periodic::place_contact_points(periodic_cell, request);
     }
   };
 
@@ -86,8 +85,7 @@ namespace
       std::vector<Eigen::MatrixXcd>       &results,
       const std::vector<Eigen::MatrixXcd> *reference)
   {
-    auto                       solver = periodic::make_green_solver(method, tyre.periodic_cell,
-                                                              tyre.patch);
+    auto solver = periodic::make_green_solver(method, tyre.periodic_cell, tyre.patch);
     periodic::SolveDiagnostics diagnostics;
     Timing                     timing;
     results.clear();
@@ -110,27 +108,26 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto options = benchmark::parse(argc, argv, "periodic_green");
+  const auto                               options = benchmark::parse(argc, argv, "periodic_green");
   // One thread: the time per frequency of one core, as each MPI rank or
   // thread of the scene spends it.
   const std::vector<Case> cases =
-    options.quick ?
-      std::vector<Case>{{0.04, 8, true, true}} :
-      std::vector<Case>{{0.04, 8, true, true},    {0.04, 16, true, true},
-                        {0.04, 32, true, true},   {0.04, 64, true, true},
-                        {0.02, 16, true, true},   {0.02, 32, true, true},
-                        {0.008, 16, true, false}, {0.008, 32, true, false},
-                        {0.008, 64, true, false}, {0.008, 256, false, false}};
+    options.quick ? std::vector<Case>{{0.04, 8, true, true}} :
+                    std::vector<Case>{{0.04, 8, true, true},    {0.04, 16, true, true},
+                                      {0.04, 32, true, true},   {0.04, 64, true, true},
+                                      {0.02, 16, true, true},   {0.02, 32, true, true},
+                                      {0.008, 16, true, false}, {0.008, 32, true, false},
+                                      {0.008, 64, true, false}, {0.008, 256, false, false}};
   const std::vector<double> frequencies = {150., 1500.};
 
   std::printf("Green's functions at 3 x 3 contact points, seconds per frequency on one core "
               "(mean of %zu frequencies: 150, 1500 Hz),\nand the largest difference from the "
               "full ring relative to the largest |g|.\n\n",
               frequencies.size());
-  std::printf("%6s %4s %8s %8s | %10s | %10s %9s %8s | %10s %9s %8s\n", "mesh", "N", "cell",
-              "ring", "full ring", "doubling", "diff", "speedup", "bloch", "diff", "speedup");
-  std::printf("%6s %4s %8s %8s | %10s | %10s %9s %8s | %10s %9s %8s\n", "[m]", "", "DoFs",
-              "DoFs", "[s]", "[s]", "", "", "[s]", "", "");
+  std::printf("%6s %4s %8s %8s | %10s | %10s %9s %8s | %10s %9s %8s\n", "mesh", "N", "cell", "ring",
+              "full ring", "doubling", "diff", "speedup", "bloch", "diff", "speedup");
+  std::printf("%6s %4s %8s %8s | %10s | %10s %9s %8s | %10s %9s %8s\n", "[m]", "", "DoFs", "DoFs",
+              "[s]", "[s]", "", "", "[s]", "", "");
   std::ofstream csv(options.output / "periodic_green.csv");
   csv << "mesh_size,n_cells,cell_dofs,ring_dofs,method,seconds_per_frequency,"
          "relative_difference,speedup,full_ring_extrapolated\n";
@@ -145,17 +142,17 @@ main(int argc, char **argv)
   benchmark::Checks checks("periodic_green");
   for (const auto &c : cases)
     {
-      const Tyre         tyre(c);
-      const auto        &pc        = tyre.periodic_cell;
-      const unsigned int ring_dofs = c.n_cells * (pc.n_face + pc.n_interior);
+      const Tyre                    tyre(c);
+      const auto                   &pc        = tyre.periodic_cell;
+      const unsigned int            ring_dofs = c.n_cells * (pc.n_face + pc.n_interior);
       std::vector<Eigen::MatrixXcd> reference, other;
       Timing                        full, doubling, bloch;
       bool                          extrapolated = false;
-      bool full_done = false;
+      bool                          full_done    = false;
       if (c.full_ring)
         try
           {
-            full = run(tyre, periodic::Method::full_ring, frequencies, reference, nullptr);
+            full      = run(tyre, periodic::Method::full_ring, frequencies, reference, nullptr);
             full_done = true;
             // The per-cell cost of the largest N solved on each mesh; the
             // cases are ordered by mesh, then N.
@@ -188,16 +185,15 @@ main(int argc, char **argv)
         return std::string(text);
       };
       char full_text[32];
-      std::snprintf(full_text, sizeof(full_text), extrapolated ? "~%9.3g" : "%10.3g",
-                    full.seconds);
+      std::snprintf(full_text, sizeof(full_text), extrapolated ? "~%9.3g" : "%10.3g", full.seconds);
       std::printf("%6.3f %4u %8u %8u | %10s | %s | %s%s\n", c.mesh_size, c.n_cells,
                   tyre.model->dof_handler().n_dofs(), ring_dofs, full_text,
                   cell_text(doubling, c.doubling).c_str(), cell_text(bloch, true).c_str(),
                   extrapolated ? "  (full ring extrapolated)" : "");
       std::fflush(stdout);
       const auto line = [&](const char *method, const Timing &t) {
-        csv << c.mesh_size << ',' << c.n_cells << ',' << tyre.model->dof_handler().n_dofs()
-            << ',' << ring_dofs << ',' << method << ',' << t.seconds << ','
+        csv << c.mesh_size << ',' << c.n_cells << ',' << tyre.model->dof_handler().n_dofs() << ','
+            << ring_dofs << ',' << method << ',' << t.seconds << ','
             << (full_done ? format_printf("%.3e", t.difference) : std::string("n/a")) << ','
             << full.seconds / t.seconds << ',' << (extrapolated ? "yes" : "no") << '\n';
       };

@@ -21,8 +21,8 @@
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/road/texture.h>
 #include <greentread/road/patch_road.h>
+#include <greentread/road/texture.h>
 
 #include <chrono>
 #include <cmath>
@@ -45,9 +45,9 @@ namespace
         m.points.push_back({{(i - 4.5) * dx, (j - 5.5) * dy, 0.27235}});
     for (unsigned int k = 0; k < n_modes; ++k)
       {
-        const double f  = 100. * std::pow(40., double(k) / (n_modes - 1));
-        const double w  = 2. * M_PI * f, zeta = 0.03, wd = w * std::sqrt(1. - zeta * zeta);
-        const double kx = 0.5 + (k * 7 % 11), ky = 0.5 + (k * 5 % 13);
+        const double    f = 100. * std::pow(40., double(k) / (n_modes - 1));
+        const double    w = 2. * M_PI * f, zeta = 0.03, wd = w * std::sqrt(1. - zeta * zeta);
+        const double    kx = 0.5 + (k * 7 % 11), ky = 0.5 + (k * 5 % 13);
         Eigen::VectorXd phi(n);
         for (unsigned int p = 0; p < n; ++p)
           phi[p] = std::cos(kx * m.points[p][0] / (nx * dx) * M_PI + k) *
@@ -62,8 +62,8 @@ namespace
     for (unsigned int p = 0; p < n; ++p)
       for (unsigned int q = 0; q < n; ++q)
         {
-          const double r = std::hypot((m.points[p][0] - m.points[q][0]) / dx,
-                                      (m.points[p][1] - m.points[q][1]) / dy);
+          const double r        = std::hypot((m.points[p][0] - m.points[q][0]) / dx,
+                                             (m.points[p][1] - m.points[q][1]) / dy);
           m.instantaneous(p, q) = r < 1e-9 ? 5e-6 : (r < 1.01 ? 1e-6 : 0.);
         }
     m.errors = Eigen::MatrixXd::Zero(n, n);
@@ -85,21 +85,21 @@ main(int argc, char **argv)
 {
   try
     {
-      const auto options = benchmark::parse(argc, argv, "rolling_contact");
+      const auto              options = benchmark::parse(argc, argv, "rolling_contact");
       const modal::PatchModel model =
         options.model.empty() ? synthetic_model() : modal::read_patch_model(options.model.string());
-      const unsigned int n_p = model.n_points();
+      const unsigned int n_p     = model.n_points();
       const unsigned int threads = std::min(2u, std::max(1u, std::thread::hardware_concurrency()));
 
       // The problem: road-A at 90 km/h, one road sample per step.
       std::vector<road::WavelengthBand> bands;
       std::vector<double>               levels;
       road::texture_preset("road-A", bands, levels);
-      const double        spacing = 3.84e-4;
-      const road::Texture texture = road::synthetic_texture(bands, levels, spacing, 6000, 300, 1);
+      const double          spacing = 3.84e-4;
+      const road::Texture   texture = road::synthetic_texture(bands, levels, spacing, 6000, 300, 1);
       const road::PatchRoad road(texture, model.points, road::RoadSampling::envelope, "road-A");
-      const double    V = 90. / 3.6, dt = spacing / V;
-      const Eigen::VectorXd tread = contact::tread_heights(model.points);
+      const double          V = 90. / 3.6, dt = spacing / V;
+      const Eigen::VectorXd tread  = contact::tread_heights(model.points);
       unsigned int          centre = 0;
       for (unsigned int p = 0; p < n_p; ++p)
         if (std::hypot(model.points[p][0], model.points[p][1]) <
@@ -113,7 +113,7 @@ main(int argc, char **argv)
       setup.speed       = V;
       setup.time_step   = dt;
       setup.static_load = 600.;
-      const auto eq     = contact::start_contact(model.static_compliance(), tread, heights, setup);
+      const auto   eq   = contact::start_contact(model.static_compliance(), tread, heights, setup);
       const double area = 6.684e-3 * 7.65e-3;
 
       const auto run = [&](convolution::PatchConvolution &conv, const unsigned int n_steps) {
@@ -122,12 +122,11 @@ main(int argc, char **argv)
           r.centre.push_back(s.force[centre] / area);
           r.stress.push_back(s.force / area);
         };
-        const auto start = std::chrono::steady_clock::now();
+        const auto            start    = std::chrono::steady_clock::now();
         contact::RollingSetup this_run = setup;
         this_run.n_steps               = n_steps;
         r.summary = contact::roll_patch(conv, tread, heights, eq, this_run, observe);
-        r.seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
       };
 
@@ -139,8 +138,8 @@ main(int argc, char **argv)
       // 1. The timing target: 2 m with the modal recursion.
       const double       long_distance = options.quick ? 0.1 : 2.;
       const unsigned int long_steps    = static_cast<unsigned int>(long_distance / (V * dt));
-      auto               modal_long    = convolution::make_modal_patch_convolution(model, dt, threads);
-      const Run          target        = run(*modal_long, long_steps);
+      auto               modal_long = convolution::make_modal_patch_convolution(model, dt, threads);
+      const Run          target     = run(*modal_long, long_steps);
       const double       flops_per_step =
         8. * n_p * double(n_p) * model.n_terms() + 8. * n_p * double(model.n_terms());
       const double rate = flops_per_step * long_steps / target.seconds;
@@ -149,8 +148,9 @@ main(int argc, char **argv)
                 << (target.seconds < 30. ? "within" : "OVER") << " the 30 s target), "
                 << format_printf("%.3f", 1e3 * target.seconds / long_steps) << " ms per step, "
                 << format_printf("%.2f", rate / 1e9) << " GFLOP/s in the update = "
-                << format_printf("%.1f", 100. * rate / benchmark::peak_flops(threads)) << "% of the "
-                << threads << "-core peak (" << format_printf("%.0f", benchmark::peak_flops(threads) / 1e9)
+                << format_printf("%.1f", 100. * rate / benchmark::peak_flops(threads))
+                << "% of the " << threads << "-core peak ("
+                << format_printf("%.0f", benchmark::peak_flops(threads) / 1e9)
                 << " GFLOP/s); failed steps " << target.summary.failed_steps << "\n\n";
 
       // 2. Error against run time: direct (reference) and modal over a
@@ -159,11 +159,11 @@ main(int argc, char **argv)
       // for the bands from 250 Hz.
       const double       short_distance = options.quick ? 0.05 : 0.5;
       const unsigned int short_steps    = static_cast<unsigned int>(short_distance / (V * dt));
-      auto               direct = convolution::make_direct_patch_convolution(model, dt, short_steps + 1);
-      const Run          reference = run(*direct, short_steps);
-      auto               modal     = convolution::make_modal_patch_convolution(model, dt, threads);
-      const Run          fast      = run(*modal, short_steps);
-      double             diff = 0., peak = 0.;
+      auto      direct    = convolution::make_direct_patch_convolution(model, dt, short_steps + 1);
+      const Run reference = run(*direct, short_steps);
+      auto      modal     = convolution::make_modal_patch_convolution(model, dt, threads);
+      const Run fast      = run(*modal, short_steps);
+      double    diff = 0., peak = 0.;
       for (unsigned int n = 0; n < short_steps; ++n)
         {
           diff = std::max(diff, (fast.stress[n] - reference.stress[n]).cwiseAbs().maxCoeff());

@@ -29,11 +29,11 @@ namespace
 {
   struct Configuration
   {
-    std::string                label;
-    contact::ContactLaw        law;
-    double                     kc;
-    convolution::Method        method;
-    double                     smallest_dt; // below this, too slow (direct is O(N^2))
+    std::string         label;
+    contact::ContactLaw law;
+    double              kc;
+    convolution::Method method;
+    double              smallest_dt; // below this, too slow (direct is O(N^2))
   };
 
   /// Least-squares slope of log(error) against log(dt).
@@ -61,11 +61,15 @@ main(int argc, char **argv)
   if (options.quick)
     dts = {1e-3, 1.37e-4, 3.7e-5};
   const std::vector<Configuration> configurations = {
-    {"kinematic modal-recursive", contact::ContactLaw::kinematic, 0., convolution::Method::modal_recursive, 0.},
-    {"kinematic modal-paper", contact::ContactLaw::kinematic, 0., convolution::Method::modal_paper, 0.},
+    {"kinematic modal-recursive", contact::ContactLaw::kinematic, 0.,
+     convolution::Method::modal_recursive, 0.},
+    {"kinematic modal-paper", contact::ContactLaw::kinematic, 0., convolution::Method::modal_paper,
+     0.},
     {"kinematic direct", contact::ContactLaw::kinematic, 0., convolution::Method::direct, 3e-6},
-    {"penalty 1e7 modal-recursive", contact::ContactLaw::penalty, 1e7, convolution::Method::modal_recursive, 0.},
-    {"penalty 1e8 modal-recursive", contact::ContactLaw::penalty, 1e8, convolution::Method::modal_recursive, 0.}};
+    {"penalty 1e7 modal-recursive", contact::ContactLaw::penalty, 1e7,
+     convolution::Method::modal_recursive, 0.},
+    {"penalty 1e8 modal-recursive", contact::ContactLaw::penalty, 1e8,
+     convolution::Method::modal_recursive, 0.}};
 
   const sdof::OscillatorParameters oscillator;
   const road::Sinusoid             road(5e-3, 1e-2);
@@ -113,8 +117,8 @@ main(int argc, char **argv)
                   contact.time_step = dt * jitter;
                   // The solver's warnings (penalty near its stability limit)
                   // would cut the table; they are counted and summarised.
-                  std::ostringstream warnings;
-                  auto *const        screen = std::cerr.rdbuf(warnings.rdbuf());
+                  std::ostringstream                 warnings;
+                  auto *const                        screen = std::cerr.rdbuf(warnings.rdbuf());
                   std::unique_ptr<sdof::SdofOutcome> o;
                   try
                     {
@@ -135,8 +139,8 @@ main(int argc, char **argv)
               std::printf(" | %10.3e m  %9.2e s  ", error, time);
               errors[c].push_back(error);
               used_dts[c].push_back(dt);
-              csv[c] << '"' << cfg.label << "\"," << dt << ',' << error << ',' << penetration
-                     << ',' << time << '\n';
+              csv[c] << '"' << cfg.label << "\"," << dt << ',' << error << ',' << penetration << ','
+                     << time << '\n';
             }
           catch (const NumericalError &)
             {
@@ -166,7 +170,8 @@ main(int argc, char **argv)
                      at == used_dts[c].end() ? NAN : errors[c][at - used_dts[c].begin()], 6.5e-7);
     }
   std::printf("\n%u runs were warned that omega_c dt = sqrt((K + kc)/M) dt > 1.25, where the\n"
-              "explicit penalty nears its stability limit (about 1.6).\n", n_warned);
+              "explicit penalty nears its stability limit (about 1.6).\n",
+              n_warned);
   std::printf("\nOrder: least-squares slope of log(error) on log(dt). The kinematic law\n"
               "converges to the exact solution; the penalty law converges to its own,\n"
               "elastic, solution, which stays a fixed distance from the exact (plastic) one.\n");
@@ -179,17 +184,17 @@ main(int argc, char **argv)
   }
 
   // Log-log plot, one curve per configuration.
-  std::string commands = "set datafile separator ','\nset logscale xy\nset grid\n"
-                         "set format x '10^{%L}'\nset format y '10^{%L}'\n"
-                         "set xlabel 'time step dt [s]'\nset ylabel 'max |u - u_{exact}| [m]'\n"
-                         "set key bottom right\n"
-                         "set title 'GreenTread: 1-DoF contact, error against the exact solution (0.2 s)'\n"
-                         "plot ";
+  std::string commands =
+    "set datafile separator ','\nset logscale xy\nset grid\n"
+    "set format x '10^{%L}'\nset format y '10^{%L}'\n"
+    "set xlabel 'time step dt [s]'\nset ylabel 'max |u - u_{exact}| [m]'\n"
+    "set key bottom right\n"
+    "set title 'GreenTread: 1-DoF contact, error against the exact solution (0.2 s)'\n"
+    "plot ";
   // The three kinematic curves coincide: thick, dashed and points-only
   // styles keep each visible.
   const std::string styles[] = {"with linespoints lw 6 pt 7 ps 1.5",
-                                "with linespoints lw 2 dt 2 pt 6 ps 2",
-                                "with points pt 2 ps 2.5",
+                                "with linespoints lw 2 dt 2 pt 6 ps 2", "with points pt 2 ps 2.5",
                                 "with linespoints lw 2 pt 4", "with linespoints lw 2 pt 5"};
   for (unsigned int c = 0; c < configurations.size(); ++c)
     commands += (c ? ", " : "") + base::gnuplot_quote(options.output / "sdof_convergence.csv") +

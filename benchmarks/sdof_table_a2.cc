@@ -19,7 +19,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
-  const auto options = benchmark::parse(argc, argv, "sdof_table_a2");
+  const auto                               options = benchmark::parse(argc, argv, "sdof_table_a2");
 
   struct Row
   {
@@ -61,12 +61,12 @@ main(int argc, char **argv)
 
       struct Result
       {
-        unsigned int size  = 0;
-        double       time  = 0., error = 0.;
+        unsigned int size = 0;
+        double       time = 0., error = 0.;
         bool         valid = false;
         std::string  note;
       };
-      Result results[3];
+      Result                    results[3];
       const convolution::Method methods[3] = {convolution::Method::direct,
                                               convolution::Method::modal_paper,
                                               convolution::Method::modal_recursive};
@@ -77,7 +77,7 @@ main(int argc, char **argv)
           conv.truncation_threshold = 0.01;
           try
             {
-              const auto o      = sdof::simulate(oscillator, road, contact, conv, true);
+              const auto o     = sdof::simulate(oscillator, road, contact, conv, true);
               results[m].size  = o.run.size;
               results[m].time  = o.run.run_time;
               results[m].error = o.errors.max_u_error;
@@ -109,8 +109,8 @@ main(int argc, char **argv)
           checks.at_most(convolution::to_string(methods[m]) +
                            " error against the exact solution at dt = 0.1 ms [m]",
                          results[m].valid ? results[m].error : NAN, 6e-8);
-      std::printf("%-8g %-7u | %-31s | %-27s | %-27s | %8.0f | %u, %.2f s, %.2f s\n",
-                  row.dt * 1e3, row.n_steps, cell(results[0]).c_str(), cell(results[1]).c_str(),
+      std::printf("%-8g %-7u | %-31s | %-27s | %-27s | %8.0f | %u, %.2f s, %.2f s\n", row.dt * 1e3,
+                  row.n_steps, cell(results[0]).c_str(), cell(results[1]).c_str(),
                   cell(results[2]).c_str(), results[0].time / results[2].time, row.paper_ng,
                   row.paper_direct, row.paper_modal);
     }

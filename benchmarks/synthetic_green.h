@@ -11,8 +11,8 @@
 // and g_ij(w) = sum_k A_k phi_k(i) phi_k(j) / (w_k^2 - w^2 + 2j xi_k w_k w):
 // reciprocal (g_ij = g_ji) and passive (A_k > 0) like a real tyre's.
 
-#include <greentread/modal/modal_model.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/modal/modal_model.h>
 
 #include <cmath>
 #include <random>
@@ -22,12 +22,16 @@ namespace benchmark
 {
   struct SyntheticGreen
   {
-    std::vector<double>               frequency, damping, amplitude;
-    std::vector<std::vector<double>>  shape; // shape[k][point]
+    std::vector<double>                frequency, damping, amplitude;
+    std::vector<std::vector<double>>   shape; // shape[k][point]
     std::vector<std::array<double, 3>> points;
 
-    SyntheticGreen(unsigned int n_modes = 60, unsigned int nx = 10, unsigned int ny = 12,
-                   double length = 0.06, double width = 0.08, unsigned int seed = 2013)
+    SyntheticGreen(unsigned int n_modes = 60,
+                   unsigned int nx      = 10,
+                   unsigned int ny      = 12,
+                   double       length  = 0.06,
+                   double       width   = 0.08,
+                   unsigned int seed    = 2013)
     {
       std::mt19937                           random(seed);
       std::uniform_real_distribution<double> unit(0., 1.);
@@ -40,8 +44,8 @@ namespace benchmark
           damping.push_back(0.01 + 0.02 * unit(random));
           // Residues of a unit modal mass spread over the patch: 1e3 m/N s^-2.
           amplitude.push_back(1e3 * (0.5 + unit(random)));
-          const double a = 3. * unit(random), b = 3. * unit(random);
-          const double p = 2. * M_PI * unit(random), q = 2. * M_PI * unit(random);
+          const double        a = 3. * unit(random), b = 3. * unit(random);
+          const double        p = 2. * M_PI * unit(random), q = 2. * M_PI * unit(random);
           std::vector<double> phi;
           for (const auto &x : points)
             phi.push_back(std::cos(2. * M_PI * a * x[0] / length + p) *
@@ -57,7 +61,7 @@ namespace benchmark
       greentread::modal::ModalModel m;
       for (std::size_t k = 0; k < frequency.size(); ++k)
         {
-          const double w = 2. * M_PI * frequency[k], xi = damping[k];
+          const double               w = 2. * M_PI * frequency[k], xi = damping[k];
           const std::complex<double> lambda(-xi * w, w * std::sqrt(1. - xi * xi));
           const double               A = amplitude[k] * shape[k][i] * shape[k][j];
           m.add_pair(lambda, A / std::complex<double>(0., 2. * lambda.imag()));
@@ -76,8 +80,9 @@ namespace benchmark
     {
       greentread::modal::ModalModel alone;
       alone.add_pair(term.lambda, term.residue);
-      const auto own  = greentread::modal::sample(alone, frf.df, static_cast<unsigned int>(frf.values.size()));
-      double     mine = 0., norm = 0.;
+      const auto own =
+        greentread::modal::sample(alone, frf.df, static_cast<unsigned int>(frf.values.size()));
+      double mine = 0., norm = 0.;
       for (std::size_t k = 0; k < frf.values.size(); ++k)
         {
           mine += std::abs(own.values[k]);

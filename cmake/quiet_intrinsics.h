@@ -11,9 +11,9 @@
 // kept. (GCC 12 does not keep the pragmas in a precompiled header, bug
 // 64117; this is why the library has none.)
 #if defined(__x86_64__) || defined(__i386__)
-#  pragma GCC diagnostic push
-#  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#  pragma GCC diagnostic ignored "-Wuninitialized"
-#  include <immintrin.h>
-#  pragma GCC diagnostic pop
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#include <immintrin.h>
+#pragma GCC diagnostic pop
 #endif

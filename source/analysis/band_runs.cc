@@ -31,32 +31,35 @@ namespace greentread
 
 
     std::vector<BandRun>
-    plan_band_runs(const SpectraParameters &spectra, const double V, const double dt,
-                   const double distance, const double top_band)
+    plan_band_runs(const SpectraParameters &spectra,
+                   const double             V,
+                   const double             dt,
+                   const double             distance,
+                   const double             top_band)
     {
       // The most steps a run may extend to: 'Longest distance', and
       // longest_extension times its plan, but never fewer than planned.
       const auto longest_steps = [&](const BandRun &run) -> unsigned int {
         if (!spectra.extend_runs)
           return 0;
-        const double cap = std::min(spectra.longest_distance,
-                                    SpectraParameters::longest_extension * run.distance);
+        const double cap =
+          std::min(spectra.longest_distance, SpectraParameters::longest_extension * run.distance);
         return std::max(run.steps, unsigned(std::floor(cap / (V * run.time_step))));
       };
       BandRun fine;
-      fine.time_step = dt;
-      fine.distance  = distance;
-      fine.steps     = unsigned(samples(distance, V, dt));
-      fine.f_high    = top_band;
+      fine.time_step     = dt;
+      fine.distance      = distance;
+      fine.steps         = unsigned(samples(distance, V, dt));
+      fine.f_high        = top_band;
       fine.longest_steps = longest_steps(fine);
       const double split = std::min(spectra.low_bands_up_to, top_band);
       if (spectra.low_band_time_step <= dt * (1. + 1e-9) || split < 100.)
         return {fine};
 
       BandRun low;
-      low.name      = "low-rate";
-      low.time_step = spectra.low_band_time_step;
-      low.f_high    = split;
+      low.name                        = "low-rate";
+      low.time_step                   = spectra.low_band_time_step;
+      low.f_high                      = split;
       const FrequencyBand highest_low = third_octave_bands(split, split).back();
       if (highest_low.upper > 0.5 / low.time_step)
         {
@@ -69,14 +72,13 @@ namespace greentread
         }
 
       // The low-rate run's record: what the target needs in its bands.
-      const auto targeted = bands_between(spectra.target_from, split);
+      const auto        targeted = bands_between(spectra.target_from, split);
       const std::size_t at_least = samples(distance, V, low.time_step);
       // The cap rounds down: the run must fit the road it is given.
       const std::size_t at_most =
         static_cast<std::size_t>(std::floor(spectra.longest_distance / (V * low.time_step)));
-      std::size_t       N =
-        samples_for_error(low.time_step, targeted, spectra.lines_per_segment,
-                          spectra.target_error, at_least, at_most);
+      std::size_t N = samples_for_error(low.time_step, targeted, spectra.lines_per_segment,
+                                        spectra.target_error, at_least, at_most);
       if (N > at_most)
         {
           low.target_out_of_reach = true;
@@ -84,30 +86,33 @@ namespace greentread
         }
       // Nothing gained: the run at the scene's step meets the target there.
       const auto fine_errors =
-        targeted.empty() ? std::vector<double>() :
-                           predicted_standard_errors(fine.steps, dt, targeted,
-                                                     spectra.lines_per_segment);
-      if (std::all_of(fine_errors.begin(), fine_errors.end(),
-                      [&](const double e) { return e <= spectra.target_error; }))
+        targeted.empty() ?
+          std::vector<double>() :
+          predicted_standard_errors(fine.steps, dt, targeted, spectra.lines_per_segment);
+      if (std::all_of(fine_errors.begin(), fine_errors.end(), [&](const double e) {
+            return e <= spectra.target_error;
+          }))
         return {fine};
       low.distance = double(N) * V * low.time_step;
       // No longer than the run at the step (a texture file too short for
       // the target): the coarser step would gain nothing.
       if (low.distance <= distance * (1. + 1e-9))
         return {fine};
-      low.steps = unsigned(samples(low.distance, V, low.time_step));
+      low.steps         = unsigned(samples(low.distance, V, low.time_step));
       low.longest_steps = low.target_out_of_reach ? 0 : longest_steps(low);
-      const auto above = third_octave_bands(split, 2. * split);
-      fine.f_low       = above.size() > 1 ? above[1].nominal : top_band;
+      const auto above  = third_octave_bands(split, 2. * split);
+      fine.f_low        = above.size() > 1 ? above[1].nominal : top_band;
       return {fine, low};
     }
 
 
 
     unsigned int
-    more_steps_for_target(const SpectraParameters &spectra, const BandRun &run,
-                          const BandSpectrum &stress, const BandSpectrum &force,
-                          const unsigned int steps_done)
+    more_steps_for_target(const SpectraParameters &spectra,
+                          const BandRun           &run,
+                          const BandSpectrum      &stress,
+                          const BandSpectrum      &force,
+                          const unsigned int       steps_done)
     {
       if (steps_done == 0 || steps_done >= run.longest_steps)
         return 0;
@@ -130,8 +135,9 @@ namespace greentread
 
 
     std::string
-    low_rate_disagreement(const BandSpectrum &fine, const BandSpectrum &low_spectrum,
-                          const BandRun &low)
+    low_rate_disagreement(const BandSpectrum &fine,
+                          const BandSpectrum &low_spectrum,
+                          const BandRun      &low)
     {
       std::string worst;
       double      largest = 0.;
@@ -143,14 +149,15 @@ namespace greentread
           for (std::size_t b = 0; b < fine.bands.size(); ++b)
             if (std::abs(fine.bands[b].nominal - f) <= 1e-9 * f)
               {
-                const double d  = std::abs(low_spectrum.level[c] - fine.level[b]);
-                const double se = std::hypot(low_spectrum.standard_error[c], fine.standard_error[b]);
+                const double d = std::abs(low_spectrum.level[c] - fine.level[b]);
+                const double se =
+                  std::hypot(low_spectrum.standard_error[c], fine.standard_error[b]);
                 if (d > low_rate_tolerance * se && d / se > largest)
                   {
                     largest = d / se;
-                    worst   = "the " + format_number(f) + " Hz band: " +
-                            format_printf("%.1f", low_spectrum.level[c]) + " against " +
-                            format_printf("%.1f", fine.level[b]) + " dB, " +
+                    worst   = "the " + format_number(f) +
+                            " Hz band: " + format_printf("%.1f", low_spectrum.level[c]) +
+                            " against " + format_printf("%.1f", fine.level[b]) + " dB, " +
                             format_printf("%.1f", largest) + " combined standard errors apart";
                   }
               }
@@ -161,8 +168,9 @@ namespace greentread
 
 
     BandSpectrum
-    merge_band_spectra(const BandSpectrum &fine, const BandSpectrum &low_spectrum,
-                       const BandRun &low)
+    merge_band_spectra(const BandSpectrum &fine,
+                       const BandSpectrum &low_spectrum,
+                       const BandRun      &low)
     {
       BandSpectrum merged = fine;
       for (std::size_t b = 0; b < merged.bands.size(); ++b)
@@ -175,9 +183,9 @@ namespace greentread
                                          return std::abs(band.nominal - f) <= 1e-9 * f;
                                        });
           if (it == low_spectrum.bands.end())
-            throw InputError("merging band spectra: the low-rate run has no " +
-                             format_number(f) + " Hz band");
-          const std::size_t c = it - low_spectrum.bands.begin();
+            throw InputError("merging band spectra: the low-rate run has no " + format_number(f) +
+                             " Hz band");
+          const std::size_t c       = it - low_spectrum.bands.begin();
           merged.rms[b]             = low_spectrum.rms[c];
           merged.level[b]           = low_spectrum.level[c];
           merged.standard_error[b]  = low_spectrum.standard_error[c];

@@ -34,13 +34,13 @@ namespace greentread
         << " (unit of rms); levels of an rms <= 1e-10 reference are floored at " << level_floor
         << " dB\n";
       const bool errors = !s.standard_error.empty();
-      if (errors && (s.standard_error.size() != B || s.predicted_error.size() != B ||
-                     s.segments.size() != B))
+      if (errors &&
+          (s.standard_error.size() != B || s.predicted_error.size() != B || s.segments.size() != B))
         throw InputError("band spectrum file '" + file.string() + "': " + std::to_string(B) +
                          " bands but " + std::to_string(s.standard_error.size()) +
                          " standard errors");
       const bool sources = s.time_step.size() == B && s.duration.size() == B;
-      const bool bars = errors && sources && s.total_error.size() == B;
+      const bool bars    = errors && sources && s.total_error.size() == B;
       o << "nominal_Hz,centre_Hz,lower_Hz,upper_Hz,rms,level_dB"
         << (errors ? ",standard_error_dB,predicted_error_dB,segments" : "")
         << (errors && sources ? ",time_step_s,record_s" : "") << (bars ? ",total_error_dB" : "");
@@ -52,8 +52,7 @@ namespace greentread
           o << s.bands[b].nominal << ',' << s.bands[b].centre << ',' << s.bands[b].lower << ','
             << s.bands[b].upper << ',' << s.rms[b] << ',' << s.level[b];
           if (errors)
-            o << ',' << s.standard_error[b] << ',' << s.predicted_error[b] << ','
-              << s.segments[b];
+            o << ',' << s.standard_error[b] << ',' << s.predicted_error[b] << ',' << s.segments[b];
           if (errors && sources)
             o << ',' << s.time_step[b] << ',' << s.duration[b];
           if (bars)

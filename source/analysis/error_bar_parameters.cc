@@ -11,8 +11,7 @@ namespace greentread
     namespace
     {
       constexpr Discretisation all[] = {Discretisation::time_step, Discretisation::contact_grid,
-                                        Discretisation::mode_cutoff,
-                                        Discretisation::ring_section};
+                                        Discretisation::mode_cutoff, Discretisation::ring_section};
     } // namespace
 
 

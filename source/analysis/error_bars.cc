@@ -45,17 +45,19 @@ namespace greentread
     richardson_factor(const double ratio, const double order)
     {
       if (!(ratio > 1.))
-        throw NumericalError("richardson_factor: a coarsening ratio of " +
-                             format_number(ratio) + ", not above 1");
+        throw NumericalError("richardson_factor: a coarsening ratio of " + format_number(ratio) +
+                             ", not above 1");
       return 1. / (std::pow(ratio, order) - 1.);
     }
 
 
 
     std::vector<EstimateRun>
-    plan_estimate_runs(const std::vector<BandRun> &plan, const ErrorBarParameters &parameters,
-                       const double target_from, const double speed,
-                       const unsigned int subdivisions)
+    plan_estimate_runs(const std::vector<BandRun> &plan,
+                       const ErrorBarParameters   &parameters,
+                       const double                target_from,
+                       const double                speed,
+                       const unsigned int          subdivisions)
     {
       std::vector<EstimateRun> estimates;
       for (std::size_t i = 0; i < plan.size(); ++i)
@@ -66,22 +68,22 @@ namespace greentread
           for (const Discretisation d : parameters.estimates)
             {
               EstimateRun e;
-              e.what   = d;
-              e.of     = i;
-              e.f_low  = lowest.nominal;
-              e.f_high = plan[i].f_high;
-              e.run    = plan[i];
+              e.what     = d;
+              e.of       = i;
+              e.f_low    = lowest.nominal;
+              e.f_high   = plan[i].f_high;
+              e.run      = plan[i];
               e.run.name = (plan[i].name.empty() ? "" : plan[i].name + "_") + "coarser_" + label(d);
               e.run.target_out_of_reach = false;
               e.run.longest_steps       = 0; // a window of fixed length
-              double step = plan[i].time_step;
+              double step               = plan[i].time_step;
               if (d == Discretisation::time_step && i > 0)
                 {
                   // The low-rate run against the run at the scene's step,
                   // over that run's record: no run of its own.
                   e.window = plan[0].steps * plan[0].time_step;
-                  e.factor = 1. + richardson_factor(plan[i].time_step / plan[0].time_step,
-                                                    time_step_order);
+                  e.factor =
+                    1. + richardson_factor(plan[i].time_step / plan[0].time_step, time_step_order);
                   e.run.steps = 0;
                   estimates.push_back(e);
                   continue;
@@ -92,9 +94,10 @@ namespace greentread
                   // step a doubled step skips texture samples, which moves
                   // the low bands far more than the step's own error
                   // (doc/methods/analysis.md).
-                  step       = 0.5 * plan[i].time_step;
-                  e.factor   = 1. + richardson_factor(2., time_step_order);
-                  e.run.name = (plan[i].name.empty() ? "" : plan[i].name + "_") + "finer_" + label(d);
+                  step     = 0.5 * plan[i].time_step;
+                  e.factor = 1. + richardson_factor(2., time_step_order);
+                  e.run.name =
+                    (plan[i].name.empty() ? "" : plan[i].name + "_") + "finer_" + label(d);
                 }
               else if (d == Discretisation::contact_grid)
                 {
@@ -112,9 +115,10 @@ namespace greentread
               const unsigned int steps =
                 unsigned(std::ceil(window / whole * (1. - 1e-9)) * std::lround(whole / step));
               e.run.time_step = step;
-              e.run.steps     = std::min(steps, unsigned(plan[i].steps * plan[i].time_step / step + 1e-9));
-              e.run.distance  = e.run.steps * step * speed;
-              e.window        = e.run.steps * step;
+              e.run.steps =
+                std::min(steps, unsigned(plan[i].steps * plan[i].time_step / step + 1e-9));
+              e.run.distance = e.run.steps * step * speed;
+              e.window       = e.run.steps * step;
               estimates.push_back(e);
             }
         }
@@ -124,9 +128,13 @@ namespace greentread
 
 
     BandSpectrum
-    window_spectrum(const std::vector<double> &x, const double dt, const std::size_t samples,
-                    const double reference, const double f_low, const double f_high,
-                    const unsigned int lines_per_segment)
+    window_spectrum(const std::vector<double> &x,
+                    const double               dt,
+                    const std::size_t          samples,
+                    const double               reference,
+                    const double               f_low,
+                    const double               f_high,
+                    const unsigned int         lines_per_segment)
     {
       const std::size_t n = std::min(samples, x.size());
       return welch_band_spectrum(std::vector<double>(x.begin(), x.begin() + n), dt, reference,
@@ -136,18 +144,21 @@ namespace greentread
 
 
     void
-    add_estimate(BandSpectrum &target, const EstimateRun &estimate, const BandSpectrum &run,
+    add_estimate(BandSpectrum       &target,
+                 const EstimateRun  &estimate,
+                 const BandSpectrum &run,
                  const BandSpectrum &other)
     {
       const std::string name = label(estimate.what);
-      auto              it   = std::find_if(target.discretisation_error.begin(),
-                                            target.discretisation_error.end(),
-                                            [&](const auto &e) { return e.first == name; });
+      auto it = std::find_if(target.discretisation_error.begin(), target.discretisation_error.end(),
+                             [&](const auto &e) {
+                               return e.first == name;
+                             });
       if (it == target.discretisation_error.end())
         {
           target.discretisation_error.emplace_back(
-            name, std::vector<double>(target.bands.size(),
-                                      std::numeric_limits<double>::quiet_NaN()));
+            name,
+            std::vector<double>(target.bands.size(), std::numeric_limits<double>::quiet_NaN()));
           it = target.discretisation_error.end() - 1;
         }
       for (std::size_t b = 0; b < target.bands.size(); ++b)
@@ -165,10 +176,13 @@ namespace greentread
 
 
     void
-    add_error_bars(RunSpectrum &merged, const std::vector<EstimateRun> &estimates,
-                   const std::vector<BandRun> &plan, const std::vector<bool> &used,
+    add_error_bars(RunSpectrum                                                   &merged,
+                   const std::vector<EstimateRun>                                &estimates,
+                   const std::vector<BandRun>                                    &plan,
+                   const std::vector<bool>                                       &used,
                    const std::function<const RunSpectrum &(const std::string &)> &run_of,
-                   const double stress_reference, const unsigned int lines_per_segment)
+                   const double                                                   stress_reference,
+                   const unsigned int                                             lines_per_segment)
     {
       if (estimates.empty())
         return;
@@ -180,9 +194,9 @@ namespace greentread
           // low-rate run's time step) the low-rate run and the run at the
           // scene's step.
           const bool         low_rate_step = e.run.steps == 0;
-          const RunSpectrum &run   = run_of(plan[e.of].name);
-          const RunSpectrum &other = run_of(low_rate_step ? plan[0].name : e.run.name);
-          const auto         samples = [&](const RunSpectrum &r) {
+          const RunSpectrum &run           = run_of(plan[e.of].name);
+          const RunSpectrum &other         = run_of(low_rate_step ? plan[0].name : e.run.name);
+          const auto         samples       = [&](const RunSpectrum &r) {
             return std::size_t(std::llround(e.window / r.time_step));
           };
           for (const auto &[history, reference, target] :
@@ -192,8 +206,8 @@ namespace greentread
             add_estimate(*target, e,
                          window_spectrum(run.*history, run.time_step, samples(run), reference,
                                          e.f_low, e.f_high, lines_per_segment),
-                         window_spectrum(other.*history, other.time_step, samples(other),
-                                         reference, e.f_low, e.f_high, lines_per_segment));
+                         window_spectrum(other.*history, other.time_step, samples(other), reference,
+                                         e.f_low, e.f_high, lines_per_segment));
         }
       combine_errors(merged.spectrum);
       combine_errors(merged.force_spectrum);

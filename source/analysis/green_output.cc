@@ -9,8 +9,9 @@ namespace greentread
   namespace analysis
   {
     void
-    write_contact_points(const std::filesystem::path &file_name, const periodic::ContactPatch &patch,
-                         const base::ParameterRecord &record)
+    write_contact_points(const std::filesystem::path  &file_name,
+                         const periodic::ContactPatch &patch,
+                         const base::ParameterRecord  &record)
     {
       base::AtomicFile file(file_name);
       auto            &o = file.stream();
@@ -30,14 +31,14 @@ namespace greentread
 
     GreenPairFiles
     write_green_pairs(const std::filesystem::path                              &directory,
-                      const base::FrequencyResponseMatrix                     &green,
+                      const base::FrequencyResponseMatrix                      &green,
                       const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                       const std::string                                        &title,
                       const base::ParameterRecord                              &record)
     {
       GreenPairFiles files;
       std::string    magnitude, phase;
-      const char *colours[] = {"black", "#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b"};
+      const char    *colours[] = {"black", "#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b"};
       for (std::size_t n = 0; n < pairs.size(); ++n)
         {
           const auto [i, j]      = pairs[n];
@@ -54,8 +55,10 @@ namespace greentread
       files.plotted = base::plot_png(
         directory / "green_functions.png",
         "set datafile separator ','\nset datafile commentschars '#'\nset multiplot layout 2,1 "
-        "title '" + title + "'\nset grid\nset xlabel 'f [Hz]'\nset ylabel '|g| [m/N]'\n"
-        "set logscale y\nset format y '10^{%L}'\n" +
+        "title '" +
+          title +
+          "'\nset grid\nset xlabel 'f [Hz]'\nset ylabel '|g| [m/N]'\n"
+          "set logscale y\nset format y '10^{%L}'\n" +
           magnitude +
           "\nunset logscale y\nset format y '%g'\nset ylabel 'phase [deg]'\nset yrange "
           "[-180:180]\nset ytics 90\n" +
@@ -67,7 +70,7 @@ namespace greentread
 
 
     std::string
-    summarise_pairs(const base::FrequencyResponseMatrix                     &green,
+    summarise_pairs(const base::FrequencyResponseMatrix                      &green,
                     const std::vector<std::pair<unsigned int, unsigned int>> &pairs)
     {
       // The driving point: resonance and passivity at a glance.

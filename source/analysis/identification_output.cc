@@ -100,18 +100,18 @@ namespace greentread
     IdentificationStatistics::describe(const PointPairs                      &pairs,
                                        const modal::IdentificationParameters &parameters) const
     {
-      const std::string chosen     = modal::to_string(parameters.residue_model);
+      const std::string chosen = modal::to_string(parameters.residue_model);
       const std::string other_name =
         parameters.residue_model == modal::ResidueModel::eq7 ? "general" : "eq7";
-      std::string text =
-        "Error E (Eq. 50): min " +
-        format_printf("%.4g", *std::min_element(errors.begin(), errors.end())) + ", median " +
-        format_printf("%.4g", median(errors)) + ", max " + format_printf("%.4g", errors[worst]) +
-        " (worst: i = " + std::to_string(pairs[worst].first) +
-        ", j = " + std::to_string(pairs[worst].second) + ")\nModes N_m: min " +
-        format_number(*std::min_element(modes.begin(), modes.end())) + ", median " +
-        format_number(median(modes)) + ", max " +
-        format_number(*std::max_element(modes.begin(), modes.end())) + "\n";
+      std::string text = "Error E (Eq. 50): min " +
+                         format_printf("%.4g", *std::min_element(errors.begin(), errors.end())) +
+                         ", median " + format_printf("%.4g", median(errors)) + ", max " +
+                         format_printf("%.4g", errors[worst]) +
+                         " (worst: i = " + std::to_string(pairs[worst].first) +
+                         ", j = " + std::to_string(pairs[worst].second) + ")\nModes N_m: min " +
+                         format_number(*std::min_element(modes.begin(), modes.end())) +
+                         ", median " + format_number(median(modes)) + ", max " +
+                         format_number(*std::max_element(modes.begin(), modes.end())) + "\n";
       if (!other.empty())
         text += "Residue models on the same poles: median E " + chosen + " " +
                 format_printf("%.4g", median(errors)) + ", " + other_name + " " +
@@ -122,12 +122,13 @@ namespace greentread
       // root at the edge of the stability test moves across it with the
       // round-off of another CPU's vector instructions (45 or 46 physical of
       // the example's 54), while the kept modes and E do not change.
-      text += "Roots of the LSCE polynomials: " + std::to_string(poles.roots) + "; rejected " +
-              std::to_string(poles.unstable) + " unstable, " + std::to_string(poles.out_of_band) +
-              " out of band; of the other " + std::to_string(poles.spurious + poles.physical) +
-              ", those not stable across orders as spurious" +
-              "\nLargest condition estimate of a Hankel matrix: " +
-              format_printf("%.3g", condition) + "\n";
+      text +=
+        "Roots of the LSCE polynomials: " + std::to_string(poles.roots) + "; rejected " +
+        std::to_string(poles.unstable) + " unstable, " + std::to_string(poles.out_of_band) +
+        " out of band; of the other " + std::to_string(poles.spurious + poles.physical) +
+        ", those not stable across orders as spurious" +
+        "\nLargest condition estimate of a Hankel matrix: " + format_printf("%.3g", condition) +
+        "\n";
       if (parameters.bands == 0)
         text += "Zoom LSCE (8 bands) used for " + std::to_string(bands_used) + " of " +
                 std::to_string(pairs.size()) + " FRFs (E above " +
@@ -140,7 +141,7 @@ namespace greentread
     bool
     write_worst_fit(const std::filesystem::path          &directory,
                     const base::FrequencyResponse        &frf,
-                    const modal::Identification           &fit,
+                    const modal::Identification          &fit,
                     std::pair<unsigned int, unsigned int> pair,
                     const base::ParameterRecord          &record)
     {
@@ -162,18 +163,22 @@ namespace greentread
       }
       const std::string data  = base::gnuplot_quote(directory / "worst_fit.csv");
       const std::string title = "g_{" + std::to_string(pair.first) + "," +
-                                std::to_string(pair.second) + "}: N_m = " +
-                                std::to_string(fit.n_modes) + ", E = " +
-                                format_printf("%.3g", 100. * fit.error) + " %";
+                                std::to_string(pair.second) +
+                                "}: N_m = " + std::to_string(fit.n_modes) +
+                                ", E = " + format_printf("%.3g", 100. * fit.error) + " %";
       return base::plot_png(
         directory / "identification_worst.png",
         "set datafile separator ','\nset multiplot layout 2,1 title 'GreenTread identify, worst "
-        "fit: " + title + "'\nset grid\nset xlabel 'f [Hz]'\nset ylabel '|g| [m/N]'\n"
-        "set logscale y\nset format y '10^{%L}'\nplot " + data +
+        "fit: " +
+          title +
+          "'\nset grid\nset xlabel 'f [Hz]'\nset ylabel '|g| [m/N]'\n"
+          "set logscale y\nset format y '10^{%L}'\nplot " +
+          data +
           " skip 1 using 1:(sqrt($2**2+$3**2)) with lines lc rgb 'black' lw 2 title 'FRF', '' "
           "skip 1 using 1:(sqrt($4**2+$5**2)) with lines lc rgb '#d62728' dt 2 lw 2 title "
           "'modal fit'\nunset logscale y\nset format y '%g'\nset ylabel 'phase [deg]'\n"
-          "set yrange [-180:180]\nset ytics 90\nplot " + data +
+          "set yrange [-180:180]\nset ytics 90\nplot " +
+          data +
           " skip 1 using 1:(atan2($3,$2)*180/pi) with lines lc rgb 'black' lw 2 title 'FRF', '' "
           "skip 1 using 1:(atan2($5,$4)*180/pi) with lines lc rgb '#d62728' dt 2 lw 2 title "
           "'modal fit'\nunset multiplot\n",

@@ -7,9 +7,9 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <iostream>
 #include <limits>
+#include <map>
 
 namespace greentread
 {
@@ -88,13 +88,17 @@ namespace greentread
 
     PatchLattice::PatchLattice(const std::vector<std::array<double, 3>> &points_,
                                const std::string                        &source)
-      : points(points_)
+        : points(points_)
     {
       for (const auto &p : points)
         {
-          if (std::none_of(xs.begin(), xs.end(), [&](double x) { return std::abs(x - p[0]) < 1e-7; }))
+          if (std::none_of(xs.begin(), xs.end(), [&](double x) {
+                return std::abs(x - p[0]) < 1e-7;
+              }))
             xs.push_back(p[0]);
-          if (std::none_of(ys.begin(), ys.end(), [&](double y) { return std::abs(y - p[1]) < 1e-7; }))
+          if (std::none_of(ys.begin(), ys.end(), [&](double y) {
+                return std::abs(y - p[1]) < 1e-7;
+              }))
             ys.push_back(p[1]);
         }
       nx                     = xs.size();
@@ -102,8 +106,8 @@ namespace greentread
       const unsigned int n_p = points.size();
       if (nx * ny != n_p)
         throw InputError("the contact points of " + source + " are not a lattice (" +
-                         std::to_string(nx) + " x " + std::to_string(ny) + " != " +
-                         std::to_string(n_p) + ")");
+                         std::to_string(nx) + " x " + std::to_string(ny) +
+                         " != " + std::to_string(n_p) + ")");
       for (unsigned int p = 0; p < n_p; ++p)
         if (std::hypot(points[p][0], points[p][1]) <
             std::hypot(points[centre][0], points[centre][1]))
@@ -116,14 +120,16 @@ namespace greentread
 
 
     void
-    write_road_report(const std::filesystem::path &directory, const std::string &road_name,
-                      const road::Texture &texture, const base::ParameterRecord &record)
+    write_road_report(const std::filesystem::path &directory,
+                      const std::string           &road_name,
+                      const road::Texture         &texture,
+                      const base::ParameterRecord &record)
     {
       const std::string label    = road_label(road_name);
       const auto        bands    = road::wavelength_bands(std::max(2e-3, 4. * texture.dx),
-                                                 std::min(0.1, 0.5 * texture.length()));
+                                                          std::min(0.1, 0.5 * texture.length()));
       const auto        spectrum = road::texture_spectrum(texture, bands);
-      const double      mpd      = texture.length() >= 0.1 ? road::mean_profile_depth(texture) : NAN;
+      const double      mpd = texture.length() >= 0.1 ? road::mean_profile_depth(texture) : NAN;
       std::cout << "  " << texture.nx << " x " << texture.ny << " samples every "
                 << format_number(1e6 * texture.dx) << " um, MPD "
                 << format_printf("%.3f", 1e3 * mpd) << " mm (ISO 13473-1), ETD "
@@ -141,8 +147,8 @@ namespace greentread
                      "set datafile separator ','\nset datafile commentschars '#'\nset grid\n"
                      "set logscale x\nset xrange [*:*] reverse\nset xlabel 'wavelength [mm]'\n"
                      "set ylabel 'texture level [dB re 1 um]'\nset title 'Road " +
-                       road_name + ": texture spectrum, MPD " +
-                       format_printf("%.2f", 1e3 * mpd) + " mm'\nplot " +
+                       road_name + ": texture spectrum, MPD " + format_printf("%.2f", 1e3 * mpd) +
+                       " mm'\nplot " +
                        base::gnuplot_quote(directory / ("road_" + label + "_spectrum.csv")) +
                        " skip 2 using 1:4 with linespoints lw 2 notitle\n",
                      record);
@@ -160,8 +166,8 @@ namespace greentread
       img.commit();
       base::plot_png(directory / ("road_" + label + "_texture.png"),
                      "set view map\nset size ratio -1\nset xlabel 'x [mm]'\nset ylabel 'y [mm]'\n"
-                     "set cblabel 'z [mm]'\nset palette grey\nset title 'Road " + road_name +
-                       " (sample)'\nplot " +
+                     "set cblabel 'z [mm]'\nset palette grey\nset title 'Road " +
+                       road_name + " (sample)'\nplot " +
                        base::gnuplot_quote(directory / ("road_" + label + "_texture.dat")) +
                        " using 1:2:3 with image notitle\n",
                      record, 800, 700);
@@ -169,21 +175,25 @@ namespace greentread
 
 
 
-    RunOutput::RunOutput(const std::filesystem::path &directory_, const std::string &run_,
-                         const PatchLattice &lattice_, const double speed_,
-                         const double tributary_, const Eigen::VectorXd &reporting_,
-                         const unsigned int n_steps_, const unsigned int n_frames,
+    RunOutput::RunOutput(const std::filesystem::path &directory_,
+                         const std::string           &run_,
+                         const PatchLattice          &lattice_,
+                         const double                 speed_,
+                         const double                 tributary_,
+                         const Eigen::VectorXd       &reporting_,
+                         const unsigned int           n_steps_,
+                         const unsigned int           n_frames,
                          const base::ParameterRecord &record_)
-      : directory(directory_)
-      , run(run_)
-      , lattice(lattice_)
-      , speed(speed_)
-      , tributary(tributary_)
-      , reporting(reporting_)
-      , n_steps(n_steps_)
-      , frame_every(std::max(1u, n_steps_ / n_frames))
-      , record(record_)
-      , history(directory_ / ("history_" + run_ + ".csv"))
+        : directory(directory_)
+        , run(run_)
+        , lattice(lattice_)
+        , speed(speed_)
+        , tributary(tributary_)
+        , reporting(reporting_)
+        , n_steps(n_steps_)
+        , frame_every(std::max(1u, n_steps_ / n_frames))
+        , record(record_)
+        , history(directory_ / ("history_" + run_ + ".csv"))
     {
       if (static_cast<std::size_t>(reporting.size()) != lattice.points.size())
         throw InputError("rolling output: " + std::to_string(reporting.size()) +
@@ -193,9 +203,11 @@ namespace greentread
       force.reserve(n_steps);
       auto &ho = history.stream();
       ho.precision(8);
-      ho << "# time histories at the points with x0 nearest 0 (i_x = " << lattice.centre / lattice.ny
+      ho << "# time histories at the points with x0 nearest 0 (i_x = "
+         << lattice.centre / lattice.ny
          << "): u inward displacement [m], sigma contact stress [Pa] = mean force over "
-            "the step / tributary area " << tributary << " m^2\ntime,x_road,total_force";
+            "the step / tributary area "
+         << tributary << " m^2\ntime,x_road,total_force";
       for (const auto p : lattice.middle_row)
         ho << ",u_" << p << ",sigma_" << p;
       ho << '\n';
@@ -245,7 +257,8 @@ namespace greentread
       // The time histories and a contact map, plotted.
       const std::string hq = base::gnuplot_quote(directory / ("history_" + run + ".csv"));
       std::string       u_plot, s_plot;
-      for (std::size_t k = 0; k < lattice.middle_row.size(); k += std::max<std::size_t>(1, lattice.middle_row.size() / 4))
+      for (std::size_t k = 0; k < lattice.middle_row.size();
+           k += std::max<std::size_t>(1, lattice.middle_row.size() / 4))
         {
           const std::string col = std::to_string(4 + 2 * k);
           const std::string tt  = "title 'point " + std::to_string(lattice.middle_row[k]) + "'";
@@ -256,7 +269,9 @@ namespace greentread
         }
       base::plot_png(directory / ("history_" + run + ".png"),
                      "set datafile separator ','\nset datafile commentschars '#'\n"
-                     "set multiplot layout 2,1 title 'Road " + title + ": points at x0 = 0 (Figures A.12-A.13)'\n"
+                     "set multiplot layout 2,1 title 'Road " +
+                       title +
+                       ": points at x0 = 0 (Figures A.12-A.13)'\n"
                        "set grid\nset xlabel 'road position [m]'\nset ylabel 'u [mm]'\n" +
                        u_plot + "\nset ylabel 'contact stress [MPa]'\n" + s_plot +
                        "\nunset multiplot\n",
@@ -275,8 +290,11 @@ namespace greentread
         base::plot_png(directory / ("map_" + run + ".png"),
                        "set view map\nset size ratio -1\nset xlabel 'x [mm]'\nset ylabel "
                        "'y [mm]'\nset cblabel 'contact stress [MPa]'\nset palette "
-                       "rgbformulae 33,13,10\nset title 'Road " + title + ": contact stress at the last "
-                         "step'\nplot " + base::gnuplot_quote(directory / ("map_" + run + ".dat")) +
+                       "rgbformulae 33,13,10\nset title 'Road " +
+                         title +
+                         ": contact stress at the last "
+                         "step'\nplot " +
+                         base::gnuplot_quote(directory / ("map_" + run + ".dat")) +
                          " using 1:2:3 with image notitle\n",
                        record, 800, 700);
       }
@@ -285,11 +303,14 @@ namespace greentread
 
 
     void
-    write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &results,
-                  const std::vector<std::string> &roads, const std::vector<double> &speeds,
-                  const double stress_reference, const double f_max,
-                  const SpectraParameters &spectra,
-                  const base::ParameterRecord &record)
+    write_spectra(const std::filesystem::path    &directory,
+                  const std::vector<RunSpectrum> &results,
+                  const std::vector<std::string> &roads,
+                  const std::vector<double>      &speeds,
+                  const double                    stress_reference,
+                  const double                    f_max,
+                  const SpectraParameters        &spectra,
+                  const base::ParameterRecord    &record)
     {
       // Stage analysis: the spectra per road (speeds) and per speed (roads),
       // of the stress at the patch centre and of the total force.
@@ -326,8 +347,8 @@ namespace greentread
             const BandSpectrum &s = r.*which;
             for (std::size_t b = 0; b < s.bands.size(); ++b)
               {
-                o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ','
-                  << s.level[b] << ',' << s.standard_error[b] << ',' << s.segments[b] << ','
+                o << r.road << ',' << r.speed_kmh << ',' << s.bands[b].nominal << ',' << s.level[b]
+                  << ',' << s.standard_error[b] << ',' << s.segments[b] << ','
                   << 1e6 * s.time_step[b] << ',' << s.duration[b] * r.speed_kmh / 3.6;
                 if (!labels.empty())
                   o << ',' << (s.total_error.empty() ? s.standard_error[b] : s.total_error[b]);
@@ -354,16 +375,16 @@ namespace greentread
           write_band_spectrum_csv(directory / ("spectrum_" + run + ".csv"), r.spectrum,
                                   "contact stress at the patch centre (the mean over the "
                                   "reporting cell), Pa");
-          write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"),
-                                  r.force_spectrum, "total contact force, N");
+          write_band_spectrum_csv(directory / ("spectrum_force_" + run + ".csv"), r.force_spectrum,
+                                  "total contact force, N");
         }
       write_csv("spectra.csv",
                 "L_f = 20 log10(sigma_rms / sigma0) of the contact stress at the patch centre "
                 "(the mean over the reporting cell), sigma0 = " +
                   format_number(stress_reference) + " Pa",
                 &RunSpectrum::spectrum);
-      write_csv("spectra_force.csv",
-                "L_F = 20 log10(F_rms / 1 N) of the total contact force", &RunSpectrum::force_spectrum);
+      write_csv("spectra_force.csv", "L_F = 20 log10(F_rms / 1 N) of the total contact force",
+                &RunSpectrum::force_spectrum);
       const auto plot_spectra = [&](const std::filesystem::path &png, const std::string &title,
                                     const std::string &kind, const std::string &ylabel,
                                     const std::function<bool(const RunSpectrum &)> &take) {
@@ -378,25 +399,28 @@ namespace greentread
               const std::string csv = base::gnuplot_quote(
                 directory / (kind + road_label(r.road) + "_" + speed_label(r.speed_kmh) + ".csv"));
               const std::string lc = " lc " + std::to_string(++colour);
-              const std::string e = r.spectrum.total_error.empty() ? "$7" : "$12";
+              const std::string e  = r.spectrum.total_error.empty() ? "$7" : "$12";
               bands += (bands.empty() ? "plot " : ", ") + csv + " skip 2 using 1:($6-" + e +
-                       "):($6+" + e + ") with filledcurves fs transparent solid 0.2 noborder" +
-                       lc + " notitle";
+                       "):($6+" + e + ") with filledcurves fs transparent solid 0.2 noborder" + lc +
+                       " notitle";
               curves += ", " + csv + " skip 2 using 1:6 with linespoints lw 2" + lc + " title '" +
                         road_label(r.road) + ", " + format_number(r.speed_kmh) + " km/h'";
             }
         const std::string plot = bands + curves;
-        base::plot_png(png,
-                       "set datafile separator ','\nset datafile commentschars '#'\nset grid\n"
-                       "set logscale x\nset xrange [90:5600]\nset xtics (100,200,500,1000,2000,5000)\n"
-                       "set xlabel 'one-third-octave band [Hz]'\nset ylabel '" + ylabel +
-                         "'\nset key left bottom\nset title '" + title + "'\n" + plot + "\n",
-                       record);
+        base::plot_png(
+          png,
+          "set datafile separator ','\nset datafile commentschars '#'\nset grid\n"
+          "set logscale x\nset xrange [90:5600]\nset xtics (100,200,500,1000,2000,5000)\n"
+          "set xlabel 'one-third-octave band [Hz]'\nset ylabel '" +
+            ylabel + "'\nset key left bottom\nset title '" + title + "'\n" + plot + "\n",
+          record);
       };
       const std::string stress_label = "L_f [dB re " + format_number(stress_reference) + " Pa]";
       for (const auto &road_name : roads)
         {
-          const auto take = [&](const RunSpectrum &r) { return r.road == road_name; };
+          const auto take = [&](const RunSpectrum &r) {
+            return r.road == road_name;
+          };
           plot_spectra(directory / ("spectra_" + road_label(road_name) + ".png"),
                        "Contact stress at the patch centre, road " + road_name + " (Figure A.14)",
                        "spectrum_", stress_label, take);
@@ -408,11 +432,13 @@ namespace greentread
         plot_spectra(directory / ("spectra_" + speed_label(v) + ".png"),
                      "Contact stress at the patch centre, " + format_number(v) +
                        " km/h (Figure A.15)",
-                     "spectrum_", stress_label, [&](const RunSpectrum &r) { return r.speed_kmh == v; });
+                     "spectrum_", stress_label, [&](const RunSpectrum &r) {
+                       return r.speed_kmh == v;
+                     });
 
       // The band of the highest level per run: does it rise with the speed?
       const auto summarise = [](const BandSpectrum &spectrum) {
-        std::size_t peak = 0;
+        std::size_t peak  = 0;
         double      power = 0., moment = 0.;
         for (std::size_t b = 0; b < spectrum.bands.size(); ++b)
           {
@@ -442,8 +468,9 @@ namespace greentread
                 << " dB, 'Spectra/Standard error target'):\n";
       bool all_met = true;
       for (const auto &r : results)
-        for (const auto &[what, s] : {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
-                                      {"force", &r.force_spectrum}})
+        for (const auto &[what, s] :
+             {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
+              {"force", &r.force_spectrum}})
           {
             double      largest = 0.;
             std::string missed;
@@ -482,7 +509,7 @@ namespace greentread
                             << (spectra.extend_runs ?
                                   " (the run stopped at its longest: 'Spectra/Longest "
                                   "distance', 3 times its plan, or the road's length)" :
-                                  step > fine_step * (1. + 1e-9) ?
+                                step > fine_step * (1. + 1e-9) ?
                                   " ('Spectra/Longest distance', 'Spectra/Extend runs')" :
                                   "");
                 std::cout << '\n';
@@ -501,8 +528,9 @@ namespace greentread
                    "bars/Estimates'; in the bands within "
                 << format_number(leading) << " dB of the highest, the largest contributor):\n";
       for (const auto &r : results)
-        for (const auto &[what, s] : {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
-                                      {"force", &r.force_spectrum}})
+        for (const auto &[what, s] :
+             {std::pair<const char *, const BandSpectrum *>{"stress", &r.spectrum},
+              {"force", &r.force_spectrum}})
           {
             double largest = 0., band = 0.;
             for (std::size_t b = 0; b < s->bands.size(); ++b)
@@ -516,7 +544,8 @@ namespace greentread
             std::cout << "  " << road_label(r.road) << " at " << format_number(r.speed_kmh)
                       << " km/h, " << what << ": largest " << format_printf("%.2f", largest)
                       << " dB (" << format_number(band) << " Hz); leading bands: "
-                      << (c.what == "statistics" ? "the standard error" : "the " + c.what + "'s estimate")
+                      << (c.what == "statistics" ? "the standard error" :
+                                                   "the " + c.what + "'s estimate")
                       << ", " << format_printf("%.2f", c.error) << " dB at "
                       << format_number(c.band) << " Hz: " << c.parameter << '\n';
           }

@@ -11,7 +11,8 @@ namespace greentread
   {
     void
     write_modal_parameters(const std::filesystem::path &file_name,
-                           const modal::ModalModel &model, const base::ParameterRecord &record)
+                           const modal::ModalModel     &model,
+                           const base::ParameterRecord &record)
     {
       base::AtomicFile file(file_name);
       file.stream().precision(16);
@@ -26,7 +27,8 @@ namespace greentread
 
 
     void
-    write_time_history(const std::filesystem::path &file_name, const sdof::SdofRun &run,
+    write_time_history(const std::filesystem::path &file_name,
+                       const sdof::SdofRun         &run,
                        const base::ParameterRecord &record)
     {
       base::AtomicFile file(file_name);
@@ -41,8 +43,10 @@ namespace greentread
 
 
     void
-    write_reference(const std::filesystem::path &file_name, const sdof::SdofRun &run,
-                    const sdof::ExactSolution &exact, const road::RoadTrack &track,
+    write_reference(const std::filesystem::path &file_name,
+                    const sdof::SdofRun         &run,
+                    const sdof::ExactSolution   &exact,
+                    const road::RoadTrack       &track,
                     const base::ParameterRecord &record)
     {
       base::AtomicFile file(file_name);
@@ -62,9 +66,13 @@ namespace greentread
 
 
     void
-    write_summary(const std::filesystem::path &file_name, const sdof::SdofRun &run,
-                  const sdof::SdofErrors &e, const sdof::ExactSolution &exact, const double a0,
-                  const std::string &size_name, const base::ParameterRecord &record)
+    write_summary(const std::filesystem::path &file_name,
+                  const sdof::SdofRun         &run,
+                  const sdof::SdofErrors      &e,
+                  const sdof::ExactSolution   &exact,
+                  const double                 a0,
+                  const std::string           &size_name,
+                  const base::ParameterRecord &record)
     {
       base::AtomicFile file(file_name);
       auto            &out = file.stream();
@@ -94,23 +102,31 @@ namespace greentread
 
 
     bool
-    plot_time_history(const std::filesystem::path &directory, const std::string &label,
-                      const double peak_force, const base::ParameterRecord &record)
+    plot_time_history(const std::filesystem::path &directory,
+                      const std::string           &label,
+                      const double                 peak_force,
+                      const base::ParameterRecord &record)
     {
       const double      force_top = std::max(1.0, 1.3 * peak_force);
       const std::string commands =
         "set datafile separator ','\n"
-        "set multiplot layout 2,1 title 'GreenTread sdof: " + label + "'\n"
+        "set multiplot layout 2,1 title 'GreenTread sdof: " +
+        label +
+        "'\n"
         "set grid\nset key top right\n"
         "set xlabel 't [s]'\nset ylabel 'u [mm]'\n"
-        "plot " + base::gnuplot_quote(directory / "reference.csv") +
+        "plot " +
+        base::gnuplot_quote(directory / "reference.csv") +
         " skip 1 using 1:($2*1e3) with lines lc rgb '#999999' lw 2 title 'road u_r', " +
         "'' skip 1 using 1:($3*1e3) with lines lc rgb 'black' dt 2 lw 2 title 'exact', " +
         base::gnuplot_quote(directory / "time_history.csv") +
         " skip 1 using 1:($2*1e3) with lines lc rgb '#d62728' title 'computed'\n"
         "set ylabel 'contact force F [N] (mean over each step)'\n"
-        "set yrange [" + format_number(-0.05 * force_top) + ":" + format_number(force_top) + "]\n"
-        "plot " + base::gnuplot_quote(directory / "reference.csv") +
+        "set yrange [" +
+        format_number(-0.05 * force_top) + ":" + format_number(force_top) +
+        "]\n"
+        "plot " +
+        base::gnuplot_quote(directory / "reference.csv") +
         " skip 1 using 1:5 with lines lc rgb 'black' dt 2 lw 2 title 'exact (impacts clipped)', " +
         base::gnuplot_quote(directory / "time_history.csv") +
         " skip 1 using 1:4 with lines lc rgb '#d62728' title 'computed'\n"
@@ -126,22 +142,29 @@ namespace greentread
       return "Errors against the exact piecewise-analytic solution (" +
              std::to_string(exact.n_impacts()) + " impacts, " + std::to_string(exact.n_phases()) +
              " phases):\n"
-             "  max |u - u_exact|              = " + format_printf("%.4g", 1e9 * e.max_u_error) +
-             " nm" +
+             "  max |u - u_exact|              = " +
+             format_printf("%.4g", 1e9 * e.max_u_error) + " nm" +
              (a0 > 0 ? " (" + format_printf("%.4g", 100. * e.max_u_error / a0) + " % of A0)" : "") +
              "\n"
-             "  max |v - v_exact|              = " + format_printf("%.4g", 1e6 * e.max_v_error) +
+             "  max |v - v_exact|              = " +
+             format_printf("%.4g", 1e6 * e.max_v_error) +
              " um/s\n"
-             "  max |F - F_exact| (step means) = " + format_printf("%.4g", e.max_force_error) +
-             " N (peak contact force " + format_printf("%.4g", e.peak_contact_force) + " N)\n"
-             "  total impulse error            = " + format_printf("%.4g", 1e6 * e.impulse_error) +
+             "  max |F - F_exact| (step means) = " +
+             format_printf("%.4g", e.max_force_error) + " N (peak contact force " +
+             format_printf("%.4g", e.peak_contact_force) +
+             " N)\n"
+             "  total impulse error            = " +
+             format_printf("%.4g", 1e6 * e.impulse_error) +
              " ppm\n"
              "  max penetration at time steps  = " +
-             format_printf("%.4g", 1e9 * e.max_penetration_grid) + " nm\n"
+             format_printf("%.4g", 1e9 * e.max_penetration_grid) +
+             " nm\n"
              "  max penetration inside steps   = " +
-             format_printf("%.4g", 1e9 * e.max_penetration_step) + " nm\n"
-             "  fraction of time in contact    = " + format_printf("%.4f", e.contact_fraction) +
-             " (exact " + format_printf("%.4f", e.exact_contact_fraction) + ")\n";
+             format_printf("%.4g", 1e9 * e.max_penetration_step) +
+             " nm\n"
+             "  fraction of time in contact    = " +
+             format_printf("%.4f", e.contact_fraction) + " (exact " +
+             format_printf("%.4f", e.exact_contact_fraction) + ")\n";
     }
   } // namespace analysis
 } // namespace greentread

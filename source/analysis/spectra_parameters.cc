@@ -60,8 +60,7 @@ namespace greentread
           "times the planned record. false: every run rolls its planned record only.");
         for (const char *direction : {"along", "across"})
           prm.declare_entry(
-            std::string("Reporting cell ") + direction, "0",
-            base::RangePattern::non_negative("mm"),
+            std::string("Reporting cell ") + direction, "0", base::RangePattern::non_negative("mm"),
             std::string("The reporting cell's size ") + direction +
               " the road, in mm: the stress at the patch centre (its history and spectra) is "
               "the mean over this cell, centred at the patch centre, whatever the contact grid. "
@@ -81,15 +80,15 @@ namespace greentread
     {
       prm.enter_subsection("Spectra");
       {
-        lines_per_segment = prm.get_integer("Lines per segment");
-        target_error      = prm.get_double("Standard error target");
-        target_from       = prm.get_double("Target from");
-        low_bands_up_to      = prm.get_double("Low bands up to");
-        low_band_time_step   = prm.get_double("Low-band time step");
-        longest_distance     = prm.get_double("Longest distance");
-        extend_runs          = prm.get_bool("Extend runs");
-        reporting_along   = 1e-3 * prm.get_double("Reporting cell along");
-        reporting_across  = 1e-3 * prm.get_double("Reporting cell across");
+        lines_per_segment  = prm.get_integer("Lines per segment");
+        target_error       = prm.get_double("Standard error target");
+        target_from        = prm.get_double("Target from");
+        low_bands_up_to    = prm.get_double("Low bands up to");
+        low_band_time_step = prm.get_double("Low-band time step");
+        longest_distance   = prm.get_double("Longest distance");
+        extend_runs        = prm.get_bool("Extend runs");
+        reporting_along    = 1e-3 * prm.get_double("Reporting cell along");
+        reporting_across   = 1e-3 * prm.get_double("Reporting cell across");
       }
       prm.leave_subsection();
       for (const auto &[name, f] : {std::pair<const char *, double>{"Target from", target_from},
@@ -99,8 +98,8 @@ namespace greentread
           for (const auto &band : third_octave_bands(100., 5000.))
             is_band = is_band || std::abs(band.nominal - f) < 1e-9 * f;
           if (!is_band)
-            throw InputError("parameter 'Spectra/" + std::string(name) + "' = " +
-                             format_number(f) + " Hz; allowed: " +
+            throw InputError("parameter 'Spectra/" + std::string(name) + "' = " + format_number(f) +
+                             " Hz; allowed: " +
                              (std::string(name) == "Low bands up to" ? "0 (one rate) or " : "") +
                              "the nominal centre of a one-third-octave band from 100 Hz to 5 "
                              "kHz (100, 125, 160, 200, 250, 315, 400, 500, ... Hz)");

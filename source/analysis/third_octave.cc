@@ -1,7 +1,7 @@
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
-#include <greentread/convolution/fft_length.h>
 #include <greentread/base/output.h>
+#include <greentread/convolution/fft_length.h>
 
 #include <unsupported/Eigen/FFT>
 
@@ -83,8 +83,11 @@ namespace greentread
        * nothing estimated yet.
        */
       BandSpectrum
-      checked_spectrum(const std::vector<double> &x, const double dt, const double reference,
-                       const double f_low, const double f_high)
+      checked_spectrum(const std::vector<double> &x,
+                       const double               dt,
+                       const double               reference,
+                       const double               f_low,
+                       const double               f_high)
       {
         if (!(dt > 0.) || !std::isfinite(dt))
           throw InputError("one-third-octave spectrum: the sample interval dt = " +
@@ -200,8 +203,10 @@ namespace greentread
        * (third_octave_spectrum()).
        */
       std::vector<double>
-      segment_mean_squares(const std::vector<double> &x, const std::size_t start,
-                           const std::vector<double> &w, const std::size_t M,
+      segment_mean_squares(const std::vector<double>    &x,
+                           const std::size_t             start,
+                           const std::vector<double>    &w,
+                           const std::size_t             M,
                            const std::vector<BandLines> &lines)
       {
         const std::size_t n    = w.size();
@@ -248,15 +253,17 @@ namespace greentread
       };
 
       SegmentLayout
-      segment_layout(const std::size_t N, const double dt, const FrequencyBand &band,
-                     const unsigned int lines_per_segment)
+      segment_layout(const std::size_t    N,
+                     const double         dt,
+                     const FrequencyBand &band,
+                     const unsigned int   lines_per_segment)
       {
         SegmentLayout l;
         const double  want = std::ceil(lines_per_segment / ((band.upper - band.lower) * dt));
-        l.n     = want >= double(N) ? N : std::max<std::size_t>(2, std::size_t(want));
-        l.hop   = std::max<std::size_t>(1, l.n / 2);
-        l.K     = l.n == N ? 1u : unsigned(1 + (N - l.n) / l.hop);
-        l.start = N - (l.n + (l.K - 1) * l.hop);
+        l.n                = want >= double(N) ? N : std::max<std::size_t>(2, std::size_t(want));
+        l.hop              = std::max<std::size_t>(1, l.n / 2);
+        l.K                = l.n == N ? 1u : unsigned(1 + (N - l.n) / l.hop);
+        l.start            = N - (l.n + (l.K - 1) * l.hop);
         return l;
       }
 
@@ -349,9 +356,9 @@ namespace greentread
                           const double               f_low,
                           const double               f_high)
     {
-      BandSpectrum      s = checked_spectrum(x, dt, reference, f_low, f_high);
-      const std::size_t B = s.bands.size();
-      const std::size_t M = convolution::fast_fft_length(x.size());
+      BandSpectrum      s           = checked_spectrum(x, dt, reference, f_low, f_high);
+      const std::size_t B           = s.bands.size();
+      const std::size_t M           = convolution::fast_fft_length(x.size());
       const auto        lines       = band_lines(M, dt, s.bands);
       const auto        mean_square = segment_mean_squares(x, 0, hann(x.size()), M, lines);
       s.rms.resize(B);
@@ -376,7 +383,8 @@ namespace greentread
       /// The bands (indices into @p bands) that share a Welch segment
       /// length, by that length, in a record of @p N samples.
       std::map<std::size_t, std::vector<std::size_t>>
-      bands_by_segment_length(const std::size_t N, const double dt,
+      bands_by_segment_length(const std::size_t                 N,
+                              const double                      dt,
                               const std::vector<FrequencyBand> &bands,
                               const unsigned int                lines_per_segment)
       {
@@ -393,20 +401,23 @@ namespace greentread
       /// correlation and each band's lines.
       struct SegmentGroup
       {
-        SegmentLayout          layout;
-        std::vector<double>    window;
-        std::size_t            M = 0;
-        double                 overlap = 1.;
+        SegmentLayout                     layout;
+        std::vector<double>               window;
+        std::size_t                       M       = 0;
+        double                            overlap = 1.;
         std::vector<std::complex<double>> correlation;
-        std::vector<BandLines> lines;
+        std::vector<BandLines>            lines;
 
-        SegmentGroup(const std::size_t N, const double dt, const std::vector<FrequencyBand> &bands,
-                     const std::vector<std::size_t> &which, const unsigned int lines_per_segment)
-          : layout(segment_layout(N, dt, bands[which[0]], lines_per_segment))
-          , window(hann(layout.n))
-          , M(convolution::fast_fft_length(layout.n))
-          , overlap(overlap_factor(window, layout.hop, layout.K))
-          , correlation(line_correlation(window, M))
+        SegmentGroup(const std::size_t                 N,
+                     const double                      dt,
+                     const std::vector<FrequencyBand> &bands,
+                     const std::vector<std::size_t>   &which,
+                     const unsigned int                lines_per_segment)
+            : layout(segment_layout(N, dt, bands[which[0]], lines_per_segment))
+            , window(hann(layout.n))
+            , M(convolution::fast_fft_length(layout.n))
+            , overlap(overlap_factor(window, layout.hop, layout.K))
+            , correlation(line_correlation(window, M))
         {
           std::vector<FrequencyBand> group;
           for (const std::size_t b : which)
@@ -450,15 +461,15 @@ namespace greentread
       // The bands that share a segment length share their segments.
       for (const auto &by_length : bands_by_segment_length(N, dt, s.bands, lines_per_segment))
         {
-          const auto                       &which = by_length.second;
-          const SegmentGroup                g(N, dt, s.bands, which, lines_per_segment);
-          const auto                       &lines   = g.lines;
-          const unsigned                    K       = g.layout.K;
-          const double                      overlap = g.overlap;
+          const auto                      &which = by_length.second;
+          const SegmentGroup               g(N, dt, s.bands, which, lines_per_segment);
+          const auto                      &lines   = g.lines;
+          const unsigned                   K       = g.layout.K;
+          const double                     overlap = g.overlap;
           std::vector<std::vector<double>> power(K);
           for (unsigned k = 0; k < K; ++k)
-            power[k] = segment_mean_squares(x, g.layout.start + k * g.layout.hop, g.window, g.M,
-                                            lines);
+            power[k] =
+              segment_mean_squares(x, g.layout.start + k * g.layout.hop, g.window, g.M, lines);
           for (std::size_t c = 0; c < which.size(); ++c)
             {
               const std::size_t b = which[c];
@@ -469,9 +480,9 @@ namespace greentread
               for (unsigned k = 0; k < K; ++k)
                 mean += power[k][c];
               mean /= K;
-              s.rms[b]      = std::sqrt(mean);
-              s.level[b]    = level_of(s.rms[b], reference, s.bands[b]);
-              s.segments[b] = K;
+              s.rms[b]             = std::sqrt(mean);
+              s.level[b]           = level_of(s.rms[b], reference, s.bands[b]);
+              s.segments[b]        = K;
               s.predicted_error[b] = g.predicted_error(c);
               if (K >= min_observed_segments && mean > 0.)
                 {
@@ -545,7 +556,7 @@ namespace greentread
       // count and its lines only grow), so bisection finds the smallest N.
       while (hi - lo > 1)
         {
-          const std::size_t mid = lo + (hi - lo) / 2;
+          const std::size_t mid  = lo + (hi - lo) / 2;
           (meets(mid) ? hi : lo) = mid;
         }
       return hi;

@@ -12,8 +12,10 @@ namespace greentread
   namespace analysis
   {
     bool
-    write_section(const std::filesystem::path &directory, const geometry::TyreCell &cell,
-                  const std::string &geo_name, const base::ParameterRecord &record)
+    write_section(const std::filesystem::path &directory,
+                  const geometry::TyreCell    &cell,
+                  const std::string           &geo_name,
+                  const base::ParameterRecord &record)
     {
       {
         dealii::DataOut<2>    out;
@@ -44,22 +46,26 @@ namespace greentread
               }
           polygons << "EOD\n";
           plot += std::string(plot.empty() ? "plot " : ", ") + "$M" + std::to_string(id) +
-                  " with filledcurves closed fc rgb '" + colour[id] + "' fs solid 0.7 border "
-                  "lc rgb 'white' title '" + name[id] + "'";
+                  " with filledcurves closed fc rgb '" + colour[id] +
+                  "' fs solid 0.7 border "
+                  "lc rgb 'white' title '" +
+                  name[id] + "'";
         }
       return base::plot_png(
         directory / "section.png",
-        polygons.str() + "set size ratio -1\nset xlabel 'axial z [mm]'\nset ylabel 'radius [mm]'\n"
-          "set key outside right\nset title noenhanced 'GreenTread tyre section: " + geo_name +
-          ", " + std::to_string(cell.section().n_active_cells()) + " quadrilaterals'\n" + plot +
-          "\n",
+        polygons.str() +
+          "set size ratio -1\nset xlabel 'axial z [mm]'\nset ylabel 'radius [mm]'\n"
+          "set key outside right\nset title noenhanced 'GreenTread tyre section: " +
+          geo_name + ", " + std::to_string(cell.section().n_active_cells()) + " quadrilaterals'\n" +
+          plot + "\n",
         record, 1000, 800);
     }
 
 
 
     void
-    write_inflated_cell(const std::filesystem::path &directory, const fe::ElasticModel &model,
+    write_inflated_cell(const std::filesystem::path  &directory,
+                        const fe::ElasticModel       &model,
                         const dealii::Vector<double> &u)
     {
       model.write_vtu(u, directory / "inflated_cell.vtu");
@@ -71,9 +77,11 @@ namespace greentread
 
 
     MassReport
-    write_mass_report(const std::filesystem::path &file_name, const geometry::TyreCell &cell,
-                      const fe::ElasticModel &model, const fe::MaterialParameters &materials,
-                      const base::ParameterRecord &record)
+    write_mass_report(const std::filesystem::path  &file_name,
+                      const geometry::TyreCell     &cell,
+                      const fe::ElasticModel       &model,
+                      const fe::MaterialParameters &materials,
+                      const base::ParameterRecord  &record)
     {
       const auto         all       = materials.materials();
       const auto         fe_masses = model.masses();
@@ -90,8 +98,8 @@ namespace greentread
           const double       exact  = volume ? all.at(id).density * *volume : 0.;
           const std::string &name   = all.at(id).name;
           out << name << ',' << mass << ',';
-          lines << "  " << name << std::string(10 - name.size(), ' ')
-                << format_printf("%.6e", mass) << " kg  ";
+          lines << "  " << name << std::string(10 - name.size(), ' ') << format_printf("%.6e", mass)
+                << " kg  ";
           if (volume)
             {
               out << exact << ',' << mass / exact - 1. << '\n';

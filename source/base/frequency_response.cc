@@ -34,7 +34,8 @@ namespace greentread
                            format_number(f.front()) + " to " + format_number(f.back()) + " Hz");
         if (std::abs(f.front()) > 1e-6 * df)
           throw InputError(where + ": the frequency grid must start at 0 Hz (it starts at " +
-                           format_number(f.front()) + " Hz): LSCE extends the FRF to negative "
+                           format_number(f.front()) +
+                           " Hz): LSCE extends the FRF to negative "
                            "frequencies by symmetry and needs the whole band from 0");
         for (std::size_t k = 0; k < f.size(); ++k)
           if (std::abs(f[k] - k * df) > 1e-6 * df)
@@ -53,7 +54,8 @@ namespace greentread
     {
       std::ifstream in(file);
       if (!in)
-        throw InputError("FRF file '" + file + "' cannot be opened: it does not exist or is not "
+        throw InputError("FRF file '" + file +
+                         "' cannot be opened: it does not exist or is not "
                          "readable");
       std::string         line;
       unsigned int        number = 0;
@@ -78,8 +80,8 @@ namespace greentread
               header = true;
               continue;
             }
-          double       x[3];
-          const char  *p = text.c_str();
+          double      x[3];
+          const char *p = text.c_str();
           for (unsigned int c = 0; c < 3; ++c)
             {
               char *end = nullptr;
@@ -88,7 +90,8 @@ namespace greentread
                 throw InputError(where + ": expected three numbers 'f,re,im', found '" + text +
                                  "'");
               if (!std::isfinite(x[c]))
-                throw InputError(where + ": the value '" + trim(std::string(p, static_cast<std::size_t>(end - p))) +
+                throw InputError(where + ": the value '" +
+                                 trim(std::string(p, static_cast<std::size_t>(end - p))) +
                                  "' is not a finite number (NaN or inf in the FRF)");
               p = end;
               while (*p == ' ' || *p == '\t')
@@ -107,7 +110,8 @@ namespace greentread
           frf.values.emplace_back(x[1], x[2]);
         }
       if (!header)
-        throw InputError("FRF file '" + file + "' is empty: expected the header 'f,re,im' and "
+        throw InputError("FRF file '" + file +
+                         "' is empty: expected the header 'f,re,im' and "
                          "one line per frequency");
       frf.df = check_grid(f, "FRF file '" + file + "'");
       return frf;
@@ -116,8 +120,8 @@ namespace greentread
 
 
     void
-    write_frf_csv(const std::filesystem::path  &file,
-                  const FrequencyResponse      &frf,
+    write_frf_csv(const std::filesystem::path &file,
+                  const FrequencyResponse     &frf,
                   const base::ParameterRecord &record)
     {
       base::AtomicFile out(file);
@@ -133,9 +137,7 @@ namespace greentread
 
 
     std::vector<std::pair<unsigned int, unsigned int>>
-    parse_point_pairs(const std::string &text,
-                      const unsigned int n,
-                      const std::string &parameter)
+    parse_point_pairs(const std::string &text, const unsigned int n, const std::string &parameter)
     {
       std::vector<std::pair<unsigned int, unsigned int>> pairs;
       if (text == "all")
@@ -161,7 +163,8 @@ namespace greentread
           if (!std::regex_match(part, m, item))
             throw InputError("parameter '" + parameter + "' = " + text +
                              " is not allowed; allowed: 'all', 'diagonal' or a list "
-                             "'i:j, i:j, ...' of 0-based point indices ('" + part + "')");
+                             "'i:j, i:j, ...' of 0-based point indices ('" +
+                             part + "')");
           const unsigned int i = std::stoul(m[1]), j = std::stoul(m[2]);
           if (i >= n || j >= n)
             throw InputError("parameter '" + parameter + "' names the pair " + part +
@@ -270,9 +273,9 @@ namespace greentread
           dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
           f = h5.open_dataset("frequency").read<std::vector<double>>();
 
-          dataset          = "/points";
-          auto points      = h5.open_dataset("points");
-          const auto pdims = points.get_dimensions();
+          dataset           = "/points";
+          auto       points = h5.open_dataset("points");
+          const auto pdims  = points.get_dimensions();
           if (pdims.size() != 2 || pdims[1] != 3)
             problem = "/points must be a double array [n_p][3]";
           else
@@ -350,10 +353,10 @@ namespace greentread
 
 
     void
-    write_hdf5_stage(const std::filesystem::path                    &file,
-                     const std::vector<std::array<double, 3>>       &points,
-                     const base::ParameterRecord                    &record,
-                     const std::string                              &stage_key,
+    write_hdf5_stage(const std::filesystem::path                     &file,
+                     const std::vector<std::array<double, 3>>        &points,
+                     const base::ParameterRecord                     &record,
+                     const std::string                               &stage_key,
                      const std::function<void(dealii::HDF5::File &)> &fill)
     {
       // HDF5 writes through its own file handle: reserve the temporary name
@@ -378,10 +381,10 @@ namespace greentread
 
 
     void
-    write_green_hdf5(const std::filesystem::path  &file,
+    write_green_hdf5(const std::filesystem::path   &file,
                      const FrequencyResponseMatrix &green,
-                     const base::ParameterRecord  &record,
-                     const std::string            &stage_key)
+                     const base::ParameterRecord   &record,
+                     const std::string             &stage_key)
     {
       write_hdf5_stage(file, green.points, record, stage_key, [&](dealii::HDF5::File &h5) {
         std::vector<double> f(green.n_lines);

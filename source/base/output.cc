@@ -54,15 +54,13 @@ namespace greentread
 
 
 
-    AtomicFile::AtomicFile(const std::filesystem::path &final_path_,
-                           const std::ios::openmode     mode)
-      : final_path(final_path_)
-      , tmp_path(final_path_.string() + ".tmp." + std::to_string(::getpid()))
+    AtomicFile::AtomicFile(const std::filesystem::path &final_path_, const std::ios::openmode mode)
+        : final_path(final_path_)
+        , tmp_path(final_path_.string() + ".tmp." + std::to_string(::getpid()))
     {
       out.open(tmp_path, mode | std::ios::out | std::ios::trunc);
       if (!out)
-        throw InputError("cannot write '" + tmp_path.string() +
-                         "': " + std::strerror(errno));
+        throw InputError("cannot write '" + tmp_path.string() + "': " + std::strerror(errno));
       out.precision(12);
     }
 
@@ -91,13 +89,12 @@ namespace greentread
           out.close();
         }
       if (!good)
-        throw InputError("writing '" + final_path.string() +
-                         "' failed (disk full or removed?)");
+        throw InputError("writing '" + final_path.string() + "' failed (disk full or removed?)");
       std::error_code error;
       std::filesystem::rename(tmp_path, final_path, error);
       if (error)
-        throw InputError("cannot rename '" + tmp_path.string() + "' to '" +
-                         final_path.string() + "': " + error.message());
+        throw InputError("cannot rename '" + tmp_path.string() + "' to '" + final_path.string() +
+                         "': " + error.message());
       committed = true;
     }
 
@@ -116,8 +113,7 @@ namespace greentread
       std::filesystem::create_directories(path, error);
       if (error || !std::filesystem::is_directory(path))
         throw InputError("parameter 'Output directory' = " + directory +
-                         " cannot be created: " +
-                         (error ? error.message() : "not a directory"));
+                         " cannot be created: " + (error ? error.message() : "not a directory"));
       // Probe: an empty file written and removed again.
       const auto    probe = path / (".greentread-probe." + std::to_string(::getpid()));
       std::ofstream test(probe);
@@ -141,8 +137,8 @@ namespace greentread
         }
       catch (const std::exception &e)
         {
-          std::cout << "Not reusing " << file.string() << ", although its key matches: "
-                    << e.what() << "; computing it again\n";
+          std::cout << "Not reusing " << file.string() << ", although its key matches: " << e.what()
+                    << "; computing it again\n";
           return false;
         }
     }

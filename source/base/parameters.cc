@@ -63,8 +63,7 @@ namespace greentread
             const std::string path = prefix.empty() ? name : prefix + "/" + name;
             if (child.find("value") != child.not_found() &&
                 child.find("pattern_description") != child.not_found())
-              entries.push_back({path,
-                                 child.get<std::string>("value"),
+              entries.push_back({path, child.get<std::string>("value"),
                                  child.get<std::string>("default_value"),
                                  child.get<std::string>("documentation"),
                                  child.get<std::string>("pattern_description")});
@@ -106,9 +105,9 @@ namespace greentread
        * the parameter by its full path and proposes the closest name.
        */
       std::string
-      explain_parse_error(const dealii::ExceptionBase  &error,
-                          const std::string            &text,
-                          const std::string            &source,
+      explain_parse_error(const dealii::ExceptionBase    &error,
+                          const std::string              &text,
+                          const std::string              &source,
                           const dealii::ParameterHandler &prm)
       {
         std::ostringstream info_stream;
@@ -119,8 +118,8 @@ namespace greentread
         for (const auto &e : list_parameters(prm))
           paths.push_back(e.path);
 
-        std::smatch     m;
-        unsigned int    line = 0;
+        std::smatch      m;
+        unsigned int     line = 0;
         const std::regex line_regex("Line <([0-9]+)>");
         if (std::regex_search(info, m, line_regex))
           line = std::stoul(m[1]);
@@ -145,8 +144,8 @@ namespace greentread
                    "; 'greentread --print-parameters' lists them all";
           }
         if (std::regex_search(info, m, mismatch))
-          return where + ": parameter '" + section + trim(m[2]) + "' = " +
-                 trim(m[1]) + " is not allowed; allowed: " + trim(m[3]);
+          return where + ": parameter '" + section + trim(m[2]) + "' = " + trim(m[1]) +
+                 " is not allowed; allowed: " + trim(m[3]);
         if (std::regex_search(info, m, no_section))
           {
             std::vector<std::string> sections;
@@ -165,9 +164,7 @@ namespace greentread
 
 
       void
-      parse_text(dealii::ParameterHandler &prm,
-                 const std::string        &text,
-                 const std::string        &source)
+      parse_text(dealii::ParameterHandler &prm, const std::string &text, const std::string &source)
       {
         try
           {
@@ -187,12 +184,13 @@ namespace greentread
                                const double upper_,
                                const Bound  upper_kind_,
                                std::string  unit_)
-      : lower(lower_)
-      , upper(upper_)
-      , lower_kind(lower_kind_)
-      , upper_kind(upper_kind_)
-      , unit(std::move(unit_))
-    {}
+        : lower(lower_)
+        , upper(upper_)
+        , lower_kind(lower_kind_)
+        , upper_kind(upper_kind_)
+        , unit(std::move(unit_))
+    {
+    }
 
 
 
@@ -245,7 +243,9 @@ namespace greentread
     RangePattern::description(const OutputStyle) const
     {
       std::string range;
-      const auto  number = [](double x) { return format_number(x); };
+      const auto  number = [](double x) {
+        return format_number(x);
+      };
       if (lower_kind != Bound::none && upper_kind != Bound::none)
         range = std::string(lower_kind == Bound::inclusive ? "[" : "(") + number(lower) + ", " +
                 number(upper) + (upper_kind == Bound::inclusive ? "]" : ")");
@@ -275,10 +275,9 @@ namespace greentread
     list_parameters(const dealii::ParameterHandler &prm)
     {
       std::stringstream json;
-      prm.print_parameters(json,
-                           dealii::ParameterHandler::OutputStyle(
-                             dealii::ParameterHandler::JSON |
-                             dealii::ParameterHandler::KeepDeclarationOrder));
+      prm.print_parameters(
+        json, dealii::ParameterHandler::OutputStyle(
+                dealii::ParameterHandler::JSON | dealii::ParameterHandler::KeepDeclarationOrder));
       boost::property_tree::ptree tree;
       boost::property_tree::read_json(json, tree);
       std::vector<ParameterEntry> entries;
@@ -307,15 +306,13 @@ namespace greentread
     {
       const auto equal = assignment.find('=');
       if (equal == std::string::npos)
-        throw InputError("--set '" + assignment +
-                         "': expected the form \"Section/Name=value\"");
+        throw InputError("--set '" + assignment + "': expected the form \"Section/Name=value\"");
       const std::string path  = trim(assignment.substr(0, equal));
       const std::string value = trim(assignment.substr(equal + 1));
 
       std::vector<std::string> parts;
       std::size_t              begin = 0;
-      for (auto slash = path.find('/'); slash != std::string::npos;
-           slash      = path.find('/', begin))
+      for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/', begin))
         {
           parts.push_back(trim(path.substr(begin, slash - begin)));
           begin = slash + 1;
@@ -336,8 +333,7 @@ namespace greentread
 
 
     void
-    print_parameter_reference(const dealii::ParameterHandler &prm,
-                              std::ostream                   &out)
+    print_parameter_reference(const dealii::ParameterHandler &prm, std::ostream &out)
     {
       out << "# GreenTread parameters: path = default, what is allowed, and what it means.\n"
           << "# Set them in a scene file (subsection ... end) or with --set \"Path=value\".\n";
@@ -371,22 +367,25 @@ namespace greentread
       const auto cell = [](std::string text) {
         std::string escaped;
         for (const char c : text)
-          escaped += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+          escaped += c == '|'  ? std::string("\\|") :
+                     c == '\n' ? std::string(" ") :
+                                 std::string(1, c);
         return escaped;
       };
       const auto is_deprecated = [](const ParameterEntry &e) {
         return e.documentation.rfind("Deprecated:", 0) == 0;
       };
       const auto entries = list_parameters(prm);
-      out << "# Parameters\n\n"
-          << "<!-- Generated by `build/greentread --print-parameters=markdown > doc/parameters.md`;\n"
-          << "     do not edit: the test layout/parameters_doc fails when this file is stale. -->\n\n"
-          << "Every parameter GreenTread reads, with its default, what is allowed (and its unit), "
-             "and what it means.\n"
-          << "Set them in a scene file (`subsection ... end`) or on the command line with "
-             "`--set \"Subsection/Name=value\"`.\n"
-          << "Which subsections a scene reads: [getting-started.md](getting-started.md#scenes); "
-             "a value set in a subsection\nthe scene does not read is refused.\n";
+      out
+        << "# Parameters\n\n"
+        << "<!-- Generated by `build/greentread --print-parameters=markdown > doc/parameters.md`;\n"
+        << "     do not edit: the test layout/parameters_doc fails when this file is stale. -->\n\n"
+        << "Every parameter GreenTread reads, with its default, what is allowed (and its unit), "
+           "and what it means.\n"
+        << "Set them in a scene file (`subsection ... end`) or on the command line with "
+           "`--set \"Subsection/Name=value\"`.\n"
+        << "Which subsections a scene reads: [getting-started.md](getting-started.md#scenes); "
+           "a value set in a subsection\nthe scene does not read is refused.\n";
       std::string section = "-";
       for (const auto &e : entries)
         {
@@ -400,8 +399,8 @@ namespace greentread
               out << "\n## " << (here.empty() ? std::string("Top level") : here) << "\n\n"
                   << "| name | default | allowed | meaning |\n| --- | --- | --- | --- |\n";
             }
-          out << "| `" << cell(e.path.substr(slash == std::string::npos ? 0 : slash + 1))
-              << "` | `" << cell(e.default_value) << "` | " << cell(e.allowed) << " | "
+          out << "| `" << cell(e.path.substr(slash == std::string::npos ? 0 : slash + 1)) << "` | `"
+              << cell(e.default_value) << "` | " << cell(e.allowed) << " | "
               << cell(e.documentation) << " |\n";
         }
       out << "\n## Deprecated spellings\n\n"
@@ -415,8 +414,7 @@ namespace greentread
 
 
     std::string
-    closest_name(const std::string              &name,
-                 const std::vector<std::string> &candidates)
+    closest_name(const std::string &name, const std::vector<std::string> &candidates)
     {
       const auto lower = [](std::string s) {
         std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
@@ -440,9 +438,8 @@ namespace greentread
               for (std::size_t j = 1; j <= b.size(); ++j)
                 {
                   const std::size_t up = row[j];
-                  row[j] = std::min({row[j] + 1,
-                                     row[j - 1] + 1,
-                                     diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+                  row[j]               = std::min(
+                                  {row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
                   diagonal = up;
                 }
             }

@@ -39,8 +39,7 @@ namespace greentread
                               std::istreambuf_iterator<char>());
         in.close();
         const std::string iend = "IEND";
-        if (png.size() < 20 ||
-            std::string(png.end() - 8, png.end() - 4) != iend)
+        if (png.size() < 20 || std::string(png.end() - 8, png.end() - 4) != iend)
           return false;
 
         std::vector<char> data(keyword.begin(), keyword.end());
@@ -69,9 +68,7 @@ namespace greentread
     gnuplot_available()
     {
       static const bool available =
-        std::system((std::string(GREENTREAD_GNUPLOT) +
-                     " -e 'exit' > /dev/null 2>&1")
-                      .c_str()) == 0;
+        std::system((std::string(GREENTREAD_GNUPLOT) + " -e 'exit' > /dev/null 2>&1").c_str()) == 0;
       return available;
     }
 
@@ -105,16 +102,13 @@ namespace greentread
       image.stream().close();
 
       AtomicFile script(png.string() + ".gp");
-      script.stream() << "set terminal pngcairo size " << width << ','
-                      << height << " font ',11'\n"
-                      << "set output " << gnuplot_quote(image.temporary_path())
-                      << "\n"
+      script.stream() << "set terminal pngcairo size " << width << ',' << height << " font ',11'\n"
+                      << "set output " << gnuplot_quote(image.temporary_path()) << "\n"
                       << commands << "\nunset output\n";
       script.stream().close();
 
       const std::string command = std::string(GREENTREAD_GNUPLOT) + " " +
-                                  gnuplot_quote(script.temporary_path()) +
-                                  " > /dev/null 2>&1";
+                                  gnuplot_quote(script.temporary_path()) + " > /dev/null 2>&1";
       if (std::system(command.c_str()) != 0 ||
           !add_png_text(image.temporary_path(), "parameters", record.text()))
         {

@@ -12,23 +12,24 @@ namespace greentread
   namespace base
   {
     Progress::Progress(std::string label_, const std::size_t total_, const double interval_)
-      : label(std::move(label_))
-      , total(std::max<std::size_t>(total_, 1))
-      , interval(interval_)
-      , next_check(1)
-      , stride(std::max<std::size_t>(total / 1000, 1))
-      , start(std::chrono::steady_clock::now())
-      , last(start)
-    {}
+        : label(std::move(label_))
+        , total(std::max<std::size_t>(total_, 1))
+        , interval(interval_)
+        , next_check(1)
+        , stride(std::max<std::size_t>(total / 1000, 1))
+        , start(std::chrono::steady_clock::now())
+        , last(start)
+    {
+    }
 
 
 
     void
     Progress::check(const std::size_t done)
     {
-      next_check = done + stride;
-      const auto   now     = std::chrono::steady_clock::now();
-      const double since   = std::chrono::duration<double>(now - last).count();
+      next_check         = done + stride;
+      const auto   now   = std::chrono::steady_clock::now();
+      const double since = std::chrono::duration<double>(now - last).count();
       if (since < interval)
         return;
       last                 = now;
@@ -37,8 +38,7 @@ namespace greentread
         done > 0 ? elapsed * double(total - std::min(done, total)) / double(done) : 0.;
       char line[256];
       std::snprintf(line, sizeof(line), "%s: %3.0f%% (%zu/%zu), %.1f s, about %.1f s left",
-                    label.c_str(), 100. * double(done) / double(total), done, total,
-                    elapsed, left);
+                    label.c_str(), 100. * double(done) / double(total), done, total, elapsed, left);
       std::cerr << line << std::endl;
       printed = true;
     }
@@ -91,8 +91,8 @@ namespace greentread
 
 
     void
-    for_each_index(const std::size_t                                       count,
-                   const unsigned int                                      n_threads,
+    for_each_index(const std::size_t                                     count,
+                   const unsigned int                                    n_threads,
                    const std::function<void(std::size_t, unsigned int)> &item)
     {
       std::vector<std::exception_ptr> failure(count);

@@ -21,9 +21,12 @@ namespace greentread
 
 
     LcpResult
-    solve_lcp_candidate_set(const SymmetricOperator &W, const OperatorBlock &block,
-                            const Eigen::VectorXd &q, const Eigen::VectorXd &start,
-                            ProjectedCgOptions options, unsigned int *candidates)
+    solve_lcp_candidate_set(const SymmetricOperator &W,
+                            const OperatorBlock     &block,
+                            const Eigen::VectorXd   &q,
+                            const Eigen::VectorXd   &start,
+                            ProjectedCgOptions       options,
+                            unsigned int            *candidates)
     {
       const Eigen::Index n = q.size();
       check_lcp_input(q, start, "candidate-set contact");
@@ -42,12 +45,12 @@ namespace greentread
             in_set[i] = 1;
             joined.push_back(i);
           }
-      Eigen::VectorXd z = start.size() == n ? Eigen::VectorXd(start.cwiseMax(0.)) :
-                                              Eigen::VectorXd::Zero(n);
-      LcpResult       result;
-      unsigned int    products = 0;
-      Eigen::MatrixXd M, back, corner;
-      Eigen::VectorXd q_set, z_set, w(n);
+      Eigen::VectorXd z =
+        start.size() == n ? Eigen::VectorXd(start.cwiseMax(0.)) : Eigen::VectorXd::Zero(n);
+      LcpResult              result;
+      unsigned int           products = 0;
+      Eigen::MatrixXd        M, back, corner;
+      Eigen::VectorXd        q_set, z_set, w(n);
       constexpr unsigned int max_rounds = 50;
       for (unsigned int round = 0; round < max_rounds; ++round)
         {
@@ -100,8 +103,8 @@ namespace greentread
                   result.z          = z;
                   result.w          = w + q;
                   result.iterations = products + 1;
-                  result.message    = "on " + std::to_string(m) + " candidate points: " +
-                                   reduced.message;
+                  result.message =
+                    "on " + std::to_string(m) + " candidate points: " + reduced.message;
                   return result;
                 }
             }

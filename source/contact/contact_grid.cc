@@ -11,14 +11,16 @@ namespace greentread
   namespace contact
   {
     ContactGrid::ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
-                             const unsigned int subdivisions_, const ElasticLayer &layer,
-                             const bool matrix_free_, const bool candidate_set_,
-                             const double tolerance_)
-      : subdivisions(subdivisions_)
-      , matrix_free(matrix_free_)
-      , candidate_set(candidate_set_)
-      , tolerance(tolerance_)
-      , n_coarse(coarse_points.size())
+                             const unsigned int                        subdivisions_,
+                             const ElasticLayer                       &layer,
+                             const bool                                matrix_free_,
+                             const bool                                candidate_set_,
+                             const double                              tolerance_)
+        : subdivisions(subdivisions_)
+        , matrix_free(matrix_free_)
+        , candidate_set(candidate_set_)
+        , tolerance(tolerance_)
+        , n_coarse(coarse_points.size())
     {
       if (subdivisions == 0)
         throw InputError("parameter 'Contact grid/Subdivisions' = 0; allowed: 1 to 32");
@@ -28,7 +30,9 @@ namespace greentread
       // The coarse lattice: its distinct x and y, increasing.
       std::vector<double> xs, ys;
       const auto          add = [](std::vector<double> &v, const double x) {
-        if (std::none_of(v.begin(), v.end(), [&](double y) { return std::abs(x - y) < 1e-7; }))
+        if (std::none_of(v.begin(), v.end(), [&](double y) {
+              return std::abs(x - y) < 1e-7;
+            }))
           v.push_back(x);
       };
       for (const auto &p : coarse_points)
@@ -44,13 +48,15 @@ namespace greentread
         throw InputError("contact grid: the Green's functions' " + std::to_string(n_coarse) +
                          " points are not a lattice of at least 2 x 2 (" + std::to_string(cnx) +
                          " x " + std::to_string(cny) + ")");
-      coarse_dx = (xs.back() - xs.front()) / (cnx - 1);
-      coarse_dy = (ys.back() - ys.front()) / (cny - 1);
+      coarse_dx        = (xs.back() - xs.front()) / (cnx - 1);
+      coarse_dy        = (ys.back() - ys.front()) / (cny - 1);
       const auto index = [](const std::vector<double> &v, const double x) {
-        return static_cast<unsigned int>(
-          std::min_element(v.begin(), v.end(), [&](double a, double b) {
-            return std::abs(a - x) < std::abs(b - x);
-          }) - v.begin());
+        return static_cast<unsigned int>(std::min_element(v.begin(), v.end(),
+                                                          [&](double a, double b) {
+                                                            return std::abs(a - x) <
+                                                                   std::abs(b - x);
+                                                          }) -
+                                         v.begin());
       };
       coarse_at.assign(n_coarse, 0);
       for (unsigned int c = 0; c < n_coarse; ++c)
@@ -70,8 +76,8 @@ namespace greentread
             const unsigned int p = ix * ny + iy;
             coarse_of[p]         = c;
             points[p]            = {{coarse_points[c][0] + ((ix % s) + 0.5 - 0.5 * s) * dx,
-                          coarse_points[c][1] + ((iy % s) + 0.5 - 0.5 * s) * dy,
-                          coarse_points[c][2]}};
+                                     coarse_points[c][1] + ((iy % s) + 0.5 - 0.5 * s) * dy,
+                                     coarse_points[c][2]}};
           }
       if (s == 1)
         return;
@@ -88,9 +94,9 @@ namespace greentread
           tabulate_cell_sums();
           return;
         }
-      local = layer_product->dense();
+      local                        = layer_product->dense();
       const auto remove_cell_means = [&](Eigen::MatrixXd &m) {
-        const double    n_cell = static_cast<double>(s) * s;
+        const double n_cell = static_cast<double>(s) * s;
         for (Eigen::Index j = 0; j < m.cols(); ++j)
           m.col(j) -= expand(Eigen::VectorXd(gather(m.col(j)) / n_cell));
       };
@@ -180,8 +186,9 @@ namespace greentread
 
 
     void
-    ContactGrid::apply(const Eigen::MatrixXd &coarse, const Eigen::VectorXd &x,
-                       Eigen::VectorXd &y) const
+    ContactGrid::apply(const Eigen::MatrixXd &coarse,
+                       const Eigen::VectorXd &x,
+                       Eigen::VectorXd       &y) const
     {
       y.setZero(points.size());
       add_product(&coarse, x, y);
@@ -190,8 +197,9 @@ namespace greentread
 
 
     void
-    ContactGrid::add_product(const Eigen::MatrixXd *coarse, const Eigen::VectorXd &x,
-                             Eigen::VectorXd &y) const
+    ContactGrid::add_product(const Eigen::MatrixXd *coarse,
+                             const Eigen::VectorXd &x,
+                             Eigen::VectorXd       &y) const
     {
       // y += A^T (M A x - A L v / s^2) + L v, v = (I - P) x: the cells'
       // sums taken once each way, the work vectors the thread's own.
@@ -227,7 +235,9 @@ namespace greentread
       const Eigen::MatrixXd &T = layer_product->kernel_values();
       const int              s = subdivisions, mx = nx, my = ny;
       // The kernel at any offset, and the sums of file contact_grid.h.
-      const auto kernel = [&](const int u, const int v) { return T(std::abs(u), std::abs(v)); };
+      const auto kernel = [&](const int u, const int v) {
+        return T(std::abs(u), std::abs(v));
+      };
       cell_sums.setZero(2 * mx - 1, 2 * my - 1);
       for (int u = 1 - mx; u <= mx - s; ++u)
         for (int v = 1 - my; v <= my - s; ++v)
@@ -254,8 +264,10 @@ namespace greentread
 
 
     void
-    ContactGrid::block(const Eigen::MatrixXd &coarse, const std::vector<unsigned int> &rows,
-                       const std::vector<unsigned int> &columns, Eigen::MatrixXd &out) const
+    ContactGrid::block(const Eigen::MatrixXd           &coarse,
+                       const std::vector<unsigned int> &rows,
+                       const std::vector<unsigned int> &columns,
+                       Eigen::MatrixXd                 &out) const
     {
       const Eigen::Index m = rows.size(), n = columns.size();
       out.resize(m, n);
@@ -277,7 +289,7 @@ namespace greentread
         for (std::size_t k = 0; k < set.size(); ++k)
           {
             const int x = set[k] / ny, y = set[k] % ny;
-            w[k]        = {x, y, x / s, y / s};
+            w[k] = {x, y, x / s, y / s};
           }
         return w;
       };
@@ -317,8 +329,9 @@ namespace greentread
            {std::tuple<const char *, double, double>{"along", a, extent(0, dx)},
             {"across", b, extent(1, dy)}})
         if (!(size <= 2. * half * (1. + 1e-9)) || !std::isfinite(size))
-          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) + "' = " +
-                           format_number(1e3 * size) + " mm; allowed: 0 (the Green's-function "
+          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) +
+                           "' = " + format_number(1e3 * size) +
+                           " mm; allowed: 0 (the Green's-function "
                            "rectangle) or up to the contact patch's " +
                            format_number(1e3 * 2. * half) + " mm");
       // The overlap of each contact rectangle with the cell |x| <= a / 2,
@@ -343,14 +356,15 @@ namespace greentread
       class GridConvolution : public convolution::PatchConvolution
       {
       public:
-        GridConvolution(std::unique_ptr<convolution::PatchConvolution> coarse_, const ContactGrid &grid_)
-          : convolution::PatchConvolution(grid_.n_points(), coarse_->time_step())
-          , coarse(std::move(coarse_))
-          , grid(grid_)
-          , coarse_load(coarse->n_points())
+        GridConvolution(std::unique_ptr<convolution::PatchConvolution> coarse_,
+                        const ContactGrid                             &grid_)
+            : convolution::PatchConvolution(grid_.n_points(), coarse_->time_step())
+            , coarse(std::move(coarse_))
+            , grid(grid_)
+            , coarse_load(coarse->n_points())
         {
           const convolution::PatchInfluence &c = coarse->influence();
-          psi.instantaneous       = true;
+          psi.instantaneous                    = true;
           if (grid.matrix_free)
             {
               // The products through the coarse cells and the layer's FFT.
@@ -358,19 +372,20 @@ namespace greentread
                 throw InputError("'Contact grid/Solver' = projected CG needs a patch model "
                                  "with an instantaneous compliance; allowed with it: 'Patch "
                                  "model/Source' = fe modes");
-              const double asymmetry = (c.u[2] - c.u[2].transpose()).cwiseAbs().maxCoeff() /
-                                       c.u[2].cwiseAbs().maxCoeff();
+              const double asymmetry =
+                (c.u[2] - c.u[2].transpose()).cwiseAbs().maxCoeff() / c.u[2].cwiseAbs().maxCoeff();
               if (!(asymmetry < 1e-8))
                 throw InputError("'Contact grid/Solver' = projected CG needs a reciprocal "
                                  "patch model; this one's instantaneous compliance is "
-                                 "asymmetric by " + format_short(asymmetry) +
+                                 "asymmetric by " +
+                                 format_short(asymmetry) +
                                  " (relative); allowed: 'Patch model/Source' = fe modes, or "
                                  "'Contact grid/Solver' = pivoting");
               // The solve's operator is symmetric: the end compliance's
               // symmetric part (it differs by the asymmetry checked above).
               end_compliance = 0.5 * (c.u[2] + c.u[2].transpose());
               psi.tolerance  = grid.tolerance;
-              psi.add_u = [this](const unsigned int g, const Eigen::VectorXd &x,
+              psi.add_u      = [this](const unsigned int g, const Eigen::VectorXd &x,
                                  Eigen::VectorXd &y) {
                 if (g == 2)
                   {
@@ -441,9 +456,9 @@ namespace greentread
 
       private:
         std::unique_ptr<convolution::PatchConvolution> coarse;
-        const ContactGrid                &grid;
+        const ContactGrid                             &grid;
         convolution::PatchLoad                         coarse_load;
-        Eigen::VectorXd                   uc, vc;
+        Eigen::VectorXd                                uc, vc;
         /// The symmetric part of the coarse end compliance (matrix-free).
         Eigen::MatrixXd end_compliance;
       };
@@ -452,7 +467,8 @@ namespace greentread
 
 
     std::unique_ptr<convolution::PatchConvolution>
-    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse, const ContactGrid &grid)
+    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse,
+                          const ContactGrid                             &grid)
     {
       if (grid.subdivisions == 1 && !grid.matrix_free)
         return coarse;
@@ -462,9 +478,11 @@ namespace greentread
 
 
     StaticContact
-    start_grid_contact(const ContactGrid &grid, const Eigen::MatrixXd &coarse_static,
-                       const Eigen::VectorXd &tread, const PatchRoadHeights &road,
-                       const RollingSetup &setup)
+    start_grid_contact(const ContactGrid      &grid,
+                       const Eigen::MatrixXd  &coarse_static,
+                       const Eigen::VectorXd  &tread,
+                       const PatchRoadHeights &road,
+                       const RollingSetup     &setup)
     {
       if (!grid.matrix_free)
         return start_contact(grid.compliance(coarse_static), tread, road, setup);

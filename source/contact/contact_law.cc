@@ -16,18 +16,21 @@ namespace greentread
       {
       public:
         explicit KinematicLaw(const convolution::Influence &psi)
-          : psi(psi)
-          , rule(psi)
-        {}
+            : psi(psi)
+            , rule(psi)
+        {
+        }
 
         ContactStep
-        step(const convolution::Response &history, const convolution::StepLoad &known,
-             const double ur, const double vr) override
+        step(const convolution::Response &history,
+             const convolution::StepLoad &known,
+             const double                 ur,
+             const double                 vr) override
         {
           const convolution::Response known_response = psi.of(known);
           const convolution::Response predicted{history.u + known_response.u,
                                                 history.v + known_response.v};
-          KinematicStep step;
+          KinematicStep               step;
           if (predicted.u <= ur)
             step = rule.solve(ur - predicted.u, vr - predicted.v);
           return {step.load, static_cast<int>(step.branch)};
@@ -45,14 +48,17 @@ namespace greentread
       {
       public:
         PenaltyLaw(const convolution::Influence &psi, const double kc, const double omega_c)
-          : psi(psi)
-          , kc(kc)
-          , omega_c(omega_c)
-        {}
+            : psi(psi)
+            , kc(kc)
+            , omega_c(omega_c)
+        {
+        }
 
         ContactStep
-        step(const convolution::Response &history, const convolution::StepLoad &known,
-             const double ur, const double) override
+        step(const convolution::Response &history,
+             const convolution::StepLoad &known,
+             const double                 ur,
+             const double) override
         {
           convolution::StepLoad with_force = known;
           with_force.start += force;
@@ -83,8 +89,10 @@ namespace greentread
 
 
     std::unique_ptr<OnePointContactLaw>
-    create(const ContactParameters &parameters, const convolution::Influence &psi,
-           const double stiffness, const double mass)
+    create(const ContactParameters      &parameters,
+           const convolution::Influence &psi,
+           const double                  stiffness,
+           const double                  mass)
     {
       if (parameters.law == ContactLaw::kinematic)
         return std::make_unique<KinematicLaw>(psi);

@@ -26,7 +26,8 @@ namespace greentread
           "Law", "kinematic", dealii::Patterns::Selection("kinematic|penalty"),
           "Contact law. 'kinematic': Eqs. (16)-(28), the point rides on the road with its "
           "displacement and velocity matched; impacts by the impulse-completion rule "
-          "(doc/methods/contact.md). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted position "
+          "(doc/methods/contact.md). 'penalty': Eq. (37), F = kc (u_r - u_h) where the predicted "
+          "position "
           "penetrates the road.");
         prm.declare_entry("Contact stiffness", "1e7", base::RangePattern::positive("N/m"),
                           "Penalty stiffness kc (Law = penalty only). Unit: N/m. "
@@ -56,7 +57,7 @@ namespace greentread
     {
       prm.enter_subsection("Contact");
       {
-        law               = prm.get("Law") == "kinematic" ? ContactLaw::kinematic : ContactLaw::penalty;
+        law = prm.get("Law") == "kinematic" ? ContactLaw::kinematic : ContactLaw::penalty;
         contact_stiffness = prm.get_double("Contact stiffness");
       }
       prm.leave_subsection();
@@ -69,8 +70,8 @@ namespace greentread
       if (time_step == 0.)
         time_step = 1e-5;
 
-      require_parameter(end_time >= time_step && std::isfinite(end_time),
-                        "Time stepping/End time", end_time,
+      require_parameter(end_time >= time_step && std::isfinite(end_time), "Time stepping/End time",
+                        end_time,
                         "an end time >= the time step, " + format_number(time_step) + " s");
       require_parameter(end_time / time_step <= 2e8, "Time stepping/End time", end_time,
                         "at most 2e8 time steps (dt = " + format_number(time_step) + " s)");

@@ -46,10 +46,10 @@ namespace greentread
       double
       scaled_compliance(const ElasticLayer &l, const double x)
       {
-        const double nu = l.poissons_ratio;
-        const double mu = l.youngs_modulus / (2. * (1. + nu));
+        const double nu     = l.poissons_ratio;
+        const double mu     = l.youngs_modulus / (2. * (1. + nu));
         const double lambda = 2. * mu * nu / (1. - 2. * nu);
-        const double c = 3. - 4. * nu;
+        const double c      = 3. - 4. * nu;
         // Field values (a, a', b, b') of each of the four solutions at z;
         // u_x = a sin(x), u_z = b cos(x). Type 1: grad(e^{sz} cos x); type
         // 2: 4(1-nu) psi - grad(z psi), psi = e^{sz} cos x. The s = +1
@@ -66,9 +66,9 @@ namespace greentread
           {
             const Eigen::Vector4d top = field(i, 0.), base = field(i, x);
             A(0, i) = lambda * (top[0] + top[3]) + 2. * mu * top[3]; // sigma_zz(0)
-            A(1, i) = mu * (top[1] - top[2]);                       // tau(0)
-            A(2, i) = base[0];                                      // u_x(h)
-            A(3, i) = base[2];                                      // u_z(h)
+            A(1, i) = mu * (top[1] - top[2]);                        // tau(0)
+            A(2, i) = base[0];                                       // u_x(h)
+            A(3, i) = base[2];                                       // u_z(h)
           }
         const Eigen::Vector4d rhs(-1., 0., 0., 0.); // sigma_zz = -p: a pressure into the layer
         const Eigen::Vector4d amp = A.fullPivLu().solve(rhs);
@@ -78,7 +78,7 @@ namespace greentread
         return b0;
       }
 
-      constexpr double table_low = 1e-3, table_high = 40.;
+      constexpr double       table_low = 1e-3, table_high = 40.;
       constexpr unsigned int table_size = 20000;
     } // namespace
 
@@ -89,8 +89,7 @@ namespace greentread
     {
       check_layer(layer);
       if (!(k >= 0.) || !std::isfinite(k))
-        throw InputError("elastic layer: wavenumber = " + format_short(k) +
-                         " 1/m; allowed: >= 0");
+        throw InputError("elastic layer: wavenumber = " + format_short(k) + " 1/m; allowed: >= 0");
       if (k == 0.)
         return column_compliance(layer);
       const double x = k * layer.thickness;
@@ -102,7 +101,7 @@ namespace greentread
 
 
     LayerComplianceTable::LayerComplianceTable(const ElasticLayer &layer_)
-      : layer(layer_)
+        : layer(layer_)
     {
       check_layer(layer);
       c0     = column_compliance(layer);
@@ -137,16 +136,20 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    rectangle_lattice_compliance(const std::function<double(double)> &compliance, const double a,
-                                 const double b, const unsigned int mx, const unsigned int my,
-                                 const unsigned int nx, const unsigned int ny,
-                                 const unsigned int harmonics)
+    rectangle_lattice_compliance(const std::function<double(double)> &compliance,
+                                 const double                         a,
+                                 const double                         b,
+                                 const unsigned int                   mx,
+                                 const unsigned int                   my,
+                                 const unsigned int                   nx,
+                                 const unsigned int                   ny,
+                                 const unsigned int                   harmonics)
     {
       if (nx < 2 * mx + 1 || ny < 2 * my + 1)
-        throw InputError("rectangle lattice compliance: the period of " + std::to_string(nx) +
-                         " x " + std::to_string(ny) + " rectangles is too short for offsets up to " +
-                         std::to_string(mx) + " x " + std::to_string(my) +
-                         "; allowed: at least 2 m + 1 rectangles in each direction");
+        throw InputError(
+          "rectangle lattice compliance: the period of " + std::to_string(nx) + " x " +
+          std::to_string(ny) + " rectangles is too short for offsets up to " + std::to_string(mx) +
+          " x " + std::to_string(my) + "; allowed: at least 2 m + 1 rectangles in each direction");
       if (!(a > 0.) || !(b > 0.) || harmonics == 0)
         throw InputError("rectangle lattice compliance: rectangle " + format_short(a) + " x " +
                          format_short(b) + " m, " + std::to_string(harmonics) +
@@ -203,27 +206,38 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    layer_lattice_kernel(const ElasticLayer &layer, const double a, const double b,
-                         const unsigned int nx, const unsigned int ny, const double margin)
+    layer_lattice_kernel(const ElasticLayer &layer,
+                         const double        a,
+                         const double        b,
+                         const unsigned int  nx,
+                         const unsigned int  ny,
+                         const double        margin)
     {
       const LayerComplianceTable table(layer);
       const unsigned int         px =
         std::max(2 * nx, nx + 2 * static_cast<unsigned int>(std::ceil(margin / a)));
       const unsigned int py =
         std::max(2 * ny, ny + 2 * static_cast<unsigned int>(std::ceil(margin / b)));
-      return rectangle_lattice_compliance([&](const double k) { return table(k); }, a, b, nx - 1,
-                                          ny - 1, px, py);
+      return rectangle_lattice_compliance(
+        [&](const double k) {
+          return table(k);
+        },
+        a, b, nx - 1, ny - 1, px, py);
     }
 
 
 
     Eigen::MatrixXd
-    layer_patch_compliance(const ElasticLayer &layer, const double a, const double b,
-                           const unsigned int nx, const unsigned int ny, const double margin)
+    layer_patch_compliance(const ElasticLayer &layer,
+                           const double        a,
+                           const double        b,
+                           const unsigned int  nx,
+                           const unsigned int  ny,
+                           const double        margin)
     {
       const Eigen::MatrixXd T = layer_lattice_kernel(layer, a, b, nx, ny, margin);
-      const unsigned int n = nx * ny;
-      Eigen::MatrixXd    L(n, n);
+      const unsigned int    n = nx * ny;
+      Eigen::MatrixXd       L(n, n);
       for (unsigned int p = 0; p < n; ++p)
         for (unsigned int q = 0; q < n; ++q)
           {

@@ -55,9 +55,8 @@ namespace greentread
 
     namespace
     {
-      constexpr KinematicBranch branch_of_pair[3] = {KinematicBranch::riding,
-                                                     KinematicBranch::impact_early,
-                                                     KinematicBranch::impact_late};
+      constexpr KinematicBranch branch_of_pair[3] = {
+        KinematicBranch::riding, KinematicBranch::impact_early, KinematicBranch::impact_late};
     } // namespace
 
 
@@ -68,11 +67,11 @@ namespace greentread
       const unsigned int indices[3][2] = {{1, 2}, {0, 1}, {2, 3}};
       for (unsigned int p = 0; p < 3; ++p)
         {
-          Pair &pair        = pairs[p];
-          pair.i            = indices[p][0];
-          pair.j            = indices[p][1];
-          const double a    = psi.u[pair.i], b = psi.u[pair.j];
-          const double c    = psi.v[pair.i], d = psi.v[pair.j];
+          Pair &pair     = pairs[p];
+          pair.i         = indices[p][0];
+          pair.j         = indices[p][1];
+          const double a = psi.u[pair.i], b = psi.u[pair.j];
+          const double c = psi.v[pair.i], d = psi.v[pair.j];
           const double det  = a * d - b * c;
           const double size = std::abs(a * d) + std::abs(b * c);
           pair.regular      = std::abs(det) > 1e-14 * size;
@@ -87,7 +86,8 @@ namespace greentread
       if (!(psi.u[0] > 0.))
         throw NumericalError(
           "kinematic contact: an impulse at the start of the step does not raise the "
-          "displacement at its end (g(dt) = " + format_short(psi.u[0]) +
+          "displacement at its end (g(dt) = " +
+          format_short(psi.u[0]) +
           " <= 0): the time step is longer than half a period of the structure; reduce "
           "'Time stepping/Time step'");
       fallback_weight = 1. / psi.u[0];

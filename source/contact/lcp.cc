@@ -21,8 +21,10 @@ namespace greentread
 
 
     double
-    natural_residual(const Eigen::VectorXd &z, const Eigen::VectorXd &w, const double m,
-                     const double s)
+    natural_residual(const Eigen::VectorXd &z,
+                     const Eigen::VectorXd &w,
+                     const double           m,
+                     const double           s)
     {
       if (!(s > 0.))
         return 0.;
@@ -120,7 +122,7 @@ namespace greentread
                 }
               const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M_AA);
               const double                               rcond = lu.rcond();
-              z_A = lu.solve(-q_A);
+              z_A                                              = lu.solve(-q_A);
               if (!(rcond > epsilon) || !z_A.allFinite())
                 {
                   result.iterations = iteration;
@@ -149,8 +151,8 @@ namespace greentread
 
           if (infeasible.empty())
             {
-              result.iterations  = iteration;
-              result.converged   = true;
+              result.iterations = iteration;
+              result.converged  = true;
               for (Eigen::Index i = 0; i < n; ++i)
                 result.projected = std::max(result.projected, -m * z[i] / scale);
               result.z = z.cwiseMax(0.);

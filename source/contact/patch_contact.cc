@@ -35,9 +35,9 @@ namespace greentread
 
 
     PatchKinematicContact::PatchKinematicContact(const convolution::PatchInfluence &psi_,
-                                                 const unsigned int    n)
-      : psi(psi_)
-      , matrix_free(static_cast<bool>(psi_.add_u))
+                                                 const unsigned int                 n)
+        : psi(psi_)
+        , matrix_free(static_cast<bool>(psi_.add_u))
     {
       if (matrix_free && !psi.instantaneous)
         throw InputError("patch contact: a matrix-free influence needs an instantaneous "
@@ -71,9 +71,9 @@ namespace greentread
 
 
     PatchStepReport
-    PatchKinematicContact::solve_continuous(const Eigen::VectorXd &uh,
-                                            const Eigen::VectorXd &d,
-                                            convolution::PatchLoad             &load)
+    PatchKinematicContact::solve_continuous(const Eigen::VectorXd  &uh,
+                                            const Eigen::VectorXd  &d,
+                                            convolution::PatchLoad &load)
     {
       // The load is linear over the step from the last step's end value a
       // (known) to b (unknown): u(t_{n+1}) = u^h + Psi_start a + Psi_end b.
@@ -81,21 +81,22 @@ namespace greentread
       for (unsigned int j = 0; j < n; ++j)
         if (!std::isfinite(uh[j]) || !std::isfinite(d[j]))
           throw NumericalError("patch contact: the history term or the road demand at point " +
-                               std::to_string(j) + " is not finite (u^h = " +
-                               format_short(uh[j]) + ", d = " + format_short(d[j]) + ")");
+                               std::to_string(j) + " is not finite (u^h = " + format_short(uh[j]) +
+                               ", d = " + format_short(d[j]) + ")");
       if (previous_end.size() != n)
         previous_end = Eigen::VectorXd::Zero(n);
       Eigen::VectorXd q = uh - d;
       convolution::add_influence(psi, 1, previous_end, q);
       if (!q.allFinite())
         throw NumericalError("patch contact: the force of the last step is not finite (largest "
-                             "|q| " + format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
+                             "|q| " +
+                             format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
       LcpResult lcp;
       if (matrix_free)
         {
-          ProjectedCgOptions      options;
-          options.operator_norm = end_norm;
-          options.tolerance     = psi.tolerance;
+          ProjectedCgOptions options;
+          options.operator_norm     = end_norm;
+          options.tolerance         = psi.tolerance;
           const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
             y.setZero(x.size());
             psi.add_u(2, x, y);
@@ -111,9 +112,9 @@ namespace greentread
         }
       if (!lcp.z.allFinite())
         throw NumericalError("patch contact: the complementarity solve returned a force that is "
-                             "not finite (" + (lcp.converged ? std::string("converged") :
-                                                               lcp.message) + ")");
-      PatchStepReport       report;
+                             "not finite (" +
+                             (lcp.converged ? std::string("converged") : lcp.message) + ")");
+      PatchStepReport report;
       report.outer_iterations = 1;
       report.lcp_iterations   = lcp.iterations;
       report.converged        = lcp.converged;
@@ -128,9 +129,9 @@ namespace greentread
         if (lcp.z[j] > 0.)
           ++report.n_contact;
       // Moved, not copied: no allocation per step for the record.
-      report.lcp_matrix = matrix_free ? nullptr : &psi.u[2];
-      report.lcp_q      = std::move(q);
-      report.lcp_z      = std::move(lcp.z);
+      report.lcp_matrix    = matrix_free ? nullptr : &psi.u[2];
+      report.lcp_q         = std::move(q);
+      report.lcp_z         = std::move(lcp.z);
       report.lcp_projected = lcp.projected;
       return report;
     }
@@ -138,23 +139,25 @@ namespace greentread
 
 
     PatchStepReport
-    PatchKinematicContact::solve(const Eigen::VectorXd &uh, const Eigen::VectorXd &vh,
-                                 const Eigen::VectorXd &d, const Eigen::VectorXd &dd,
+    PatchKinematicContact::solve(const Eigen::VectorXd  &uh,
+                                 const Eigen::VectorXd  &vh,
+                                 const Eigen::VectorXd  &d,
+                                 const Eigen::VectorXd  &dd,
                                  convolution::PatchLoad &load)
     {
       const unsigned int n = uh.size();
       if (psi.instantaneous)
         return solve_continuous(uh, d, load);
-      PatchStepReport    report;
+      PatchStepReport report;
       for (unsigned int j = 0; j < n; ++j)
         if (!std::isfinite(uh[j]) || !std::isfinite(vh[j]) || !std::isfinite(d[j]) ||
             !std::isfinite(dd[j]))
           throw NumericalError("patch contact: the history term or the road demand at point " +
-                               std::to_string(j) + " is not finite (u^h = " +
-                               format_short(uh[j]) + ", d = " + format_short(d[j]) + ")");
+                               std::to_string(j) + " is not finite (u^h = " + format_short(uh[j]) +
+                               ", d = " + format_short(d[j]) + ")");
 
       // What each point still needs, given the loads x of the others.
-      Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, 4); // x(j, g)
+      Eigen::MatrixXd x         = Eigen::MatrixXd::Zero(n, 4); // x(j, g)
       const auto      take_rule = [&](const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
                                  const std::vector<bool> &which, double &change) {
         change = 0.;
@@ -164,7 +167,7 @@ namespace greentread
               continue;
             const KinematicStep step = rules[j].solve(du[j], dv[j]);
             const auto          c    = components(step.load);
-            const double        sum  = std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]) + std::abs(c[3]);
+            const double sum = std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]) + std::abs(c[3]);
             std::array<double, 4> s{{1., 0., 0., 0.}};
             if (sum > 0.)
               for (unsigned int g = 0; g < 4; ++g)
@@ -179,10 +182,10 @@ namespace greentread
       Eigen::VectorXd du = d - uh, dv = dd - vh;
       take_rule(du, dv, std::vector<bool>(n, true), change);
 
-      Eigen::VectorXd       q = uh - d;
-      Eigen::MatrixXd      &M = lcp_matrix;
+      Eigen::VectorXd  q = uh - d;
+      Eigen::MatrixXd &M = lcp_matrix;
       M.resize(n, n);
-      LcpResult             lcp;
+      LcpResult              lcp;
       constexpr unsigned int max_rounds = 50;
       for (unsigned int round = 0; round < max_rounds; ++round)
         {
@@ -254,13 +257,12 @@ namespace greentread
             if (step.branch == KinematicBranch::fallback)
               ++report.n_fallback;
             else
-              report.velocity_residual =
-                std::max(report.velocity_residual,
-                         std::abs(v_end[j] - dd[j]) / std::max(scale, 1e-300));
+              report.velocity_residual = std::max(
+                report.velocity_residual, std::abs(v_end[j] - dd[j]) / std::max(scale, 1e-300));
           }
-      report.lcp_matrix = &M;
-      report.lcp_q      = std::move(q);
-      report.lcp_z      = std::move(lcp.z);
+      report.lcp_matrix    = &M;
+      report.lcp_q         = std::move(q);
+      report.lcp_z         = std::move(lcp.z);
       report.lcp_projected = lcp.projected;
       return report;
     }
@@ -268,7 +270,7 @@ namespace greentread
 
 
     RollingSummary
-    roll(convolution::PatchConvolution                                                              &conv,
+    roll(convolution::PatchConvolution                                           &conv,
          const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand,
          const unsigned int                                                       n_steps,
          const Eigen::VectorXd                                                   &start_force,
@@ -286,10 +288,10 @@ namespace greentread
           conv.preload(start_force);
           solver.set_force(start_force);
         }
-      convolution::PatchLoad       load(n);
-      Eigen::VectorXd uh(n), vh(n), dd(n);
-      RollingSummary  summary;
-      RollingStep     s;
+      convolution::PatchLoad load(n);
+      Eigen::VectorXd        uh(n), vh(n), dd(n);
+      RollingSummary         summary;
+      RollingStep            s;
       s.d.resize(n);
       unsigned int total = n_steps;
       for (unsigned int k = 0;; ++k)
@@ -323,16 +325,17 @@ namespace greentread
           s.force = load.impulse(dt) / dt;
           if (!s.force.allFinite() || !s.u.allFinite())
             throw NumericalError("rolling contact: the contact forces or displacements are not "
-                                 "finite at step " + std::to_string(k) + " (t = " +
-                                 format_short(s.time) + " s)" +
-                                 (s.report.converged ? std::string() :
-                                                       "; the contact solve had failed: " +
-                                                         s.report.message));
+                                 "finite at step " +
+                                 std::to_string(k) + " (t = " + format_short(s.time) + " s)" +
+                                 (s.report.converged ?
+                                    std::string() :
+                                    "; the contact solve had failed: " + s.report.message));
           if (!s.report.converged)
             {
               if (summary.failed_steps == 0)
-                summary.first_failure = "step " + std::to_string(k) + " (t = " +
-                                        format_short(s.time) + " s): " + s.report.message;
+                summary.first_failure = "step " + std::to_string(k) +
+                                        " (t = " + format_short(s.time) +
+                                        " s): " + s.report.message;
               ++summary.failed_steps;
             }
           summary.fallback_points += s.report.n_fallback;
@@ -351,19 +354,26 @@ namespace greentread
 
 
     StaticContact
-    solve_static_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &d0,
-                         const double total_load, const double delta)
+    solve_static_contact(const Eigen::MatrixXd &G0,
+                         const Eigen::VectorXd &d0,
+                         const double           total_load,
+                         const double           delta)
     {
       std::vector<bool> active(d0.size(), false);
-      return solve_static_contact([&](const Eigen::VectorXd &c) { return solve_lcp(G0, c, active); },
-                                  d0, total_load, delta);
+      return solve_static_contact(
+        [&](const Eigen::VectorXd &c) {
+          return solve_lcp(G0, c, active);
+        },
+        d0, total_load, delta);
     }
 
 
 
     StaticContact
-    solve_static_contact(const StaticSolve &solve, const Eigen::VectorXd &d0,
-                         const double total_load, const double delta)
+    solve_static_contact(const StaticSolve     &solve,
+                         const Eigen::VectorXd &d0,
+                         const double           total_load,
+                         const double           delta)
     {
       const unsigned int n        = d0.size();
       const auto         solve_at = [&](const double shift, StaticContact &result) {
@@ -371,7 +381,7 @@ namespace greentread
         const LcpResult       lcp = solve(q);
         if (!lcp.converged)
           throw NumericalError("static contact: the complementarity solve failed at indentation " +
-                               format_short(shift) + " m: " + lcp.message);
+                                       format_short(shift) + " m: " + lcp.message);
         result.q         = lcp.z;
         result.u         = lcp.w - q;
         result.delta     = shift;
@@ -398,10 +408,9 @@ namespace greentread
                                  format_short(total_load) + " N");
           high = low + 2. * (high - low);
         }
-      for (unsigned int k = 0; k < 100 && high - low > 1e-13 * std::max(1e-3, std::abs(high));
-           ++k)
+      for (unsigned int k = 0; k < 100 && high - low > 1e-13 * std::max(1e-3, std::abs(high)); ++k)
         {
-          const double mid = 0.5 * (low + high);
+          const double mid                                  = 0.5 * (low + high);
           (solve_at(mid, result) < total_load ? low : high) = mid;
         }
       const double load = solve_at(high, result);

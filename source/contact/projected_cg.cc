@@ -24,8 +24,8 @@ namespace greentread
           const double next = x.dot(y);
           if (!y.allFinite() || !(next > 0.))
             throw NumericalError("projected CG: the operator's product is not finite or not "
-                                 "positive (x^T W x = " + format_short(next) +
-                                 "): it is not symmetric positive definite");
+                                 "positive (x^T W x = " +
+                                 format_short(next) + "): it is not symmetric positive definite");
           const bool done = k > 5 && std::abs(next - lambda) <= 1e-3 * next;
           lambda          = next;
           if (done)
@@ -50,8 +50,10 @@ namespace greentread
 
 
     LcpResult
-    solve_lcp_projected_cg(const SymmetricOperator &W, const Eigen::VectorXd &q,
-                           const Eigen::VectorXd &start, const ProjectedCgOptions &options)
+    solve_lcp_projected_cg(const SymmetricOperator  &W,
+                           const Eigen::VectorXd    &q,
+                           const Eigen::VectorXd    &start,
+                           const ProjectedCgOptions &options)
     {
       const Eigen::Index n = q.size();
       check_lcp_input(q, start, "projected CG");
@@ -60,7 +62,7 @@ namespace greentread
       const double scale = options.scale > 0. ? options.scale : q.lpNorm<Eigen::Infinity>();
       const double tol   = options.tolerance * scale;
 
-      LcpResult       result;
+      LcpResult        result;
       Eigen::VectorXd &z = result.z, &g = result.w;
       z = start.size() == n ? Eigen::VectorXd(start.cwiseMax(0.)) : Eigen::VectorXd::Zero(n);
       Eigen::VectorXd Ap(n), p(n), phi(n), beta(n);
@@ -115,7 +117,7 @@ namespace greentread
                                    " is not positive: the operator is not positive definite";
                   break;
                 }
-              const double step = g.dot(p) / curvature;
+              const double step     = g.dot(p) / curvature;
               double       feasible = std::numeric_limits<double>::infinity();
               for (Eigen::Index i = 0; i < n; ++i)
                 if (p[i] > 0.)

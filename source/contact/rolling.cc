@@ -25,7 +25,7 @@ namespace greentread
       for (std::size_t p = 0; p < points.size(); ++p)
         {
           const double r = points[p][2], x = points[p][0];
-          t[p]           = r - std::sqrt(r * r - x * x);
+          t[p] = r - std::sqrt(r * r - x * x);
         }
       return t;
     }
@@ -33,8 +33,10 @@ namespace greentread
 
 
     StaticContact
-    start_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
-                  const PatchRoadHeights &road, const RollingSetup &setup)
+    start_contact(const Eigen::MatrixXd  &G0,
+                  const Eigen::VectorXd  &tread,
+                  const PatchRoadHeights &road,
+                  const RollingSetup     &setup)
     {
       Eigen::VectorXd z(tread.size()), slope(tread.size());
       road(0., z, slope);
@@ -44,8 +46,10 @@ namespace greentread
 
 
     StaticContact
-    start_contact(const StaticSolve &solve, const Eigen::VectorXd &tread,
-                  const PatchRoadHeights &road, const RollingSetup &setup)
+    start_contact(const StaticSolve      &solve,
+                  const Eigen::VectorXd  &tread,
+                  const PatchRoadHeights &road,
+                  const RollingSetup     &setup)
     {
       Eigen::VectorXd z(tread.size()), slope(tread.size());
       road(0., z, slope);
@@ -55,9 +59,12 @@ namespace greentread
 
 
     std::unique_ptr<convolution::PatchConvolution>
-    make_patch_convolution(const convolution::Method method, const modal::PatchModel &model,
-                           const double dt, const unsigned int n_steps,
-                           const unsigned int direct_kernel, const unsigned int threads,
+    make_patch_convolution(const convolution::Method         method,
+                           const modal::PatchModel          &model,
+                           const double                      dt,
+                           const unsigned int                n_steps,
+                           const unsigned int                direct_kernel,
+                           const unsigned int                threads,
                            const convolution::ShapePrecision precision)
     {
       if (method == convolution::Method::modal_recursive)
@@ -65,7 +72,7 @@ namespace greentread
       if (method != convolution::Method::direct)
         throw InputError("parameter 'Convolution/Method' = " + convolution::to_string(method) +
                          " is not allowed for a contact patch; allowed: direct, modal-recursive");
-      const unsigned int n_p      = model.n_points();
+      const unsigned int n_p = model.n_points();
       const unsigned int n_kernel =
         direct_kernel > 0 ? std::min(direct_kernel, n_steps + 1) : n_steps + 1;
       const double bytes = 8. * 8. * n_p * n_p * n_kernel;
@@ -81,22 +88,28 @@ namespace greentread
 
 
     RollingSummary
-    roll_patch(const modal::PatchModel &model, const Eigen::VectorXd &tread,
-               const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe)
+    roll_patch(const modal::PatchModel                        &model,
+               const Eigen::VectorXd                          &tread,
+               const PatchRoadHeights                         &road,
+               const StaticContact                            &start,
+               const RollingSetup                             &setup,
+               const std::function<void(const RollingStep &)> &observe)
     {
-      const auto conv = make_patch_convolution(setup.convolution, model, setup.time_step,
-                                               setup.n_steps, setup.direct_kernel, setup.threads,
-                                               setup.shape_precision);
+      const auto conv =
+        make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps,
+                               setup.direct_kernel, setup.threads, setup.shape_precision);
       return roll_patch(*conv, tread, road, start, setup, observe);
     }
 
 
 
     RollingSummary
-    roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
-               const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe,
+    roll_patch(convolution::PatchConvolution                   &convolution,
+               const Eigen::VectorXd                           &tread,
+               const PatchRoadHeights                          &road,
+               const StaticContact                             &start,
+               const RollingSetup                              &setup,
+               const std::function<void(const RollingStep &)>  &observe,
                const std::function<unsigned int(unsigned int)> &more_steps)
     {
       Eigen::VectorXd z(tread.size()), slope(tread.size());

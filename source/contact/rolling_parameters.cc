@@ -13,7 +13,8 @@ namespace greentread
       using base::RangePattern;
       prm.enter_subsection("Rolling");
       {
-        prm.declare_entry("Speeds (kph)", "50, 70, 90", dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
+        prm.declare_entry("Speeds (kph)", "50, 70, 90",
+                          dealii::Patterns::List(dealii::Patterns::Double(1., 400.)),
                           "Rolling speeds V0 in km/h, a comma-separated list (1 to 400).");
         prm.declare_entry("Distance", "2", base::RangePattern::closed(0.01, 200., "m"),
                           "Distance rolled in each run at 'Time stepping/Time step' (the "
@@ -31,10 +32,11 @@ namespace greentread
                           "'false' starts from an unloaded tyre suddenly indented.");
         prm.declare_entry("Direct kernel length", "0", dealii::Patterns::Integer(0),
                           "Steps kept by 'Convolution/Method' = direct (0: the whole run).");
-        prm.declare_entry("Frames", "40", dealii::Patterns::Integer(1, 10000),
-                          "Contact-stress maps written per run (VTU time series), evenly over its planned "
-                          "record; a run rolled on past it ('Spectra/Extend runs') keeps their spacing, "
-                          "so it writes more.");
+        prm.declare_entry(
+          "Frames", "40", dealii::Patterns::Integer(1, 10000),
+          "Contact-stress maps written per run (VTU time series), evenly over its planned "
+          "record; a run rolled on past it ('Spectra/Extend runs') keeps their spacing, "
+          "so it writes more.");
         prm.declare_entry("Stress reference", "100", base::RangePattern::positive("Pa"),
                           "sigma0 of L_f = 20 log10(|sigma| / sigma0), Eq. (52): the paper "
                           "gives 10^2 (printed N/m; a stress is in N/m^2 = Pa).");
@@ -53,9 +55,10 @@ namespace greentread
         for (const auto &s : base::split_list(prm.get("Speeds (kph)")))
           speeds.push_back(std::stod(s));
         if (speeds.empty())
-          throw InputError("parameter 'Rolling/Speeds (kph)' is empty; allowed: a list of speeds in "
-                           "km/h from 1 to 400");
-        distance             = prm.get_double("Distance");
+          throw InputError(
+            "parameter 'Rolling/Speeds (kph)' is empty; allowed: a list of speeds in "
+            "km/h from 1 to 400");
+        distance         = prm.get_double("Distance");
         static_load      = prm.get_double("Static load");
         indentation      = prm.get_double("Indentation");
         static_start     = prm.get_bool("Start from static equilibrium");
@@ -69,8 +72,9 @@ namespace greentread
       convolution = convolution::parse_method(
         prm.get("Method"), {convolution::Method::direct, convolution::Method::modal_recursive},
         "in scene tyre-road-contact (the paper's modal form overflows over a rolling run)");
-      shape_precision = prm.get("Shape precision") == "single" ? convolution::ShapePrecision::single_precision :
-                                                                 convolution::ShapePrecision::double_precision;
+      shape_precision = prm.get("Shape precision") == "single" ?
+                          convolution::ShapePrecision::single_precision :
+                          convolution::ShapePrecision::double_precision;
       prm.leave_subsection();
     }
   } // namespace contact

@@ -27,7 +27,9 @@ namespace greentread
 
 
     Method
-    parse_method(const std::string &name, const std::vector<Method> &allowed, const std::string &why)
+    parse_method(const std::string         &name,
+                 const std::vector<Method> &allowed,
+                 const std::string         &why)
     {
       std::string list;
       for (const auto m : allowed)
@@ -91,7 +93,7 @@ namespace greentread
 
     std::unique_ptr<Convolution>
     create(const ConvolutionParameters &parameters,
-           const modal::ModalModel            &model,
+           const modal::ModalModel     &model,
            const double                 dt,
            const unsigned int           n_steps,
            const ImpulseResponse       *exact)
@@ -104,8 +106,12 @@ namespace greentread
               if (exact)
                 response = *exact;
               else
-                response = {[&model](double t) { return model.impulse_response(t); },
-                            [&model](double t) { return model.impulse_response_derivative(t); },
+                response = {[&model](double t) {
+                              return model.impulse_response(t);
+                            },
+                            [&model](double t) {
+                              return model.impulse_response_derivative(t);
+                            },
                             model.max_modulus()};
               const unsigned int n_g =
                 truncation_length(response.g, dt, parameters.truncation_threshold, n_steps);

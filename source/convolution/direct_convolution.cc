@@ -42,9 +42,9 @@ namespace greentread
                                          const unsigned int                   n_kernel_,
                                          const unsigned int                   n_steps_,
                                          const double                         rate)
-      : Convolution(dt_)
-      , n_kernel(std::max(1u, n_kernel_))
-      , n_steps(n_steps_)
+        : Convolution(dt_)
+        , n_kernel(std::max(1u, n_kernel_))
+        , n_steps(n_steps_)
     {
       // Gauss-Legendre on [0,1], 8 points per sub-interval, with sub-intervals
       // short enough that the kernel turns by less than half a radian on each.
@@ -52,16 +52,14 @@ namespace greentread
       const unsigned int      n_sub =
         std::max(1u, static_cast<unsigned int>(std::ceil(rate * dt / 0.5)));
 
-      const auto weights = [&](const std::function<double(double)> &f,
-                               const unsigned int                   lag,
-                               double                              &wa,
-                               double                              &wb) {
+      const auto weights = [&](const std::function<double(double)> &f, const unsigned int lag,
+                               double &wa, double &wb) {
         wa = wb = 0.;
         for (unsigned int s = 0; s < n_sub; ++s)
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
-              const double x = (s + gauss.point(q)[0]) / n_sub; // r / dt
-              const double w = gauss.weight(q) / n_sub * dt;
+              const double x     = (s + gauss.point(q)[0]) / n_sub; // r / dt
+              const double w     = gauss.weight(q) / n_sub * dt;
               const double value = f((lag + x) * dt);
               wa += w * value * x;
               wb += w * value * (1. - x);
@@ -105,7 +103,7 @@ namespace greentread
     Response
     DirectConvolution::history()
     {
-      using Map = Eigen::Map<const Eigen::VectorXd>;
+      using Map                  = Eigen::Map<const Eigen::VectorXd>;
       const unsigned int L_steps = std::min(n, n_kernel - 1);
       const unsigned int L_nodes = std::min(n + 1, n_kernel - 1);
       const unsigned int k_steps = n_kernel - 1 - L_steps;

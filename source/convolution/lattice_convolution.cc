@@ -35,22 +35,25 @@ namespace greentread
       struct Work
       {
         std::array<unsigned int, 4> shape{{0, 0, 0, 0}}; // nx, ny, mx, my
-        double       *input = nullptr, *output = nullptr;
-        fftw_complex *rows = nullptr, *spectrum = nullptr;
+        double                     *input = nullptr, *output = nullptr;
+        fftw_complex               *rows = nullptr, *spectrum = nullptr;
 
         void
-        reserve(const unsigned int nx, const unsigned int ny, const unsigned int mx,
+        reserve(const unsigned int nx,
+                const unsigned int ny,
+                const unsigned int mx,
                 const unsigned int my)
         {
           const std::array<unsigned int, 4> wanted{{nx, ny, mx, my}};
           if (wanted == shape)
             return;
           release();
-          const std::size_t n_real = std::size_t(nx) * my, n_complex = std::size_t(mx) * (my / 2 + 1);
-          input    = fftw_alloc_real(n_real);
-          output   = fftw_alloc_real(n_real);
-          rows     = fftw_alloc_complex(n_complex);
-          spectrum = fftw_alloc_complex(n_complex);
+          const std::size_t n_real    = std::size_t(nx) * my,
+                            n_complex = std::size_t(mx) * (my / 2 + 1);
+          input                       = fftw_alloc_real(n_real);
+          output                      = fftw_alloc_real(n_real);
+          rows                        = fftw_alloc_complex(n_complex);
+          spectrum                    = fftw_alloc_complex(n_complex);
           if (!input || !output || !rows || !spectrum)
             {
               release();
@@ -71,7 +74,7 @@ namespace greentread
           fftw_free(spectrum);
           input = output = nullptr;
           rows = spectrum = nullptr;
-          shape = {{0, 0, 0, 0}};
+          shape           = {{0, 0, 0, 0}};
         }
 
         ~Work()
@@ -85,7 +88,7 @@ namespace greentread
 
     struct LatticeConvolution::Plans
     {
-      unsigned int  nx = 0, mx = 0, my = 0, my_c = 0; // the period, and ny's half spectrum
+      unsigned int nx = 0, mx = 0, my = 0, my_c = 0; // the period, and ny's half spectrum
       /// Row r2c on the first nx rows (input to rows); column DFTs forward
       /// out of place (rows to spectrum) and backward in place on all my_c
       /// columns; row c2r on the first nx rows (spectrum to output).
@@ -94,10 +97,10 @@ namespace greentread
       std::vector<double> kernel_spectrum; // real: the kernel is even
 
       Plans(const unsigned int nx_, const unsigned int ny)
-        : nx(nx_)
-        , mx(2 * nx_)
-        , my(2 * ny)
-        , my_c(ny + 1)
+          : nx(nx_)
+          , mx(2 * nx_)
+          , my(2 * ny)
+          , my_c(ny + 1)
       {
         // Planned on a work set of their own (FFTW_MEASURE overwrites the
         // arrays), executed on each thread's.
@@ -105,16 +108,14 @@ namespace greentread
         w.reserve(nx, ny, mx, my);
         const int      n_row = my, n_column = mx;
         const unsigned flags = FFTW_MEASURE;
-        rows_forward = fftw_plan_many_dft_r2c(1, &n_row, nx, w.input, nullptr, 1, my, w.rows,
-                                              nullptr, 1, my_c, flags);
-        columns_forward =
-          fftw_plan_many_dft(1, &n_column, my_c, w.rows, nullptr, my_c, 1, w.spectrum, nullptr,
-                             my_c, 1, FFTW_FORWARD, flags);
-        columns_backward =
-          fftw_plan_many_dft(1, &n_column, my_c, w.spectrum, nullptr, my_c, 1, w.spectrum,
-                             nullptr, my_c, 1, FFTW_BACKWARD, flags);
-        rows_backward = fftw_plan_many_dft_c2r(1, &n_row, nx, w.spectrum, nullptr, 1, my_c,
-                                               w.output, nullptr, 1, my, flags);
+        rows_forward     = fftw_plan_many_dft_r2c(1, &n_row, nx, w.input, nullptr, 1, my, w.rows,
+                                                  nullptr, 1, my_c, flags);
+        columns_forward  = fftw_plan_many_dft(1, &n_column, my_c, w.rows, nullptr, my_c, 1,
+                                              w.spectrum, nullptr, my_c, 1, FFTW_FORWARD, flags);
+        columns_backward = fftw_plan_many_dft(1, &n_column, my_c, w.spectrum, nullptr, my_c, 1,
+                                              w.spectrum, nullptr, my_c, 1, FFTW_BACKWARD, flags);
+        rows_backward    = fftw_plan_many_dft_c2r(1, &n_row, nx, w.spectrum, nullptr, 1, my_c,
+                                                  w.output, nullptr, 1, my, flags);
         if (!rows_forward || !columns_forward || !columns_backward || !rows_backward)
           throw NumericalError("lattice convolution: FFTW could not plan the transforms of " +
                                std::to_string(mx) + " x " + std::to_string(my) + " points");
@@ -130,9 +131,9 @@ namespace greentread
 
 
     LatticeConvolution::LatticeConvolution(const Eigen::MatrixXd &T)
-      : nx(T.rows())
-      , ny(T.cols())
-      , kernel(T)
+        : nx(T.rows())
+        , ny(T.cols())
+        , kernel(T)
     {
       if (T.size() == 0 || !T.allFinite())
         throw InputError("lattice convolution: the kernel is empty or not finite (" +
@@ -141,7 +142,7 @@ namespace greentread
       // The kernel wrapped onto the period: offset m at m and at 2 nx - m.
       // Whole (its rows i >= nx are not zero): by a plan of its own, once.
       const unsigned int mx = plans->mx, my = plans->my;
-      const std::size_t  n_c = std::size_t(mx) * plans->my_c;
+      const std::size_t  n_c      = std::size_t(mx) * plans->my_c;
       double            *field    = fftw_alloc_real(std::size_t(mx) * my);
       fftw_complex      *spectrum = fftw_alloc_complex(n_c);
       if (field == nullptr || spectrum == nullptr)
@@ -211,7 +212,8 @@ namespace greentread
       Eigen::MatrixXd    L(n, n);
       for (unsigned int p = 0; p < n; ++p)
         for (unsigned int q = 0; q < n; ++q)
-          L(p, q) = kernel(std::abs(int(p / ny) - int(q / ny)), std::abs(int(p % ny) - int(q % ny)));
+          L(p, q) =
+            kernel(std::abs(int(p / ny) - int(q / ny)), std::abs(int(p % ny) - int(q % ny)));
       return L;
     }
   } // namespace convolution

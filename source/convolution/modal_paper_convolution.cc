@@ -11,8 +11,8 @@ namespace greentread
   namespace convolution
   {
     ModalPaperConvolution::ModalPaperConvolution(const modal::ModalModel &model, const double dt_)
-      : Convolution(dt_)
-      , g0(model.impulse_response(0.))
+        : Convolution(dt_)
+        , g0(model.impulse_response(0.))
     {
       const dealii::QGauss<1> gauss(2);
       for (unsigned int g = 0; g < 2; ++g)
@@ -36,8 +36,12 @@ namespace greentread
         }
 
       // Psi of Eqs. (24)-(27): the current step by the same Gauss rule.
-      const auto g  = [&](double t) { return model.impulse_response(t); };
-      const auto dg = [&](double t) { return model.impulse_response_derivative(t); };
+      const auto g = [&](double t) {
+        return model.impulse_response(t);
+      };
+      const auto dg = [&](double t) {
+        return model.impulse_response_derivative(t);
+      };
       psi.u = {{g(dt), 0., 0., g0}};
       psi.v = {{dg(dt), 0., g0, dg(0.)}};
       for (unsigned int q = 0; q < 2; ++q)
@@ -104,19 +108,20 @@ namespace greentread
         }
       ++n;
 
-      if (!(growth < limit_growth) )
+      if (!(growth < limit_growth))
         throw NumericalError(
           "modal-paper convolution (Eqs. 12-15) overflowed at t = " + format_short(n * dt) +
           " s (step " + std::to_string(n) + "): its growing factor exp(xi*omega*t) reached " +
-          format_short(growth) + ", past 1/epsilon, so no significant digit of u is left, and it "
+          format_short(growth) +
+          ", past 1/epsilon, so no significant digit of u is left, and it "
           "becomes inf at exp(709). Use 'set Method = modal-recursive' in subsection Convolution, "
           "which is exact for any run length and damping.");
       if (growth > warning_growth && !warned)
         {
           warned = true;
           std::cerr << "warning: modal-paper convolution: exp(xi*omega*t) = "
-                    << format_short(growth) << " at t = " << format_short(n * dt)
-                    << " s; about " << int(std::log10(growth))
+                    << format_short(growth) << " at t = " << format_short(n * dt) << " s; about "
+                    << int(std::log10(growth))
                     << " of 16 significant digits of u are lost to round-off\n";
         }
     }

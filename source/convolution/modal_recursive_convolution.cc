@@ -9,13 +9,14 @@ namespace greentread
   namespace convolution
   {
     ModalRecursiveConvolution::ModalRecursiveConvolution(const modal::ModalModel &model,
-                                                         const double      dt_)
-      : Convolution(dt_)
-      , n_modes(model.n_modes())
+                                                         const double             dt_)
+        : Convolution(dt_)
+        , n_modes(model.n_modes())
     {
       if (model.max_real_part() > 0.)
         throw NumericalError("modal-recursive convolution: the modal model has an unstable pole "
-                             "(Re(lambda) = " + format_short(model.max_real_part()) +
+                             "(Re(lambda) = " +
+                             format_short(model.max_real_part()) +
                              " > 0); only stable poles can be convolved");
 
       std::vector<const modal::ModalTerm *> simple;
@@ -39,22 +40,20 @@ namespace greentread
           simple.push_back(&term);
 
       const auto m = static_cast<Eigen::Index>(simple.size());
-      for (auto *a : {&alpha_re, &alpha_im, &beta_a_re, &beta_a_im, &beta_b_re,
-                      &beta_b_im, &cu_re, &cu_im, &cv_re, &cv_im, &s_re, &s_im,
-                      &h_re, &h_im})
+      for (auto *a : {&alpha_re, &alpha_im, &beta_a_re, &beta_a_im, &beta_b_re, &beta_b_im, &cu_re,
+                      &cu_im, &cv_re, &cv_im, &s_re, &s_im, &h_re, &h_im})
         a->setZero(m);
 
       double g0 = 0.;
       for (Eigen::Index k = 0; k < m; ++k)
         {
-          const modal::ModalTerm           &term  = *simple[k];
+          const modal::ModalTerm    &term  = *simple[k];
           const std::complex<double> z     = term.lambda * dt;
           const auto                 psi   = exponential_moments(z);
           const std::complex<double> alpha = std::exp(z);
           const std::complex<double> ba    = dt * psi[1];
           const std::complex<double> bb    = dt * (psi[0] - psi[1]);
-          const double               scale =
-            term.kind == modal::ModalTerm::Kind::complex_pair ? 2. : 1.;
+          const double scale = term.kind == modal::ModalTerm::Kind::complex_pair ? 2. : 1.;
           const std::complex<double> cu = scale * term.residue;
           const std::complex<double> cv = scale * term.residue * term.lambda;
           alpha_re[k]                   = alpha.real();
@@ -77,14 +76,10 @@ namespace greentread
                          const Eigen::ArrayXd &cr, const Eigen::ArrayXd &ci) {
         return (cr * xr - ci * xi).sum();
       };
-      psi.u = {{re(alpha_re, alpha_im, cu_re, cu_im),
-               re(beta_a_re, beta_a_im, cu_re, cu_im),
-               re(beta_b_re, beta_b_im, cu_re, cu_im),
-               g0}};
-      psi.v = {{re(alpha_re, alpha_im, cv_re, cv_im),
-               re(beta_a_re, beta_a_im, cv_re, cv_im),
-               re(beta_b_re, beta_b_im, cv_re, cv_im) + g0,
-               cv_re.sum()}};
+      psi.u = {{re(alpha_re, alpha_im, cu_re, cu_im), re(beta_a_re, beta_a_im, cu_re, cu_im),
+                re(beta_b_re, beta_b_im, cu_re, cu_im), g0}};
+      psi.v = {{re(alpha_re, alpha_im, cv_re, cv_im), re(beta_a_re, beta_a_im, cv_re, cv_im),
+                re(beta_b_re, beta_b_im, cv_re, cv_im) + g0, cv_re.sum()}};
       for (const auto &d : double_poles)
         {
           // u = r0 s0 + r1 s1;  v = (r0 l + r1) s0 + r1 l s1 + r0 q.
@@ -106,11 +101,11 @@ namespace greentread
     {
       // One fused pass; the pragma lets the compiler vectorise the sums
       // (reassociating them), without -ffast-math elsewhere.
-      const Eigen::Index m  = s_re.size();
-      double             u  = 0., v = 0.;
-      const double *ar = alpha_re.data(), *ai = alpha_im.data(), *sr = s_re.data(),
-                   *si = s_im.data(), *ur = cu_re.data(), *ui = cu_im.data(),
-                   *vr = cv_re.data(), *vi = cv_im.data();
+      const Eigen::Index m = s_re.size();
+      double             u = 0., v = 0.;
+      const double      *ar = alpha_re.data(), *ai = alpha_im.data(), *sr = s_re.data(),
+                   *si = s_im.data(), *ur = cu_re.data(), *ui = cu_im.data(), *vr = cv_re.data(),
+                   *vi = cv_im.data();
       double *hr = h_re.data(), *hi = h_im.data();
 #pragma omp simd reduction(+ : u, v)
       for (Eigen::Index k = 0; k < m; ++k)
@@ -157,10 +152,9 @@ namespace greentread
         }
       for (auto &d : double_poles)
         {
-          d.s0 = d.h0 + d.wa0 * load.start + d.wb0 * load.end +
-                 d.alpha * load.impulse_start + load.impulse_end;
-          d.s1 = d.h1 + d.wa1 * load.start + d.wb1 * load.end +
-                 dt * d.alpha * load.impulse_start;
+          d.s0 = d.h0 + d.wa0 * load.start + d.wb0 * load.end + d.alpha * load.impulse_start +
+                 load.impulse_end;
+          d.s1 = d.h1 + d.wa1 * load.start + d.wb1 * load.end + dt * d.alpha * load.impulse_start;
         }
       history_ready = false;
       ++n;

@@ -1,7 +1,7 @@
 #include <greentread/convolution/mode_patch_convolution.h>
 #include <greentread/convolution/pole_weights.h>
-#include <greentread/convolution/shape_sums.h>
 #include <greentread/convolution/shape_kernels.h>
+#include <greentread/convolution/shape_sums.h>
 
 #include <greentread/modal/patch_model.h>
 
@@ -68,14 +68,16 @@ namespace greentread
       class ModePatchConvolution : public PatchConvolution
       {
       public:
-        ModePatchConvolution(const modal::PatchModel &model, const double dt,
-                             const unsigned int n_threads, const unsigned int block_steps)
-          : PatchConvolution(model.n_points(), dt)
-          , threads(n_threads)
-          , J(block_steps)
-          , w(model, dt)
-          , stride(model.shapes_imag.size() ? 2 : 1)
-          , lambda(model.lambda)
+        ModePatchConvolution(const modal::PatchModel &model,
+                             const double             dt,
+                             const unsigned int       n_threads,
+                             const unsigned int       block_steps)
+            : PatchConvolution(model.n_points(), dt)
+            , threads(n_threads)
+            , J(block_steps)
+            , w(model, dt)
+            , stride(model.shapes_imag.size() ? 2 : 1)
+            , lambda(model.lambda)
         {
           psi = w.influence();
           shapes.resize(stride * model.shapes.rows(), n_p);
@@ -161,12 +163,14 @@ namespace greentread
               slot[g]                = n_loads;
               loads_t.row(n_loads++) = load.component[g].transpose().template cast<Shape>();
             }
-          end_load = load.component[2];
+          end_load             = load.component[2];
           const Eigen::Index m = hr.size(), half = m / 2;
           if (threads > 1 && half > 64)
             {
               Eigen::MatrixXd first(n_p, 2);
-              auto task = dealii::Threads::new_task([&]() { sweep(0, half, first); });
+              auto            task = dealii::Threads::new_task([&]() {
+                sweep(0, half, first);
+              });
               sweep(half, m, uv);
               task.join();
               uv += first;
@@ -183,9 +187,9 @@ namespace greentread
           // s_k = int_{-inf}^0 e^{-lambda tau} phi_k^T q0 dtau = -phi_k^T q0 / lambda_k,
           // and the history's states h = e^{lambda dt} s. The first step's
           // start load is q0: its modal forces are kept.
-          in_block             = false;
-          const Eigen::Index m = hr.size();
-          Eigen::VectorXd    f(stride * m);
+          in_block                                        = false;
+          const Eigen::Index                            m = hr.size();
+          Eigen::VectorXd                               f(stride * m);
           const Eigen::Matrix<Shape, Eigen::Dynamic, 1> q = q0.template cast<Shape>();
           modal_forces(shapes.data(), stride * m, n_p, q.data(), 1, f.data());
           for (Eigen::Index k = 0; k < m; ++k)
@@ -213,7 +217,7 @@ namespace greentread
         void
         sum_states(const bool want_u, const bool want_v)
         {
-          const Eigen::Index m = hr.size();
+          const Eigen::Index                                        m = hr.size();
           Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> weights(stride * m, 2);
           for (Eigen::Index k = 0; k < m; ++k)
             {
@@ -259,22 +263,21 @@ namespace greentread
                   const auto         f = [&](const unsigned int g) {
                     if (slot[g] < 0)
                       return g == 1 && reuse ? std::complex<double>(end_r(k), end_i(k)) :
-                                               std::complex<double>();
+                                                       std::complex<double>();
                     const double *row = forces.data() + n_loads * stride * r + slot[g];
                     return std::complex<double>(row[0], stride == 2 ? row[n_loads] : 0.);
                   };
                   const std::complex<double> f_end = f(2);
-                  const std::complex<double> s = std::complex<double>(hr(k), hi(k)) +
+                  const std::complex<double> s     = std::complex<double>(hr(k), hi(k)) +
                                                  w.alpha[k] * f(0) + w.beta_a[k] * f(1) +
                                                  w.beta_b[k] * f_end + f(3);
-                  const std::complex<double> h = w.alpha[k] * s, u = w.cu1[k] * h,
-                                             v = w.cv1[k] * h;
-                  hr(k)                        = h.real();
-                  hi(k)                        = h.imag();
-                  end_r(k)                     = f_end.real();
-                  end_i(k)                     = f_end.imag();
-                  weights(stride * r, 0)       = u.real();
-                  weights(stride * r, 1)       = v.real();
+                  const std::complex<double> h = w.alpha[k] * s, u = w.cu1[k] * h, v = w.cv1[k] * h;
+                  hr(k)                  = h.real();
+                  hi(k)                  = h.imag();
+                  end_r(k)               = f_end.real();
+                  end_i(k)               = f_end.imag();
+                  weights(stride * r, 0) = u.real();
+                  weights(stride * r, 1) = v.real();
                   if (stride == 2)
                     {
                       weights(2 * r + 1, 0) = -u.imag();
@@ -318,7 +321,7 @@ namespace greentread
         void
         form_kernels()
         {
-          const std::size_t m = lambda.size();
+          const std::size_t                                        m = lambda.size();
           std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> weights;
           for (unsigned int lag = 1; lag < J; ++lag)
             {
@@ -333,13 +336,15 @@ namespace greentread
                 }
               weights.emplace_back(re, im);
             }
-          const std::size_t half = weights.size() / 2;
+          const std::size_t                                        half = weights.size() / 2;
           std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> first(weights.begin(),
                                                                          weights.begin() + half),
             second(weights.begin() + half, weights.end());
           std::vector<Eigen::MatrixXd> a, b;
-          auto task = dealii::Threads::new_task([&]() { a = lag_sums(first); });
-          b         = lag_sums(second);
+          auto                         task = dealii::Threads::new_task([&]() {
+            a = lag_sums(first);
+          });
+          b                                 = lag_sums(second);
           task.join();
           a.insert(a.end(), b.begin(), b.end());
           block_kernels.resize(Eigen::Index(J - 1) * n_p, n_p);
@@ -365,7 +370,7 @@ namespace greentread
         void
         record(const Eigen::VectorXd &q)
         {
-          block_q.col(n_block) = q.template cast<Shape>();
+          block_q.col(n_block)     = q.template cast<Shape>();
           const Eigen::Index later = J - 1 - n_block;
           if (later > 0)
             Eigen::Map<Eigen::VectorXd>(block_hist.data() + (n_block + 1) * n_p, later * n_p)
@@ -402,7 +407,9 @@ namespace greentread
           if (threads > 1 && half > 64)
             {
               Eigen::MatrixXd first = Eigen::MatrixXd::Zero(n_p, J);
-              auto task = dealii::Threads::new_task([&]() { block_sweep(0, half, next, first); });
+              auto            task  = dealii::Threads::new_task([&]() {
+                block_sweep(0, half, next, first);
+              });
               block_hist.setZero(n_p, J);
               block_sweep(half, m, next, block_hist);
               task.join();
@@ -423,15 +430,20 @@ namespace greentread
         /// arithmetic on the per-term arrays: one term at a time, its J
         /// steps were one chain of dependent complex products.
         void
-        step_terms(const Eigen::Index b, const Eigen::Index n, const Shape *f, const bool next,
-                   Shape *wt, double *tr, double *ti)
+        step_terms(const Eigen::Index b,
+                   const Eigen::Index n,
+                   const Shape       *f,
+                   const bool         next,
+                   Shape             *wt,
+                   double            *tr,
+                   double            *ti)
         {
           const double *ar = pole_r.col(0).data() + b, *ai = pole_i.col(0).data() + b,
                        *gr = pole_r.col(1).data() + b, *gi = pole_i.col(1).data() + b,
                        *br = pole_r.col(2).data() + b, *bi = pole_i.col(2).data() + b,
                        *cr = pole_r.col(3).data() + b, *ci = pole_i.col(3).data() + b;
           double *h_r = hr.data() + b, *h_i = hi.data() + b, *e_r = end_r.data() + b,
-                 *e_i = end_i.data() + b;
+                 *e_i            = end_i.data() + b;
           const Eigen::Index row = stride * J, im = stride == 2 ? J : 0;
           // f's imaginary part: the odd rows of complex shapes, zero for real ones.
           const auto f_i = [&](const Eigen::Index k, const Eigen::Index i) {
@@ -447,9 +459,9 @@ namespace greentread
             for (Eigen::Index k = 0; k < n; ++k)
               {
                 const double fr = f[k * row + i], fi = f_i(k, i);
-                const double x  = ar[k] * tr[k] - ai[k] * ti[k] + gr[k] * fr - gi[k] * fi;
-                ti[k]           = ar[k] * ti[k] + ai[k] * tr[k] + gr[k] * fi + gi[k] * fr;
-                tr[k]           = x;
+                const double x = ar[k] * tr[k] - ai[k] * ti[k] + gr[k] * fr - gi[k] * fi;
+                ti[k]          = ar[k] * ti[k] + ai[k] * tr[k] + gr[k] * fi + gi[k] * fr;
+                tr[k]          = x;
               }
           if (n_block > 0)
             for (Eigen::Index k = 0; k < n; ++k)
@@ -476,9 +488,9 @@ namespace greentread
           for (Eigen::Index j = 1; j < J; ++j)
             for (Eigen::Index k = 0; k < n; ++k)
               {
-                const double x = ar[k] * tr[k] - ai[k] * ti[k];
-                ti[k]          = ar[k] * ti[k] + ai[k] * tr[k];
-                tr[k]          = x;
+                const double x  = ar[k] * tr[k] - ai[k] * ti[k];
+                ti[k]           = ar[k] * ti[k] + ai[k] * tr[k];
+                tr[k]           = x;
                 wt[k * row + j] = Shape(x);
                 if (stride == 2)
                   wt[k * row + im + j] = Shape(-ti[k]);
@@ -488,8 +500,10 @@ namespace greentread
         /// Terms [begin, end) of block_pass(); their free responses added to
         /// @p out (N_p x J).
         void
-        block_sweep(const Eigen::Index begin, const Eigen::Index end, const bool next,
-                    Eigen::MatrixXd &out)
+        block_sweep(const Eigen::Index begin,
+                    const Eigen::Index end,
+                    const bool         next,
+                    Eigen::MatrixXd   &out)
         {
           // 256 rows per call (measured: the products' overheads fall with
           // longer calls up to about 256 rows, and the rows still fit in L2).
@@ -503,7 +517,8 @@ namespace greentread
           for (unsigned int p = 0; p < n_p; ++p)
             if ((block_q.row(p).array() != Shape(0)).any())
               points.push_back(p);
-          Eigen::Matrix<Shape, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q_t(points.size(), J);
+          Eigen::Matrix<Shape, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q_t(points.size(),
+                                                                                    J);
           for (std::size_t a = 0; a < points.size(); ++a)
             q_t.row(a) = block_q.row(points[a]);
           // The kernels read and add J values per point.
@@ -531,7 +546,7 @@ namespace greentread
         Eigen::Index stride;
         // Row-major: a block of terms is one contiguous stretch of memory.
         Eigen::Matrix<Shape, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> shapes;
-        std::vector<std::complex<double>>                                    lambda;
+        std::vector<std::complex<double>>                                     lambda;
         // The states of the next history, h = e^{lambda dt} s, and its u, v.
         Eigen::VectorXd hr, hi;
         Eigen::MatrixXd uv;
@@ -539,8 +554,8 @@ namespace greentread
         // precision, as modal_forces() reads them, and where each component is among them
         // (-1: zero, or reused).
         Eigen::Matrix<Shape, 4, Eigen::Dynamic, Eigen::RowMajor> loads_t;
-        unsigned int                                              n_loads = 0;
-        std::array<int, 4>                                        slot{{-1, -1, -1, -1}};
+        unsigned int                                             n_loads = 0;
+        std::array<int, 4>                                       slot{{-1, -1, -1, -1}};
         // The last end load and its modal forces.
         Eigen::VectorXd end_load, end_r, end_i;
         bool            reuse = false;
@@ -549,12 +564,12 @@ namespace greentread
         // the shapes' precision), and how many loads it has.
         std::vector<std::complex<double>> gamma;
         // Per term, real and imaginary parts: alpha, gamma, beta_a, c_u.
-        Eigen::MatrixXd                   pole_r, pole_i;
-        Eigen::MatrixXd                   block_kernels, block_hist;
+        Eigen::MatrixXd                                      pole_r, pole_i;
+        Eigen::MatrixXd                                      block_kernels, block_hist;
         Eigen::Matrix<Shape, Eigen::Dynamic, Eigen::Dynamic> block_q;
-        Eigen::Index                      n_block  = 0;
-        bool                              in_block = false;
-        bool            history_ready = false;
+        Eigen::Index                                         n_block       = 0;
+        bool                                                 in_block      = false;
+        bool                                                 history_ready = false;
         // Whether the steps sum the velocity, and whether uv's holds it.
         bool velocity = true, velocity_ready = false;
       };
@@ -563,24 +578,26 @@ namespace greentread
 
 
     std::unique_ptr<PatchConvolution>
-    make_rank_one_patch_convolution(const modal::PatchModel &model, const double dt,
-                                    const unsigned int n_threads, const ShapePrecision precision,
-                                    const unsigned int block_steps)
+    make_rank_one_patch_convolution(const modal::PatchModel &model,
+                                    const double             dt,
+                                    const unsigned int       n_threads,
+                                    const ShapePrecision     precision,
+                                    const unsigned int       block_steps)
     {
       if (!model.is_rank_one())
         throw std::logic_error("make_rank_one_patch_convolution: the model has full residues");
       if (block_steps != 0 && block_steps != 1 && block_steps != 4 && block_steps != 8 &&
           block_steps != 16)
-        throw std::logic_error("make_rank_one_patch_convolution: " +
-                               std::to_string(block_steps) +
+        throw std::logic_error("make_rank_one_patch_convolution: " + std::to_string(block_steps) +
                                " steps per time block; allowed: 0 (chosen), 1, 4, 8 or 16");
       // Blocks of J steps cost (J - 1) N_p^2 / 2 per step in their lag
       // kernels against the 2 R N_p of a pass over the R shape rows that
       // they save J - 1 times in J: worth it with many rows per point (the
       // tyre's model: 590), not with few (a fine contact grid on few modes).
       const Eigen::Index rows = model.shapes.rows() * (model.shapes_imag.size() ? 2 : 1);
-      const unsigned int J =
-        block_steps != 0 ? block_steps : rows >= 128 * Eigen::Index(model.n_points()) ? 16 : 1;
+      const unsigned int J    = block_steps != 0                             ? block_steps :
+                                rows >= 128 * Eigen::Index(model.n_points()) ? 16 :
+                                                                               1;
       if (precision == ShapePrecision::single_precision)
         return std::make_unique<ModePatchConvolution<float>>(model, dt, n_threads, J);
       return std::make_unique<ModePatchConvolution<double>>(model, dt, n_threads, J);

@@ -19,11 +19,12 @@ namespace greentread
       class ModalPatchConvolution : public PatchConvolution
       {
       public:
-        ModalPatchConvolution(const modal::PatchModel &model, const double dt,
-                              const unsigned int n_threads)
-          : PatchConvolution(model.n_points(), dt)
-          , n_terms(model.n_terms())
-          , threads(n_threads)
+        ModalPatchConvolution(const modal::PatchModel &model,
+                              const double             dt,
+                              const unsigned int       n_threads)
+            : PatchConvolution(model.n_points(), dt)
+            , n_terms(model.n_terms())
+            , threads(n_threads)
         {
           const PoleWeights w(model, dt);
           psi                   = w.influence();
@@ -66,7 +67,9 @@ namespace greentread
             }
           if (threads > 1)
             {
-              auto task = dealii::Threads::new_task([&]() { u.noalias() = Au * hist; });
+              auto task   = dealii::Threads::new_task([&]() {
+                u.noalias() = Au * hist;
+              });
               v.noalias() = Av * hist;
               task.join();
             }
@@ -87,7 +90,7 @@ namespace greentread
               history(u, v);
             }
           const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
-          const auto &p = load.component[0], &a = load.component[1], &b = load.component[2],
+          const auto        &p = load.component[0], &a = load.component[1], &b = load.component[2],
                      &e = load.component[3];
           for (unsigned int k = 0; k < n_terms; ++k)
             {
@@ -108,7 +111,7 @@ namespace greentread
           const Eigen::Index nk = Eigen::Index(n_terms) * n_p;
           for (unsigned int k = 0; k < n_terms; ++k)
             {
-              const std::complex<double> f = -1. / lambda[k];
+              const std::complex<double> f                   = -1. / lambda[k];
               state.segment(Eigen::Index(k) * n_p, n_p)      = f.real() * q0;
               state.segment(nk + Eigen::Index(k) * n_p, n_p) = f.imag() * q0;
             }
@@ -135,11 +138,12 @@ namespace greentread
       class DirectPatchConvolution : public PatchConvolution
       {
       public:
-        DirectPatchConvolution(const modal::PatchModel &model, const double dt,
-                               const unsigned int n_kernel_)
-          : PatchConvolution(model.n_points(), dt)
-          , n_kernel(std::max(2u, n_kernel_))
-          , preload_model(make_modal_patch_convolution(model, dt, 1))
+        DirectPatchConvolution(const modal::PatchModel &model,
+                               const double             dt,
+                               const unsigned int       n_kernel_)
+            : PatchConvolution(model.n_points(), dt)
+            , n_kernel(std::max(2u, n_kernel_))
+            , preload_model(make_modal_patch_convolution(model, dt, 1))
         {
           const PoleWeights w(model, dt);
           psi = w.influence();
@@ -159,8 +163,8 @@ namespace greentread
                   {
                     for (unsigned int k = 0; k < n_terms; ++k)
                       {
-                        const std::complex<double> gen[4] = {w.alpha[k], w.beta_a[k],
-                                                             w.beta_b[k], 1.};
+                        const std::complex<double> gen[4] = {w.alpha[k], w.beta_a[k], w.beta_b[k],
+                                                             1.};
                         z[k] = std::exp(model.lambda[k] * double(m + 1) * dt) * gen[g];
                       }
                     Wu[m].middleCols(g * n_p, n_p) = w.contract(false, z);
@@ -176,7 +180,7 @@ namespace greentread
           for (Eigen::Index m = 0; m < n_lags; ++m)
             for (unsigned int k = 0; k < n_terms; ++k)
               {
-                const std::complex<double> decay = std::exp(model.lambda[k] * double(m + 1) * dt);
+                const std::complex<double> decay  = std::exp(model.lambda[k] * double(m + 1) * dt);
                 const std::complex<double> gen[4] = {w.alpha[k], w.beta_a[k], w.beta_b[k], 1.};
                 for (unsigned int g = 0; g < 4; ++g)
                   {
@@ -191,15 +195,13 @@ namespace greentread
               for (unsigned int k = 0; k < n_terms; ++k)
                 {
                   // Column index i + n_p * j: a column-major n_p x n_p block.
-                  C.row(k)           = Eigen::Map<const Eigen::MatrixXd>(
-                                         Eigen::MatrixXd((*c)[k].real()).data(), 1,
-                                         Eigen::Index(n_p) * n_p);
+                  C.row(k) = Eigen::Map<const Eigen::MatrixXd>(
+                    Eigen::MatrixXd((*c)[k].real()).data(), 1, Eigen::Index(n_p) * n_p);
                   C.row(n_terms + k) = Eigen::Map<const Eigen::MatrixXd>(
-                                         Eigen::MatrixXd((*c)[k].imag()).data(), 1,
-                                         Eigen::Index(n_p) * n_p);
+                    Eigen::MatrixXd((*c)[k].imag()).data(), 1, Eigen::Index(n_p) * n_p);
                 }
-              const Eigen::MatrixXd W = Z * C;
-              auto &target = (c == &w.cu) ? Wu : Wv;
+              const Eigen::MatrixXd W      = Z * C;
+              auto                 &target = (c == &w.cu) ? Wu : Wv;
               for (Eigen::Index m = 0; m < n_lags; ++m)
                 for (unsigned int g = 0; g < 4; ++g)
                   target[m].middleCols(g * n_p, n_p) =
@@ -247,19 +249,21 @@ namespace greentread
         }
 
       private:
-        unsigned int                 n_kernel;
+        unsigned int                      n_kernel;
         std::unique_ptr<PatchConvolution> preload_model;
-        std::vector<Eigen::MatrixXd> Wu, Wv;
-        std::vector<Eigen::VectorXd> past;
-        std::size_t                  head = 0, n_recorded = 0;
+        std::vector<Eigen::MatrixXd>      Wu, Wv;
+        std::vector<Eigen::VectorXd>      past;
+        std::size_t                       head = 0, n_recorded = 0;
       };
     } // namespace
 
 
 
     std::unique_ptr<PatchConvolution>
-    make_modal_patch_convolution(const modal::PatchModel &model, const double dt,
-                                 const unsigned int n_threads, const ShapePrecision precision)
+    make_modal_patch_convolution(const modal::PatchModel &model,
+                                 const double             dt,
+                                 const unsigned int       n_threads,
+                                 const ShapePrecision     precision)
     {
       if (model.is_rank_one())
         return make_rank_one_patch_convolution(model, dt, n_threads, precision);
@@ -269,8 +273,9 @@ namespace greentread
 
 
     std::unique_ptr<PatchConvolution>
-    make_direct_patch_convolution(const modal::PatchModel &model, const double dt,
-                                  const unsigned int n_kernel)
+    make_direct_patch_convolution(const modal::PatchModel &model,
+                                  const double             dt,
+                                  const unsigned int       n_kernel)
     {
       return std::make_unique<DirectPatchConvolution>(model, dt, n_kernel);
     }
@@ -278,20 +283,22 @@ namespace greentread
 
 
     void
-    add_influence(const PatchInfluence &psi, const unsigned int g, const Eigen::VectorXd &x,
-                  Eigen::VectorXd &y)
+    add_influence(const PatchInfluence  &psi,
+                  const unsigned int     g,
+                  const Eigen::VectorXd &x,
+                  Eigen::VectorXd       &y)
     {
       if (psi.add_u)
         psi.add_u(g, x, y);
       else
-      {
-        // y += M x from the columns where x is not zero (the loads of the
-        // points in contact: a few percent of a fine grid's).
-        const Eigen::MatrixXd &M = psi.u[g];
-        for (Eigen::Index j = 0; j < x.size(); ++j)
-          if (x[j] != 0.)
-            y += x[j] * M.col(j);
-      }
+        {
+          // y += M x from the columns where x is not zero (the loads of the
+          // points in contact: a few percent of a fine grid's).
+          const Eigen::MatrixXd &M = psi.u[g];
+          for (Eigen::Index j = 0; j < x.size(); ++j)
+            if (x[j] != 0.)
+              y += x[j] * M.col(j);
+        }
     }
   } // namespace convolution
 } // namespace greentread

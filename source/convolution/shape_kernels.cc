@@ -23,8 +23,11 @@ namespace greentread
       // is formed in float, and the call's sum is added in double.
       template <unsigned int N, typename T>
       [[gnu::always_inline]] inline void
-      forces_loop(const T *shapes, const std::size_t rows, const std::size_t P, const T *loads,
-                  double *forces)
+      forces_loop(const T          *shapes,
+                  const std::size_t rows,
+                  const std::size_t P,
+                  const T          *loads,
+                  double           *forces)
       {
         const T *l0 = loads, *l1 = loads + (N > 1 ? P : 0), *l2 = loads + (N > 2 ? 2 * P : 0),
                 *l3 = loads + (N > 3 ? 3 * P : 0);
@@ -59,8 +62,11 @@ namespace greentread
       // P / width dependent FMAs). Returns the rows done.
       template <typename T>
       [[gnu::always_inline]] inline std::size_t
-      forces_four_rows(const T *shapes, const std::size_t rows, const std::size_t P,
-                       const T *l0, double *forces)
+      forces_four_rows(const T          *shapes,
+                       const std::size_t rows,
+                       const std::size_t P,
+                       const T          *l0,
+                       double           *forces)
       {
         std::size_t r = 0;
         for (; r + 4 <= rows; r += 4)
@@ -85,8 +91,12 @@ namespace greentread
 
       template <typename T>
       [[gnu::always_inline]] inline void
-      forces_any(const T *shapes, const std::size_t rows, const std::size_t P, const T *l,
-                 const unsigned int n_loads, double *forces)
+      forces_any(const T           *shapes,
+                 const std::size_t  rows,
+                 const std::size_t  P,
+                 const T           *l,
+                 const unsigned int n_loads,
+                 double            *forces)
       {
         switch (n_loads)
           {
@@ -111,15 +121,19 @@ namespace greentread
       // read and written once per four rows.
       template <unsigned int C, typename T>
       [[gnu::always_inline]] inline void
-      add_rows(const T *shapes, const std::size_t rows, const std::size_t P,
-               const double *weights, T *u, T *v)
+      add_rows(const T          *shapes,
+               const std::size_t rows,
+               const std::size_t P,
+               const double     *weights,
+               T                *u,
+               T                *v)
       {
         std::size_t r = 0;
         for (; r + 4 <= rows; r += 4)
           {
             const T *s0 = shapes + r * P, *s1 = s0 + P, *s2 = s1 + P, *s3 = s2 + P;
-            const T  x0 = T(weights[2 * r]), x1 = T(weights[2 * r + 2]),
-                    x2 = T(weights[2 * r + 4]), x3 = T(weights[2 * r + 6]);
+            const T  x0 = T(weights[2 * r]), x1 = T(weights[2 * r + 2]), x2 = T(weights[2 * r + 4]),
+                    x3 = T(weights[2 * r + 6]);
             const T y0 = T(weights[2 * r + 1]), y1 = T(weights[2 * r + 3]),
                     y2 = T(weights[2 * r + 5]), y3 = T(weights[2 * r + 7]);
 #pragma omp simd
@@ -147,8 +161,12 @@ namespace greentread
 
       template <typename T>
       [[gnu::always_inline]] inline void
-      add_loop(const T *shapes, const std::size_t rows, const std::size_t P,
-               const double *weights, const unsigned int n_out, double *out)
+      add_loop(const T           *shapes,
+               const std::size_t  rows,
+               const std::size_t  P,
+               const double      *weights,
+               const unsigned int n_out,
+               double            *out)
       {
         if constexpr (std::is_same_v<T, double>)
           {
@@ -172,16 +190,24 @@ namespace greentread
 
       template <typename T>
       __attribute__((target("avx2,fma"))) void
-      forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P, const T *loads,
-                  const unsigned int n_loads, double *forces)
+      forces_avx2(const T           *shapes,
+                  const std::size_t  rows,
+                  const std::size_t  P,
+                  const T           *loads,
+                  const unsigned int n_loads,
+                  double            *forces)
       {
         forces_any(shapes, rows, P, loads, n_loads, forces);
       }
 
       template <typename T>
       __attribute__((target("avx2,fma"))) void
-      add_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
-               const double *weights, const unsigned int n_out, double *out)
+      add_avx2(const T           *shapes,
+               const std::size_t  rows,
+               const std::size_t  P,
+               const double      *weights,
+               const unsigned int n_out,
+               double            *out)
       {
         add_loop(shapes, rows, P, weights, n_out, out);
       }
@@ -196,8 +222,12 @@ namespace greentread
       // The AVX-512 copies (tiles twice as tall, below): 38 and 48.
       template <unsigned int J, unsigned int RT, typename T>
       [[gnu::always_inline]] inline void
-      block_forces_tile(const T *s, const std::size_t P, const unsigned int *points,
-                        const std::size_t n_points, const T *loads, T *forces)
+      block_forces_tile(const T            *s,
+                        const std::size_t   P,
+                        const unsigned int *points,
+                        const std::size_t   n_points,
+                        const T            *loads,
+                        T                  *forces)
       {
         T acc[RT][J] = {};
         for (std::size_t a = 0; a < n_points; ++a)
@@ -221,9 +251,13 @@ namespace greentread
 
       template <unsigned int J, unsigned int Wide, typename T>
       [[gnu::always_inline]] inline void
-      block_forces_loop(const T *shapes, const std::size_t rows, const std::size_t P,
-                        const unsigned int *points, const std::size_t n_points,
-                        const T *loads, T *forces)
+      block_forces_loop(const T            *shapes,
+                        const std::size_t   rows,
+                        const std::size_t   P,
+                        const unsigned int *points,
+                        const std::size_t   n_points,
+                        const T            *loads,
+                        T                  *forces)
       {
         constexpr unsigned int RT = (sizeof(T) == 4 ? 6 : 3) * Wide;
         std::size_t            r  = 0;
@@ -238,8 +272,8 @@ namespace greentread
         for (; r + RT <= rows; r += RT)
           {
             if (n_points < P)
-              for (std::size_t b = (r + ahead) * P * sizeof(T); b < (r + ahead + RT) * P * sizeof(T);
-                   b += 64)
+              for (std::size_t b = (r + ahead) * P * sizeof(T);
+                   b < (r + ahead + RT) * P * sizeof(T); b += 64)
                 __builtin_prefetch(reinterpret_cast<const void *>(base + b));
             block_forces_tile<J, RT>(shapes + r * P, P, points, n_points, loads, forces + r * J);
           }
@@ -249,8 +283,11 @@ namespace greentread
 
       template <unsigned int J, unsigned int PT, typename T>
       [[gnu::always_inline]] inline void
-      block_add_tile(const T *s, const std::size_t rows, const std::size_t P, const T *weights,
-                     double *out)
+      block_add_tile(const T          *s,
+                     const std::size_t rows,
+                     const std::size_t P,
+                     const T          *weights,
+                     double           *out)
       {
         T acc[PT][J] = {};
         for (std::size_t r = 0; r < rows; ++r)
@@ -272,8 +309,11 @@ namespace greentread
 
       template <unsigned int J, unsigned int Wide, typename T>
       [[gnu::always_inline]] inline void
-      block_add_loop(const T *shapes, const std::size_t rows, const std::size_t P,
-                     const T *weights, double *out)
+      block_add_loop(const T          *shapes,
+                     const std::size_t rows,
+                     const std::size_t P,
+                     const T          *weights,
+                     double           *out)
       {
         constexpr unsigned int PT = (sizeof(T) == 4 ? 6 : 3) * Wide;
         std::size_t            p  = 0;
@@ -285,9 +325,14 @@ namespace greentread
 
       template <unsigned int Wide, typename T>
       [[gnu::always_inline]] inline void
-      block_forces_any(const T *shapes, const std::size_t rows, const std::size_t P,
-                       const unsigned int *points, const std::size_t n_points, const T *loads,
-                       const unsigned int J, T *forces)
+      block_forces_any(const T            *shapes,
+                       const std::size_t   rows,
+                       const std::size_t   P,
+                       const unsigned int *points,
+                       const std::size_t   n_points,
+                       const T            *loads,
+                       const unsigned int  J,
+                       T                  *forces)
       {
         switch (J)
           {
@@ -305,8 +350,12 @@ namespace greentread
 
       template <unsigned int Wide, typename T>
       [[gnu::always_inline]] inline void
-      block_add_any(const T *shapes, const std::size_t rows, const std::size_t P,
-                    const T *weights, const unsigned int J, double *out)
+      block_add_any(const T           *shapes,
+                    const std::size_t  rows,
+                    const std::size_t  P,
+                    const T           *weights,
+                    const unsigned int J,
+                    double            *out)
       {
         switch (J)
           {
@@ -324,17 +373,26 @@ namespace greentread
 
       template <typename T>
       __attribute__((target("avx2,fma"))) void
-      block_forces_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
-                        const unsigned int *points, const std::size_t n_points, const T *loads,
-                        const unsigned int J, T *forces)
+      block_forces_avx2(const T            *shapes,
+                        const std::size_t   rows,
+                        const std::size_t   P,
+                        const unsigned int *points,
+                        const std::size_t   n_points,
+                        const T            *loads,
+                        const unsigned int  J,
+                        T                  *forces)
       {
         block_forces_any<1>(shapes, rows, P, points, n_points, loads, J, forces);
       }
 
       template <typename T>
       __attribute__((target("avx2,fma"))) void
-      block_add_avx2(const T *shapes, const std::size_t rows, const std::size_t P,
-                     const T *weights, const unsigned int J, double *out)
+      block_add_avx2(const T           *shapes,
+                     const std::size_t  rows,
+                     const std::size_t  P,
+                     const T           *weights,
+                     const unsigned int J,
+                     double            *out)
       {
         block_add_any<1>(shapes, rows, P, weights, J, out);
       }
@@ -344,17 +402,26 @@ namespace greentread
       // registers a row.
       template <typename T>
       __attribute__((target("avx512f,prefer-vector-width=512"))) void
-      block_forces_avx512(const T *shapes, const std::size_t rows, const std::size_t P,
-                          const unsigned int *points, const std::size_t n_points,
-                          const T *loads, const unsigned int J, T *forces)
+      block_forces_avx512(const T            *shapes,
+                          const std::size_t   rows,
+                          const std::size_t   P,
+                          const unsigned int *points,
+                          const std::size_t   n_points,
+                          const T            *loads,
+                          const unsigned int  J,
+                          T                  *forces)
       {
         block_forces_any<2>(shapes, rows, P, points, n_points, loads, J, forces);
       }
 
       template <typename T>
       __attribute__((target("avx512f,prefer-vector-width=512"))) void
-      block_add_avx512(const T *shapes, const std::size_t rows, const std::size_t P,
-                       const T *weights, const unsigned int J, double *out)
+      block_add_avx512(const T           *shapes,
+                       const std::size_t  rows,
+                       const std::size_t  P,
+                       const T           *weights,
+                       const unsigned int J,
+                       double            *out)
       {
         block_add_any<2>(shapes, rows, P, weights, J, out);
       }
@@ -378,8 +445,12 @@ namespace greentread
 
     template <typename Shape>
     void
-    modal_forces(const Shape *shapes, const std::size_t rows, const std::size_t P,
-                 const Shape *loads, const unsigned int n_loads, double *forces)
+    modal_forces(const Shape       *shapes,
+                 const std::size_t  rows,
+                 const std::size_t  P,
+                 const Shape       *loads,
+                 const unsigned int n_loads,
+                 double            *forces)
     {
       if (has_avx2())
         forces_avx2(shapes, rows, P, loads, n_loads, forces);
@@ -391,8 +462,12 @@ namespace greentread
 
     template <typename Shape>
     void
-    add_weighted_shapes(const Shape *shapes, const std::size_t rows, const std::size_t P,
-                        const double *weights, const unsigned int n_out, double *out)
+    add_weighted_shapes(const Shape       *shapes,
+                        const std::size_t  rows,
+                        const std::size_t  P,
+                        const double      *weights,
+                        const unsigned int n_out,
+                        double            *out)
     {
       if (n_out != 1 && n_out != 2)
         throw std::logic_error("add_weighted_shapes: " + std::to_string(n_out) +
@@ -407,9 +482,14 @@ namespace greentread
 
     template <typename Shape>
     void
-    block_forces(const Shape *shapes, const std::size_t rows, const std::size_t P,
-                 const unsigned int *points, const std::size_t n_points, const Shape *loads,
-                 const unsigned int J, Shape *forces)
+    block_forces(const Shape        *shapes,
+                 const std::size_t   rows,
+                 const std::size_t   P,
+                 const unsigned int *points,
+                 const std::size_t   n_points,
+                 const Shape        *loads,
+                 const unsigned int  J,
+                 Shape              *forces)
     {
       if (has_avx512())
         block_forces_avx512(shapes, rows, P, points, n_points, loads, J, forces);
@@ -423,8 +503,12 @@ namespace greentread
 
     template <typename Shape>
     void
-    add_block_weighted_shapes(const Shape *shapes, const std::size_t rows, const std::size_t P,
-                              const Shape *weights, const unsigned int J, double *out)
+    add_block_weighted_shapes(const Shape       *shapes,
+                              const std::size_t  rows,
+                              const std::size_t  P,
+                              const Shape       *weights,
+                              const unsigned int J,
+                              double            *out)
     {
       if (has_avx512())
         block_add_avx512(shapes, rows, P, weights, J, out);
@@ -437,27 +521,54 @@ namespace greentread
 
 
     template void
-    block_forces(const double *, std::size_t, std::size_t, const unsigned int *, std::size_t,
-                 const double *, unsigned int, double *);
-    template void
-    block_forces(const float *, std::size_t, std::size_t, const unsigned int *, std::size_t,
-                 const float *, unsigned int, float *);
-    template void
-    add_block_weighted_shapes(const double *, std::size_t, std::size_t, const double *,
-                              unsigned int, double *);
-    template void
-    add_block_weighted_shapes(const float *, std::size_t, std::size_t, const float *,
-                              unsigned int, double *);
-    template void
-    modal_forces(const double *, std::size_t, std::size_t, const double *, unsigned int,
+    block_forces(const double *,
+                 std::size_t,
+                 std::size_t,
+                 const unsigned int *,
+                 std::size_t,
+                 const double *,
+                 unsigned int,
                  double *);
+    template void
+    block_forces(const float *,
+                 std::size_t,
+                 std::size_t,
+                 const unsigned int *,
+                 std::size_t,
+                 const float *,
+                 unsigned int,
+                 float *);
+    template void
+    add_block_weighted_shapes(const double *,
+                              std::size_t,
+                              std::size_t,
+                              const double *,
+                              unsigned int,
+                              double *);
+    template void
+    add_block_weighted_shapes(const float *,
+                              std::size_t,
+                              std::size_t,
+                              const float *,
+                              unsigned int,
+                              double *);
+    template void
+    modal_forces(const double *, std::size_t, std::size_t, const double *, unsigned int, double *);
     template void
     modal_forces(const float *, std::size_t, std::size_t, const float *, unsigned int, double *);
     template void
-    add_weighted_shapes(const double *, std::size_t, std::size_t, const double *, unsigned int,
+    add_weighted_shapes(const double *,
+                        std::size_t,
+                        std::size_t,
+                        const double *,
+                        unsigned int,
                         double *);
     template void
-    add_weighted_shapes(const float *, std::size_t, std::size_t, const double *, unsigned int,
+    add_weighted_shapes(const float *,
+                        std::size_t,
+                        std::size_t,
+                        const double *,
+                        unsigned int,
                         double *);
   } // namespace convolution
 } // namespace greentread

@@ -1,5 +1,5 @@
-#include <greentread/fe/abaqus_export.h>
 #include <greentread/base/mesh_ids.h>
+#include <greentread/fe/abaqus_export.h>
 
 #include <deal.II/grid/tria_accessor.h>
 
@@ -14,18 +14,19 @@ namespace greentread
     using namespace dealii;
 
     void
-    write_abaqus(const std::filesystem::path  &file,
-                 const Triangulation<3>       &triangulation,
-                 const Mapping<3>             &mapping,
-                 const MaterialParameters     &m,
-                 const base::ParameterRecord  &record)
+    write_abaqus(const std::filesystem::path &file,
+                 const Triangulation<3>      &triangulation,
+                 const Mapping<3>            &mapping,
+                 const MaterialParameters    &m,
+                 const base::ParameterRecord &record)
     {
       base::AtomicFile out_file(file);
       auto            &out = out_file.stream();
       // 12 significant digits: CalculiX reads at most 20 characters per
       // number, and "-1.05623843005276e-13" (15 digits) would become -0.1056.
       out.precision(12);
-      out << "*HEADING\n" << "GreenTread tyre mesh, C3D20 elements, SI units\n";
+      out << "*HEADING\n"
+          << "GreenTread tyre mesh, C3D20 elements, SI units\n";
       record.write_comments(out, "** ");
 
       // Abaqus corner k is deal.II vertex corner[k]; mid-edge node 9 + k joins
@@ -36,8 +37,8 @@ namespace greentread
       // deal.II face of each Abaqus face S1..S6.
       const unsigned int face_of[6] = {4, 5, 2, 1, 3, 0};
 
-      const unsigned int n_vertices = triangulation.n_vertices();
-      std::map<unsigned int, Point<3>> node;
+      const unsigned int                                   n_vertices = triangulation.n_vertices();
+      std::map<unsigned int, Point<3>>                     node;
       std::map<unsigned int, std::array<unsigned int, 20>> element;
       for (const auto &cell : triangulation.active_cell_iterators())
         {
@@ -54,10 +55,10 @@ namespace greentread
                 const unsigned int b = GeometryInfo<3>::line_to_cell_vertices(l, 1);
                 if ((a == edge[k][0] && b == edge[k][1]) || (a == edge[k][1] && b == edge[k][0]))
                   {
-                    e[8 + k] = n_vertices + cell->line_index(l) + 1;
-                    const Point<3> unit =
-                      0.5 * (GeometryInfo<3>::unit_cell_vertex(a) + GeometryInfo<3>::unit_cell_vertex(b));
-                    node[e[8 + k]] = mapping.transform_unit_to_real_cell(cell, unit);
+                    e[8 + k]            = n_vertices + cell->line_index(l) + 1;
+                    const Point<3> unit = 0.5 * (GeometryInfo<3>::unit_cell_vertex(a) +
+                                                 GeometryInfo<3>::unit_cell_vertex(b));
+                    node[e[8 + k]]      = mapping.transform_unit_to_real_cell(cell, unit);
                   }
               }
           element[cell->active_cell_index() + 1] = e;
@@ -87,7 +88,7 @@ namespace greentread
         }
 
       // Rim seat nodes and the inner surface, by face.
-      std::set<unsigned int>                 seat;
+      std::set<unsigned int>                            seat;
       std::map<unsigned int, std::vector<unsigned int>> inner;
       for (const auto &cell : triangulation.active_cell_iterators())
         for (unsigned int s = 0; s < 6; ++s)
@@ -106,7 +107,8 @@ namespace greentread
                   for (unsigned int v = 0; v < 4; ++v)
                     on_face = on_face || p.distance(face->vertex(v)) < 1e-12;
                   for (unsigned int l = 0; l < 4; ++l)
-                    on_face = on_face || (k >= 8 && e[k] == n_vertices + face->line(l)->index() + 1);
+                    on_face =
+                      on_face || (k >= 8 && e[k] == n_vertices + face->line(l)->index() + 1);
                   if (on_face)
                     seat.insert(e[k]);
                 }
@@ -130,7 +132,8 @@ namespace greentread
       // Materials, with the belt orthotropic in cylindrical axes.
       out << "*ORIENTATION, NAME=CYL, SYSTEM=CYLINDRICAL\n0., 0., 0., 0., 0., 1.\n";
       const auto isotropic = [&](const std::string &name, double E, double nu, double rho) {
-        out << "*MATERIAL, NAME=" << name << "\n*ELASTIC\n" << E << ", " << nu << "\n*DENSITY\n"
+        out << "*MATERIAL, NAME=" << name << "\n*ELASTIC\n"
+            << E << ", " << nu << "\n*DENSITY\n"
             << rho << '\n';
       };
       isotropic("TREAD", m.tread_E, m.tread_nu, m.tread_density);
@@ -140,7 +143,8 @@ namespace greentread
           << m.belt_E_r << ", " << m.belt_E_theta << ", " << m.belt_E_z << ", " << m.belt_nu_rtheta
           << ", " << m.belt_nu_rz << ", " << m.belt_nu_thetaz << ", " << m.belt_G_rtheta << ", "
           << m.belt_G_rz << ",\n"
-          << m.belt_G_thetaz << ", 0.\n*DENSITY\n" << m.belt_density << '\n';
+          << m.belt_G_thetaz << ", 0.\n*DENSITY\n"
+          << m.belt_density << '\n';
       // Rayleigh damping as comments: Abaqus would take '*DAMPING, ALPHA=,
       // BETA=' under each material, CalculiX does not.
       out << "** Rayleigh damping C = alpha M + beta K of each material (GreenTread's):\n";

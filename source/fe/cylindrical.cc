@@ -24,8 +24,8 @@ namespace greentread
       // On each cell, the DoFs with the same index within their component
       // belong to the same node.
       std::map<types::global_dof_index, std::size_t> node_of_x;
-      std::vector<Node>                               result;
-      std::vector<types::global_dof_index>            local(fe.n_dofs_per_cell());
+      std::vector<Node>                              result;
+      std::vector<types::global_dof_index>           local(fe.n_dofs_per_cell());
       for (const auto &cell : dofs.active_cell_iterators())
         {
           cell->get_dof_indices(local);
@@ -57,14 +57,14 @@ namespace greentread
           for (unsigned int j = 0; j < B.n(); ++j)
             {
               const double bx = B(x, j), by = B(y, j);
-              B(x, j)         = c * bx + s * by;
-              B(y, j)         = -s * bx + c * by;
+              B(x, j) = c * bx + s * by;
+              B(y, j) = -s * bx + c * by;
             }
           for (unsigned int i = 0; i < B.m(); ++i)
             {
               const double bx = B(i, x), by = B(i, y);
-              B(i, x)         = c * bx + s * by;
-              B(i, y)         = -s * bx + c * by;
+              B(i, x) = c * bx + s * by;
+              B(i, y) = -s * bx + c * by;
             }
         }
       return B;

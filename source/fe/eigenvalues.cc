@@ -59,7 +59,7 @@ namespace greentread
       std::vector<Vector<double>>       vectors(n, Vector<double>(dofs.n_dofs()));
       SolverControl                     control(std::max<unsigned int>(dofs.n_dofs(), 1000), 1e-10);
       ArpackSolver::AdditionalData      data(std::min<unsigned int>(2 * n + 10, dofs.n_dofs() - 1),
-                                        ArpackSolver::largest_magnitude, true);
+                                             ArpackSolver::largest_magnitude, true);
       ArpackSolver                      solver(control, data);
       solver.set_shift(shift);
       try

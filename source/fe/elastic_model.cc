@@ -36,11 +36,11 @@ namespace greentread
     ElasticModel::ElasticModel(const Triangulation<3>                 &triangulation_,
                                const std::map<unsigned int, Material> &materials_,
                                const unsigned int                      degree)
-      : triangulation(triangulation_)
-      , materials(materials_)
-      , fe(FE_Q<3>(degree), 3)
-      , map(degree)
-      , dofs(triangulation_)
+        : triangulation(triangulation_)
+        , materials(materials_)
+        , fe(FE_Q<3>(degree), 3)
+        , map(degree)
+        , dofs(triangulation_)
     {
       for (const auto &cell : triangulation.active_cell_iterators())
         if (materials.count(cell->material_id()) == 0)
@@ -72,23 +72,23 @@ namespace greentread
       M      = 0.;
       C      = 0.;
       C_mass = 0.;
-      const QGauss<3>                    quadrature(fe.degree + 1);
-      FEValues<3>                        values(map, fe, quadrature,
-                             update_values | update_gradients | update_JxW_values |
-                               update_quadrature_points);
-      const FEValuesExtractors::Vector   u(0);
-      const unsigned int                 n = fe.n_dofs_per_cell();
+      const QGauss<3>                      quadrature(fe.degree + 1);
+      FEValues<3>                          values(map, fe, quadrature,
+                                                  update_values | update_gradients | update_JxW_values |
+                                                    update_quadrature_points);
+      const FEValuesExtractors::Vector     u(0);
+      const unsigned int                   n = fe.n_dofs_per_cell();
       FullMatrix<double>                   k(n, n), m(n, n), c(n, n), c_mass(n, n);
       std::vector<types::global_dof_index> indices(n);
-      std::vector<SymmetricTensor<2, 3>> strain(n), stress_of(n);
-      std::vector<Tensor<1, 3>>          shape(n);
+      std::vector<SymmetricTensor<2, 3>>   strain(n), stress_of(n);
+      std::vector<Tensor<1, 3>>            shape(n);
 
       for (const auto &cell : dofs.active_cell_iterators())
         {
           values.reinit(cell);
-          k                       = 0.;
-          m                       = 0.;
-          const Material &mat     = material(cell->material_id());
+          k                   = 0.;
+          m                   = 0.;
+          const Material &mat = material(cell->material_id());
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const SymmetricTensor<4, 3> stiffness = mat.stiffness_at(values.quadrature_point(q));
@@ -129,14 +129,14 @@ namespace greentread
 
 
     Vector<double>
-    ElasticModel::traction_load(const types::boundary_id                                boundary,
+    ElasticModel::traction_load(const types::boundary_id                             boundary,
                                 const std::function<Tensor<1, 3>(const Point<3> &)> &t) const
     {
       Vector<double>                       f(dofs.n_dofs());
       const QGauss<2>                      quadrature(fe.degree + 1);
       FEFaceValues<3>                      values(map, fe, quadrature,
-                                 update_values | update_JxW_values | update_quadrature_points |
-                                   update_normal_vectors);
+                                                  update_values | update_JxW_values | update_quadrature_points |
+                                                    update_normal_vectors);
       const FEValuesExtractors::Vector     u(0);
       std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
       Vector<double>                       local(fe.n_dofs_per_cell());
@@ -167,7 +167,7 @@ namespace greentread
       Vector<double>                       f(dofs.n_dofs());
       const QGauss<2>                      quadrature(fe.degree + 1);
       FEFaceValues<3>                      values(map, fe, quadrature,
-                                 update_values | update_JxW_values | update_normal_vectors);
+                                                  update_values | update_JxW_values | update_normal_vectors);
       const FEValuesExtractors::Vector     u(0);
       std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
       for (const auto &cell : dofs.active_cell_iterators())
@@ -187,7 +187,8 @@ namespace greentread
 
 
     void
-    ElasticModel::add_clamp(const types::boundary_id boundary, AffineConstraints<double> &constraints) const
+    ElasticModel::add_clamp(const types::boundary_id   boundary,
+                            AffineConstraints<double> &constraints) const
     {
       VectorTools::interpolate_boundary_values(map, dofs, boundary, Functions::ZeroFunction<3>(3),
                                                constraints);
@@ -202,11 +203,11 @@ namespace greentread
                                              AffineConstraints<double> &constraints) const
     {
       FullMatrix<double> R(3, 3);
-      R(0, 0) = std::cos(angle);
-      R(0, 1) = -std::sin(angle);
-      R(1, 0) = std::sin(angle);
-      R(1, 1) = std::cos(angle);
-      R(2, 2) = 1.;
+      R(0, 0)           = std::cos(angle);
+      R(0, 1)           = -std::sin(angle);
+      R(1, 0)           = std::sin(angle);
+      R(1, 1)           = std::cos(angle);
+      R(2, 2)           = 1.;
       const auto rotate = [&](const Point<3> &p) {
         return Point<3>(R(0, 0) * p[0] + R(0, 1) * p[1], R(1, 0) * p[0] + R(1, 1) * p[1], p[2]);
       };
@@ -248,14 +249,17 @@ namespace greentread
           if (!match)
             throw NumericalError("rotational periodicity: the face at (" +
                                  format_short(a.center[0]) + ", " + format_short(a.center[1]) +
-                                 ", " + format_short(a.center[2]) + ") has no partner on the "
-                                 "other side rotated by " + format_short(angle) + " rad: the "
+                                 ", " + format_short(a.center[2]) +
+                                 ") has no partner on the "
+                                 "other side rotated by " +
+                                 format_short(angle) +
+                                 " rad: the "
                                  "periodic faces of the mesh do not match");
           // Match vertices ignoring the coordinate most normal to the faces.
-          const auto     face2  = match->cell->face(match->face);
-          const Tensor<1, 3> normal =
-            cross_product_3d(face2->vertex(1) - face2->vertex(0), face2->vertex(2) - face2->vertex(0));
-          unsigned int direction = 0;
+          const auto         face2     = match->cell->face(match->face);
+          const Tensor<1, 3> normal    = cross_product_3d(face2->vertex(1) - face2->vertex(0),
+                                                          face2->vertex(2) - face2->vertex(0));
+          unsigned int       direction = 0;
           for (unsigned int d = 1; d < 3; ++d)
             if (std::abs(normal[d]) > std::abs(normal[direction]))
               direction = d;
@@ -328,16 +332,16 @@ namespace greentread
       /// Kp of one cell from the stress at its quadrature points.
       template <typename Stress>
       void
-      add_geometric_stiffness(const DoFHandler<3>          &dofs,
-                              const FESystem<3>            &fe,
-                              const Mapping<3>             &mapping,
-                              SparseMatrix<double>         &Kp,
-                              const Stress                 &stress_at)
+      add_geometric_stiffness(const DoFHandler<3>  &dofs,
+                              const FESystem<3>    &fe,
+                              const Mapping<3>     &mapping,
+                              SparseMatrix<double> &Kp,
+                              const Stress         &stress_at)
       {
         Kp = 0.;
         const QGauss<3>                      quadrature(fe.degree + 1);
         FEValues<3>                          values(mapping, fe, quadrature,
-                               update_gradients | update_JxW_values | update_quadrature_points);
+                                                    update_gradients | update_JxW_values | update_quadrature_points);
         const unsigned int                   n = fe.n_dofs_per_cell();
         FullMatrix<double>                   k(n, n);
         std::vector<types::global_dof_index> indices(n);
@@ -370,16 +374,15 @@ namespace greentread
     {
       const FEValuesExtractors::Vector   disp(0);
       std::vector<SymmetricTensor<2, 3>> strains;
-      add_geometric_stiffness(dofs, fe, map, Kp,
-                              [&](const auto &cell, const FEValues<3> &values, unsigned int q) {
-                                if (q == 0)
-                                  {
-                                    strains.resize(values.n_quadrature_points);
-                                    values[disp].get_function_symmetric_gradients(u, strains);
-                                  }
-                                return stress(values.quadrature_point(q), cell->material_id(),
-                                              strains[q]);
-                              });
+      add_geometric_stiffness(
+        dofs, fe, map, Kp, [&](const auto &cell, const FEValues<3> &values, unsigned int q) {
+          if (q == 0)
+            {
+              strains.resize(values.n_quadrature_points);
+              values[disp].get_function_symmetric_gradients(u, strains);
+            }
+          return stress(values.quadrature_point(q), cell->material_id(), strains[q]);
+        });
     }
 
 
@@ -416,9 +419,8 @@ namespace greentread
     double
     ElasticModel::max_von_mises(const Vector<double> &u) const
     {
-      const QGauss<3>                    quadrature(fe.degree + 1);
-      FEValues<3>                        values(map, fe, quadrature,
-                             update_gradients | update_quadrature_points);
+      const QGauss<3> quadrature(fe.degree + 1);
+      FEValues<3>     values(map, fe, quadrature, update_gradients | update_quadrature_points);
       const FEValuesExtractors::Vector   disp(0);
       std::vector<SymmetricTensor<2, 3>> strains(quadrature.size());
       double                             largest = 0.;
@@ -442,12 +444,13 @@ namespace greentread
       {
       public:
         explicit StressPostprocessor(const ElasticModel &model)
-          : model(model)
-        {}
+            : model(model)
+        {
+        }
 
         void
         evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
-                              std::vector<Vector<double>> &computed) const override
+                              std::vector<Vector<double>>              &computed) const override
         {
           const auto cell = inputs.template get_cell<3>();
           for (unsigned int p = 0; p < inputs.evaluation_points.size(); ++p)
@@ -455,10 +458,10 @@ namespace greentread
               SymmetricTensor<2, 3> strain;
               for (unsigned int i = 0; i < 3; ++i)
                 for (unsigned int j = i; j < 3; ++j)
-                  strain[i][j] = 0.5 * (inputs.solution_gradients[p][i][j] +
-                                        inputs.solution_gradients[p][j][i]);
-              computed[p](0) = von_mises(
-                model.stress(inputs.evaluation_points[p], cell->material_id(), strain));
+                  strain[i][j] =
+                    0.5 * (inputs.solution_gradients[p][i][j] + inputs.solution_gradients[p][j][i]);
+              computed[p](0) =
+                von_mises(model.stress(inputs.evaluation_points[p], cell->material_id(), strain));
               computed[p](1) = cell->material_id();
             }
         }
@@ -487,8 +490,8 @@ namespace greentread
     {
       // The postprocessor first: DataOut keeps a pointer to it and must be
       // destroyed before it.
-      StressPostprocessor      stress_output(*this);
-      DataOut<3>               out;
+      StressPostprocessor stress_output(*this);
+      DataOut<3>          out;
       out.attach_dof_handler(dofs);
       std::vector<std::string> names(3, "displacement");
       std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(

@@ -31,8 +31,11 @@ namespace greentread
       /// value @p v and gradient (dr, dz) at radius @p r: B_0 and B_1
       /// (source/fe/harmonic_section.h).
       std::array<Strain, 2>
-      strains(const unsigned int c, const double v, const double dr, const double dz,
-              const double r)
+      strains(const unsigned int c,
+              const double       v,
+              const double       dr,
+              const double       dz,
+              const double       r)
       {
         Strain e0, e1;
         if (c == UR)
@@ -60,8 +63,11 @@ namespace greentread
       /// The amplitude displacement gradient (row: component, column:
       /// direction, both in (r, theta, z)), parts G_0 and G_1.
       std::array<Grad, 2>
-      gradients(const unsigned int c, const double v, const double dr, const double dz,
-                const double r)
+      gradients(const unsigned int c,
+                const double       v,
+                const double       dr,
+                const double       dz,
+                const double       r)
       {
         Grad g0, g1;
         if (c == UR)
@@ -95,10 +101,11 @@ namespace greentread
       {
         dealii::FullMatrix<double> a, b, c;
         explicit LocalQuadratic(const unsigned int n)
-          : a(n, n)
-          , b(n, n)
-          , c(n, n)
-        {}
+            : a(n, n)
+            , b(n, n)
+            , c(n, n)
+        {
+        }
       };
 
       /// Call @p add(free row, free column, i, j) for every pair of a cell's
@@ -153,9 +160,9 @@ namespace greentread
               sum = Sparse(sum + used[k].first * *used[k].second);
             return sum;
           }
-        Sparse       sum = *used.front().second;
-        double      *v   = sum.valuePtr();
-        const auto   nnz = sum.nonZeros();
+        Sparse     sum = *used.front().second;
+        double    *v   = sum.valuePtr();
+        const auto nnz = sum.nonZeros();
         for (Eigen::Index i = 0; i < nnz; ++i)
           v[i] *= used.front().first;
         for (std::size_t k = 1; k < used.size(); ++k)
@@ -174,20 +181,19 @@ namespace greentread
     HarmonicSection::HarmonicSection(const dealii::Triangulation<2>         &section,
                                      const std::map<unsigned int, Material> &materials,
                                      const unsigned int                      degree)
-      : triangulation(section)
-      , materials(materials)
-      , fe(dealii::FE_Q<2>(std::max(1u, std::min(degree, 4u))), 3)
-      , mapping(1)
-      , dofs(section)
+        : triangulation(section)
+        , materials(materials)
+        , fe(dealii::FE_Q<2>(std::max(1u, std::min(degree, 4u))), 3)
+        , mapping(1)
+        , dofs(section)
     {
       if (degree < 1 || degree > 4)
         throw InputError("parameter 'Geometry/Element degree' = " + std::to_string(degree) +
                          " is not allowed; allowed: 1 to 4 on the section (harmonic route), "
                          "1 or 2 for the 3D cell");
       dofs.distribute_dofs(fe);
-      const auto held =
-        dealii::DoFTools::extract_boundary_dofs(dofs, dealii::ComponentMask(),
-                                                {dealii::types::boundary_id(geometry::rim_seat)});
+      const auto held = dealii::DoFTools::extract_boundary_dofs(
+        dofs, dealii::ComponentMask(), {dealii::types::boundary_id(geometry::rim_seat)});
       free.assign(dofs.n_dofs(), -1);
       long n_free = 0;
       for (dealii::types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
@@ -201,28 +207,29 @@ namespace greentread
     void
     HarmonicSection::assemble()
     {
-      const unsigned int       n = size_t(std::count_if(free.begin(), free.end(),
-                                                       [](long f) { return f >= 0; }));
+      const unsigned int n = size_t(std::count_if(free.begin(), free.end(), [](long f) {
+        return f >= 0;
+      }));
       // The 3D cell's Gauss rule (degree + 1 points), so that the two
       // routes differ only by the discretisation along the ring.
-      const dealii::QGauss<2>  quadrature(fe.degree + 1);
-      dealii::FEValues<2>      values(mapping, fe, quadrature,
-                                 dealii::update_values | dealii::update_gradients |
-                                   dealii::update_quadrature_points | dealii::update_JxW_values);
-      const unsigned int       per_cell = fe.n_dofs_per_cell();
+      const dealii::QGauss<2>                      quadrature(fe.degree + 1);
+      dealii::FEValues<2>                          values(mapping, fe, quadrature,
+                                                          dealii::update_values | dealii::update_gradients |
+                                                            dealii::update_quadrature_points | dealii::update_JxW_values);
+      const unsigned int                           per_cell = fe.n_dofs_per_cell();
       std::vector<dealii::types::global_dof_index> local(per_cell);
-      Triplets ka, kb, kc, ca, cb, cc, m, cm;
-      std::vector<std::array<Strain, 2>> eps(per_cell), sig(per_cell);
+      Triplets                                     ka, kb, kc, ca, cb, cc, m, cm;
+      std::vector<std::array<Strain, 2>>           eps(per_cell), sig(per_cell);
       for (const auto &cell : dofs.active_cell_iterators())
         {
           const auto found = materials.find(cell->material_id());
           if (found == materials.end())
-            throw InputError("the section has material id " +
-                             std::to_string(cell->material_id()) + ", which no material defines");
+            throw InputError("the section has material id " + std::to_string(cell->material_id()) +
+                             ", which no material defines");
           const Material &mat = found->second;
           values.reinit(cell);
           cell->get_dof_indices(local);
-          LocalQuadratic k(per_cell);
+          LocalQuadratic             k(per_cell);
           dealii::FullMatrix<double> mass(per_cell, per_cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
@@ -231,7 +238,7 @@ namespace greentread
               for (unsigned int i = 0; i < per_cell; ++i)
                 {
                   const unsigned int c = fe.system_to_component_index(i).first;
-                  const auto g = values.shape_grad_component(i, q, c);
+                  const auto         g = values.shape_grad_component(i, q, c);
                   eps[i] = strains(c, values.shape_value_component(i, q, c), g[0], g[1], r);
                   sig[i] = {{mat.stiffness * eps[i][0], mat.stiffness * eps[i][1]}};
                 }
@@ -243,21 +250,22 @@ namespace greentread
                     k.c(i, j) += (eps[i][1] * sig[j][1]) * dV;
                     if (fe.system_to_component_index(i).first ==
                         fe.system_to_component_index(j).first)
-                      mass(i, j) += mat.density * values.shape_value(i, q) *
-                                    values.shape_value(j, q) * dV;
+                      mass(i, j) +=
+                        mat.density * values.shape_value(i, q) * values.shape_value(j, q) * dV;
                   }
             }
-          for_free_pairs(local, free, [&](const long fi, const long fj, const unsigned int i,
-                                          const unsigned int j) {
-            ka.emplace_back(fi, fj, k.a(i, j));
-            kb.emplace_back(fi, fj, k.b(i, j));
-            kc.emplace_back(fi, fj, k.c(i, j));
-            ca.emplace_back(fi, fj, mat.beta * k.a(i, j));
-            cb.emplace_back(fi, fj, mat.beta * k.b(i, j));
-            cc.emplace_back(fi, fj, mat.beta * k.c(i, j));
-            m.emplace_back(fi, fj, mass(i, j));
-            cm.emplace_back(fi, fj, mat.alpha * mass(i, j));
-          });
+          for_free_pairs(
+            local, free,
+            [&](const long fi, const long fj, const unsigned int i, const unsigned int j) {
+              ka.emplace_back(fi, fj, k.a(i, j));
+              kb.emplace_back(fi, fj, k.b(i, j));
+              kc.emplace_back(fi, fj, k.c(i, j));
+              ca.emplace_back(fi, fj, mat.beta * k.a(i, j));
+              cb.emplace_back(fi, fj, mat.beta * k.b(i, j));
+              cc.emplace_back(fi, fj, mat.beta * k.c(i, j));
+              m.emplace_back(fi, fj, mass(i, j));
+              cm.emplace_back(fi, fj, mat.alpha * mass(i, j));
+            });
         }
       K       = {to_sparse(ka, n), to_sparse(kb, n), to_sparse(kc, n)};
       C_beta  = {to_sparse(ca, n), to_sparse(cb, n), to_sparse(cc, n)};
@@ -281,8 +289,8 @@ namespace greentread
     HarmonicSection::shifted_stiffness(const unsigned int n, const double s) const
     {
       const double n1 = n, n2 = n1 * n1;
-      return combine({{1., &K.a}, {n1, &K.b}, {n2, &K.c}, {1., &Kp.a}, {n1, &Kp.b}, {n2, &Kp.c},
-                      {-s, &M}});
+      return combine(
+        {{1., &K.a}, {n1, &K.b}, {n2, &K.c}, {1., &Kp.a}, {n1, &Kp.b}, {n2, &Kp.c}, {-s, &M}});
     }
 
 
@@ -299,9 +307,10 @@ namespace greentread
     std::array<Eigen::SparseMatrix<std::complex<double>>, 3>
     HarmonicSection::dynamic_stiffness(const double omega) const
     {
-      using C              = std::complex<double>;
-      const C          jw(0., omega);
-      const auto part = [&](const Eigen::SparseMatrix<double> &k, const Eigen::SparseMatrix<double> &kp,
+      using C = std::complex<double>;
+      const C    jw(0., omega);
+      const auto part = [&](const Eigen::SparseMatrix<double> &k,
+                            const Eigen::SparseMatrix<double> &kp,
                             const Eigen::SparseMatrix<double> &c) {
         return Eigen::SparseMatrix<C>(k.cast<C>() + kp.cast<C>() + jw * c.cast<C>());
       };
@@ -320,9 +329,9 @@ namespace greentread
       std::vector<dealii::types::global_dof_index> local(per_cell);
 
       // The pressure's load: the traction -p n on the inner surface.
-      Eigen::VectorXd             load = Eigen::VectorXd::Zero(n);
-      const dealii::QGauss<1>     face_quadrature(fe.degree + 2);
-      dealii::FEFaceValues<2>     face_values(mapping, fe, face_quadrature,
+      Eigen::VectorXd         load = Eigen::VectorXd::Zero(n);
+      const dealii::QGauss<1> face_quadrature(fe.degree + 2);
+      dealii::FEFaceValues<2> face_values(mapping, fe, face_quadrature,
                                           dealii::update_values | dealii::update_normal_vectors |
                                             dealii::update_quadrature_points |
                                             dealii::update_JxW_values);
@@ -341,8 +350,7 @@ namespace greentread
                       continue;
                     load(free[local[i]]) += -pressure * face_values.normal_vector(q)[c] *
                                             face_values.shape_value(i, q) *
-                                            face_values.quadrature_point(q)[0] *
-                                            face_values.JxW(q);
+                                            face_values.quadrature_point(q)[0] * face_values.JxW(q);
                   }
             }
 
@@ -353,15 +361,14 @@ namespace greentread
       const Eigen::VectorXd u = solver.solve(load);
       if (!u.allFinite() || (K.a * u - load).norm() > 1e-8 * load.norm())
         throw NumericalError("the section's inflation: the static solve failed (residual " +
-                             format_printf("%.2g", (K.a * u - load).norm() / load.norm()) +
-                             ")");
+                             format_printf("%.2g", (K.a * u - load).norm() / load.norm()) + ")");
 
       // Its stress at every quadrature point, and Kp of that prestress.
-      const dealii::QGauss<2> quadrature(fe.degree + 1);
-      dealii::FEValues<2>     values(mapping, fe, quadrature,
-                                 dealii::update_values | dealii::update_gradients |
-                                   dealii::update_quadrature_points | dealii::update_JxW_values);
-      Triplets                pa, pb, pc;
+      const dealii::QGauss<2>          quadrature(fe.degree + 1);
+      dealii::FEValues<2>              values(mapping, fe, quadrature,
+                                              dealii::update_values | dealii::update_gradients |
+                                                dealii::update_quadrature_points | dealii::update_JxW_values);
+      Triplets                         pa, pb, pc;
       std::vector<std::array<Grad, 2>> grad(per_cell);
       for (const auto &cell : dofs.active_cell_iterators())
         {
@@ -394,12 +401,13 @@ namespace greentread
                     kp.c(i, j) += dealii::scalar_product(grad[i][1] * sigma, grad[j][1]) * dV;
                   }
             }
-          for_free_pairs(local, free, [&](const long fi, const long fj, const unsigned int i,
-                                          const unsigned int j) {
-            pa.emplace_back(fi, fj, kp.a(i, j));
-            pb.emplace_back(fi, fj, kp.b(i, j));
-            pc.emplace_back(fi, fj, kp.c(i, j));
-          });
+          for_free_pairs(
+            local, free,
+            [&](const long fi, const long fj, const unsigned int i, const unsigned int j) {
+              pa.emplace_back(fi, fj, kp.a(i, j));
+              pb.emplace_back(fi, fj, kp.b(i, j));
+              pc.emplace_back(fi, fj, kp.c(i, j));
+            });
         }
       Kp = {to_sparse(pa, n), to_sparse(pb, n), to_sparse(pc, n)};
 
@@ -423,8 +431,8 @@ namespace greentread
     std::pair<Eigen::VectorXd, double>
     HarmonicSection::tread_strip(const double z_low, const double z_high) const
     {
-      Eigen::VectorXd                              w = Eigen::VectorXd::Zero(size());
-      double                                       W = 0.;
+      Eigen::VectorXd                              w        = Eigen::VectorXd::Zero(size());
+      double                                       W        = 0.;
       const unsigned int                           per_cell = fe.n_dofs_per_cell();
       std::vector<dealii::types::global_dof_index> local(per_cell);
       const dealii::QGauss<1>                      gauss(fe.degree + 2);
@@ -436,8 +444,8 @@ namespace greentread
               continue;
             // The edge from the cell's face vertex 0 to 1; t in [0, 1] along
             // it. The section's edges are straight (MappingQ1).
-            const unsigned int v0 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 0);
-            const unsigned int v1 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 1);
+            const unsigned int     v0 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 0);
+            const unsigned int     v1 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 1);
             const dealii::Point<2> a = cell->vertex(v0), b = cell->vertex(v1);
             if (std::abs(b[1] - a[1]) <= 1e-12 * (a - b).norm())
               continue; // a radial edge has no extent across the tread

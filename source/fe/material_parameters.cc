@@ -29,9 +29,9 @@ namespace greentread
       const auto isotropic = [&](const char *E, const char *nu, const char *what) {
         prm.declare_entry("Young's modulus", E, base::RangePattern::positive("Pa"),
                           std::string("Young's modulus E. Unit: Pa. Table A.4: ") + what + ".");
-        prm.declare_entry("Poisson's ratio", nu, base::RangePattern({-1., base::RangePattern::Bound::exclusive,
-                                                               0.5, base::RangePattern::Bound::exclusive,
-                                                               ""}),
+        prm.declare_entry("Poisson's ratio", nu,
+                          base::RangePattern({-1., base::RangePattern::Bound::exclusive, 0.5,
+                                              base::RangePattern::Bound::exclusive, ""}),
                           "Poisson's ratio nu, -1 < nu < 0.5. Unit: 1.");
       };
       prm.enter_subsection("Materials");
@@ -66,8 +66,9 @@ namespace greentread
                           "E_z (across the tread). Not in Table A.4; completed as E_r. Unit: Pa.");
         prm.declare_entry("Poisson's ratio r-theta", "0.4", base::RangePattern::closed(-1., 1., ""),
                           "nu_r,theta. Not in Table A.4; completed as nu_ry. Unit: 1.");
-        prm.declare_entry("Poisson's ratio r-z", "0.4", base::RangePattern::closed(-1., 1., ""),
-                          "nu_r,z, the paper's nu_ry (y: across the tread). Unit: 1. Table A.4: 0.4.");
+        prm.declare_entry(
+          "Poisson's ratio r-z", "0.4", base::RangePattern::closed(-1., 1., ""),
+          "nu_r,z, the paper's nu_ry (y: across the tread). Unit: 1. Table A.4: 0.4.");
         prm.declare_entry("Poisson's ratio theta-z", "0.4", base::RangePattern::closed(-1., 1., ""),
                           "nu_theta,z. Not in Table A.4; completed as nu_ry. Unit: 1.");
         prm.declare_entry("Shear modulus r-theta", "330e6", base::RangePattern::positive("Pa"),
@@ -110,10 +111,10 @@ namespace greentread
       prm.enter_subsection("Materials");
       {
         prm.enter_subsection("Tread pattern");
-        tread_density = prm.get_double("Density");
-        tread_E       = prm.get_double("Young's modulus");
-        tread_nu      = prm.get_double("Poisson's ratio");
-        tread_loss    = prm.get_double("Loss factor");
+        tread_density             = prm.get_double("Density");
+        tread_E                   = prm.get_double("Young's modulus");
+        tread_nu                  = prm.get_double("Poisson's ratio");
+        tread_loss                = prm.get_double("Loss factor");
         tread_surface_mass_inward = (prm.get("Surface mass") == "moved inward");
         prm.leave_subsection();
 
@@ -178,11 +179,12 @@ namespace greentread
         material.density          = density;
         material.stiffness        = c;
         material.cylindrical_axes = cylindrical;
-        std::tie(material.alpha, material.beta) = rayleigh_coefficients(loss, damping_f1, damping_f2);
+        std::tie(material.alpha, material.beta) =
+          rayleigh_coefficients(loss, damping_f1, damping_f2);
         return material;
       };
-      m[tread_id] = make("tread", tread_density, isotropic_stiffness(tread_E, tread_nu), false,
-                         tread_loss);
+      m[tread_id] =
+        make("tread", tread_density, isotropic_stiffness(tread_E, tread_nu), false, tread_loss);
       m[belt_id] =
         make("belt", belt_density,
              orthotropic_stiffness(belt_E_r, belt_E_theta, belt_E_z, belt_nu_rtheta, belt_nu_rz,
@@ -190,7 +192,8 @@ namespace greentread
              true, belt_loss);
       m[sidewall_id] = make("sidewall", sidewall_density,
                             isotropic_stiffness(sidewall_E, sidewall_nu), false, sidewall_loss);
-      m[bead_id] = make("bead", bead_density, isotropic_stiffness(bead_E, bead_nu), false, bead_loss);
+      m[bead_id] =
+        make("bead", bead_density, isotropic_stiffness(bead_E, bead_nu), false, bead_loss);
       return m;
     }
   } // namespace fe

@@ -22,8 +22,8 @@ namespace greentread
                           "directory). Its DefineConstant parameters 'Parameters/<name>' are "
                           "set from this subsection; a new design is a new file.");
         const auto length = [&](const char *name, const char *value, const char *doc) {
-          prm.declare_entry(name, value, base::RangePattern::positive("m"), std::string(doc) +
-                                                                         " Unit: m.");
+          prm.declare_entry(name, value, base::RangePattern::positive("m"),
+                            std::string(doc) + " Unit: m.");
         };
         length("Rim diameter", "0.3302", "Diameter of the rim seat. Table A.3: 13 in = 330.2 mm.");
         length("Section height", "0.10725",
@@ -48,8 +48,7 @@ namespace greentread
         prm.declare_entry("Number of cells", "256", dealii::Patterns::Integer(3, 100000),
                           "N, cells in the ring: the cell is the section revolved by 2 pi / N. "
                           "Powers of two suit the recursive doubling of the periodic stage.");
-        prm.declare_entry("Element degree", "auto",
-                          dealii::Patterns::Selection("auto|1|2|3|4"),
+        prm.declare_entry("Element degree", "auto", dealii::Patterns::Selection("auto|1|2|3|4"),
                           "The Lagrange degree of the elements: 1 or 2 for the 3D cell "
                           "(trilinear elements lock with nu = 0.49), 1 to 4 on the section of "
                           "'Green's functions/Method' = harmonic, so that p-refinement can be "
@@ -84,7 +83,7 @@ namespace greentread
         mesh_size          = prm.get_double("Mesh size");
         n_cells            = prm.get_integer("Number of cells");
         degree = prm.get("Element degree") == "auto" ? 0 : prm.get_integer("Element degree");
-        other_constants    = prm.get("Other constants");
+        other_constants = prm.get("Other constants");
       }
       prm.leave_subsection();
 
@@ -103,8 +102,10 @@ namespace greentread
              " m must be less than half the 'Tread width' = " + format_short(tread_width) +
              " m: the shoulders under the belt would overlap");
       if (!(bead_width < 0.5 * rim_width))
-        fail("'Bead width' = " + format_short(bead_width) + " m must be less than half the "
-             "'Rim width' = " + format_short(rim_width) + " m: the beads would overlap");
+        fail("'Bead width' = " + format_short(bead_width) +
+             " m must be less than half the "
+             "'Rim width' = " +
+             format_short(rim_width) + " m: the beads would overlap");
       if (!(sidewall_thickness < 0.5 * section_width))
         fail("'Sidewall thickness' = " + format_short(sidewall_thickness) +
              " m must be less than half the 'Section width' = " + format_short(section_width) +
@@ -121,12 +122,12 @@ namespace greentread
       // default section fails near an aspect ratio of 500; 200 is allowed.
       const double max_cells = std::floor(200. * M_PI * rim_diameter / mesh_size);
       if (n_cells > max_cells)
-        throw InputError("parameter 'Geometry/Number of cells' = " + std::to_string(n_cells) +
-                         " is not allowed with 'Mesh size' = " + format_short(mesh_size) +
-                         " m; allowed: at most " + std::to_string(static_cast<unsigned long>(max_cells)) +
-                         " (the cell would be " +
-                         format_short(M_PI * rim_diameter / n_cells * 1e3) +
-                         " mm thick at the rim, more than 200 times thinner than its elements)");
+        throw InputError(
+          "parameter 'Geometry/Number of cells' = " + std::to_string(n_cells) +
+          " is not allowed with 'Mesh size' = " + format_short(mesh_size) +
+          " m; allowed: at most " + std::to_string(static_cast<unsigned long>(max_cells)) +
+          " (the cell would be " + format_short(M_PI * rim_diameter / n_cells * 1e3) +
+          " mm thick at the rim, more than 200 times thinner than its elements)");
       onelab_numbers(); // checks 'Other constants'
     }
 
@@ -144,18 +145,19 @@ namespace greentread
     GeometryParameters::onelab_numbers() const
     {
       std::map<std::string, double> numbers = {
-        {"Rim diameter", rim_diameter},       {"Section height", section_height},
-        {"Tread width", tread_width},         {"Section width", section_width},
-        {"Rim width", rim_width},             {"Tread thickness", tread_thickness},
-        {"Belt thickness", belt_thickness},   {"Sidewall thickness", sidewall_thickness},
-        {"Bead width", bead_width},           {"Bead height", bead_height},
-        {"Bulge height", bulge_height},       {"Mesh size", mesh_size}};
+        {"Rim diameter", rim_diameter},     {"Section height", section_height},
+        {"Tread width", tread_width},       {"Section width", section_width},
+        {"Rim width", rim_width},           {"Tread thickness", tread_thickness},
+        {"Belt thickness", belt_thickness}, {"Sidewall thickness", sidewall_thickness},
+        {"Bead width", bead_width},         {"Bead height", bead_height},
+        {"Bulge height", bulge_height},     {"Mesh size", mesh_size}};
       const std::regex item("^\\s*([^=,]+?)\\s*=\\s*([-+0-9.eE]+)\\s*$");
       std::size_t      begin = 0;
       while (!other_constants.empty() && begin <= other_constants.size())
         {
-          const std::size_t comma = std::min(other_constants.find(',', begin), other_constants.size());
-          const std::string part  = other_constants.substr(begin, comma - begin);
+          const std::size_t comma =
+            std::min(other_constants.find(',', begin), other_constants.size());
+          const std::string part = other_constants.substr(begin, comma - begin);
           std::smatch       m;
           if (!std::regex_match(part, m, item))
             throw InputError("parameter 'Geometry/Other constants' = " + other_constants +

@@ -1,6 +1,6 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/base/parameters.h>
 #include <greentread/base/mesh_ids.h>
+#include <greentread/base/parameters.h>
 #include <greentread/geometry/tyre_cell.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -90,7 +90,8 @@ namespace greentread
         for (std::size_t i = 0; i < tags.size(); ++i)
           {
             nodes.index[tags[i]] = nodes.xyz.size();
-            nodes.xyz.push_back({{coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]}});
+            nodes.xyz.push_back(
+              {{coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]}});
           }
         return nodes;
       }
@@ -124,11 +125,13 @@ namespace greentread
         return elements;
       }
 
-      const std::map<std::string, unsigned int> material_names = {
-        {"tread", fe::tread_id}, {"belt", fe::belt_id}, {"sidewall", fe::sidewall_id},
-        {"bead", fe::bead_id}};
-      const std::map<std::string, unsigned int> boundary_names = {
-        {"rim seat", rim_seat}, {"inner surface", inner_surface}, {"tread surface", tread_surface}};
+      const std::map<std::string, unsigned int> material_names = {{"tread", fe::tread_id},
+                                                                  {"belt", fe::belt_id},
+                                                                  {"sidewall", fe::sidewall_id},
+                                                                  {"bead", fe::bead_id}};
+      const std::map<std::string, unsigned int> boundary_names = {{"rim seat", rim_seat},
+                                                                  {"inner surface", inner_surface},
+                                                                  {"tread surface", tread_surface}};
     } // namespace
 
 
@@ -148,10 +151,10 @@ namespace greentread
       PhysicalGroups
       read_physical_groups(const std::string &file)
       {
-        PhysicalGroups                            result;
-        auto                                     &surfaces_of_material = result.surfaces_of_material;
-        auto                                     &curves_of_boundary   = result.curves_of_boundary;
-        gmsh::vectorpair                         groups;
+        PhysicalGroups   result;
+        auto            &surfaces_of_material = result.surfaces_of_material;
+        auto            &curves_of_boundary   = result.curves_of_boundary;
+        gmsh::vectorpair groups;
         gmsh::model::getPhysicalGroups(groups);
         for (const auto &[dim, tag] : groups)
           {
@@ -194,8 +197,9 @@ namespace greentread
           for (const auto &[dim, s] : entities)
             if (groups_of_surface[s] != 1)
               throw InputError("geometry file '" + file + "': surface " + std::to_string(s) +
-                               (groups_of_surface[s] == 0 ? " is in no physical surface" :
-                                                            " is in more than one physical surface") +
+                               (groups_of_surface[s] == 0 ?
+                                  " is in no physical surface" :
+                                  " is in more than one physical surface") +
                                "; each surface must be in exactly one of tread, belt, sidewall, "
                                "bead");
         }
@@ -210,8 +214,9 @@ namespace greentread
       /// The quadrilateral blocks of the section (for Pappus), and each
       /// surface's material.
       std::vector<SectionBlock>
-      read_section_blocks(const std::string &file, const PhysicalGroups &groups,
-                          gmsh::vectorpair &all_surfaces,
+      read_section_blocks(const std::string           &file,
+                          const PhysicalGroups        &groups,
+                          gmsh::vectorpair            &all_surfaces,
                           std::map<int, unsigned int> &material_of_surface)
       {
         std::vector<SectionBlock> section_blocks;
@@ -236,7 +241,8 @@ namespace greentread
                   if (xyz.size() != 3)
                     throw InputError("geometry file '" + file + "': curve " +
                                      std::to_string(std::abs(signed_curve)) + " of surface " +
-                                     std::to_string(s) + " has no end points; the section must be "
+                                     std::to_string(s) +
+                                     " has no end points; the section must be "
                                      "made of quadrilateral blocks bounded by open curves");
                   block.corners.push_back({{xyz[0], xyz[2]}});
                 }
@@ -250,7 +256,8 @@ namespace greentread
       /// The section's quadrilaterals from the 2D mesh, (x, z) -> (radius,
       /// axial), into @p section_triangulation.
       void
-      make_section(const std::string &file, const PhysicalGroups &groups,
+      make_section(const std::string        &file,
+                   const PhysicalGroups     &groups,
                    dealii::Triangulation<2> &section_triangulation)
       {
         {
@@ -262,9 +269,10 @@ namespace greentread
           for (const auto &[material, surfaces] : groups.surfaces_of_material)
             for (const int s : surfaces)
               for (auto q : mesh_elements(2, s, 3, 4, mesh,
-                                          "geometry file '" + file + "': the section mesh has "
-                                          "elements that are not quadrilaterals; make every "
-                                          "surface transfinite and recombined"))
+                                          "geometry file '" + file +
+                                            "': the section mesh has "
+                                            "elements that are not quadrilaterals; make every "
+                                            "surface transfinite and recombined"))
                 {
                   // gmsh goes around the quadrilateral, in either sense
                   // (surfaces differ); make it counterclockwise, then deal.II's
@@ -301,15 +309,16 @@ namespace greentread
       /// Sort what gmsh's revolve() returned (@p out) into volumes by
       /// material and surfaces by boundary, and tag them as physical groups.
       RevolvedCell
-      sort_revolved(const gmsh::vectorpair &out, const gmsh::vectorpair &all_surfaces,
+      sort_revolved(const gmsh::vectorpair            &out,
+                    const gmsh::vectorpair            &all_surfaces,
                     const std::map<int, unsigned int> &material_of_surface,
-                    const PhysicalGroups &groups)
+                    const PhysicalGroups              &groups)
       {
-        RevolvedCell cell;
-        auto        &volumes_of_material  = cell.volumes_of_material;
-        auto        &surfaces_of_boundary = cell.surfaces_of_boundary;
-        auto        &top_surfaces         = cell.top_surfaces;
-        auto        &bottom               = cell.bottom;
+        RevolvedCell     cell;
+        auto            &volumes_of_material  = cell.volumes_of_material;
+        auto            &surfaces_of_boundary = cell.surfaces_of_boundary;
+        auto            &top_surfaces         = cell.top_surfaces;
+        auto            &bottom               = cell.bottom;
         std::vector<int> lateral_surfaces;
         for (std::size_t i = 0, k = 0; i < out.size(); ++i)
           if (out[i].first == 3)
@@ -349,14 +358,15 @@ namespace greentread
       /// The cell's hexahedra and boundary faces, straight from gmsh's
       /// arrays, into @p cell_triangulation.
       void
-      make_cell(const std::string &file, const RevolvedCell &revolved,
+      make_cell(const std::string        &file,
+                const RevolvedCell       &revolved,
                 dealii::Triangulation<3> &cell_triangulation)
       {
-        const auto &volumes_of_material  = revolved.volumes_of_material;
-        const auto &surfaces_of_boundary = revolved.surfaces_of_boundary;
-        const auto &bottom               = revolved.bottom;
-        const auto &top_surfaces         = revolved.top_surfaces;
-        const MeshNodes               mesh = mesh_nodes();
+        const auto                   &volumes_of_material  = revolved.volumes_of_material;
+        const auto                   &surfaces_of_boundary = revolved.surfaces_of_boundary;
+        const auto                   &bottom               = revolved.bottom;
+        const auto                   &top_surfaces         = revolved.top_surfaces;
+        const MeshNodes               mesh                 = mesh_nodes();
         std::vector<dealii::Point<3>> vertices;
         for (const auto &xyz : mesh.xyz)
           vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
@@ -364,9 +374,10 @@ namespace greentread
         for (const auto &[material, volumes] : volumes_of_material)
           for (const int v : volumes)
             for (auto h : mesh_elements(3, v, 5, 8, mesh,
-                                        "geometry file '" + file + "': the cell mesh has elements "
-                                        "that are not hexahedra; make every surface transfinite "
-                                        "and recombined"))
+                                        "geometry file '" + file +
+                                          "': the cell mesh has elements "
+                                          "that are not hexahedra; make every surface transfinite "
+                                          "and recombined"))
               {
                 // gmsh: bottom face 0-1-2-3 around, top 4-5-6-7 above it;
                 // mirror the bottom order if that is left-handed.
@@ -383,7 +394,7 @@ namespace greentread
                 c.material_id = material;
                 cells.push_back(c);
               }
-        dealii::SubCellData                        boundary;
+        dealii::SubCellData                       boundary;
         std::vector<std::pair<int, unsigned int>> surface_ids;
         for (const auto &[id, surfaces] : surfaces_of_boundary)
           for (const int s : surfaces)
@@ -394,8 +405,9 @@ namespace greentread
           surface_ids.emplace_back(s, periodic_second);
         for (const auto &[s, id] : surface_ids)
           for (const auto &f : mesh_elements(2, s, 3, 4, mesh,
-                                             "geometry file '" + file + "': the cell's boundary "
-                                             "has faces that are not quadrilaterals"))
+                                             "geometry file '" + file +
+                                               "': the cell's boundary "
+                                               "has faces that are not quadrilaterals"))
             {
               dealii::CellData<2> q;
               q.vertices    = {f[0], f[1], f[3], f[2]};
@@ -413,8 +425,10 @@ namespace greentread
           {
             std::ostringstream info;
             e.print_info(info);
-            throw InputError("geometry file '" + file + "': the mesh gmsh made is not a valid "
-                             "deal.II mesh (distorted cells?): " + info.str());
+            throw InputError("geometry file '" + file +
+                             "': the mesh gmsh made is not a valid "
+                             "deal.II mesh (distorted cells?): " +
+                             info.str());
           }
       }
 
@@ -454,8 +468,8 @@ namespace greentread
               {
                 const auto m     = 0.5 * (face->vertex(0) + face->vertex(1));
                 const auto found = ids.find(key(m[0], m[1]));
-                face->set_boundary_id(found == ids.end() ? dealii::types::boundary_id(free_surface) :
-                                                           found->second);
+                face->set_boundary_id(
+                  found == ids.end() ? dealii::types::boundary_id(free_surface) : found->second);
               }
       }
     } // namespace
@@ -463,8 +477,8 @@ namespace greentread
 
 
     TyreCell::TyreCell(const GeometryParameters &parameters)
-      : cell_angle(parameters.angle())
-      , ring_cells(parameters.n_cells)
+        : cell_angle(parameters.angle())
+        , ring_cells(parameters.n_cells)
     {
       const std::string &file = parameters.geo_file;
       if (!std::filesystem::exists(file))
@@ -473,14 +487,18 @@ namespace greentread
       GmshSession gmsh_session;
       for (const auto &[name, value] : parameters.onelab_numbers())
         gmsh::onelab::setNumber("Parameters/" + name, {value});
-      gmsh_session.run(file, "reading it", [&] { gmsh::open(file); });
+      gmsh_session.run(file, "reading it", [&] {
+        gmsh::open(file);
+      });
 
       const PhysicalGroups        groups = read_physical_groups(file);
       gmsh::vectorpair            all_surfaces;
       std::map<int, unsigned int> material_of_surface;
       section_blocks = read_section_blocks(file, groups, all_surfaces, material_of_surface);
 
-      gmsh_session.run(file, "meshing the section", [] { gmsh::model::mesh::generate(2); });
+      gmsh_session.run(file, "meshing the section", [] {
+        gmsh::model::mesh::generate(2);
+      });
       make_section(file, groups, section_triangulation);
       gmsh::model::mesh::clear();
 
@@ -493,7 +511,9 @@ namespace greentread
       });
       const RevolvedCell revolved = sort_revolved(out, all_surfaces, material_of_surface, groups);
 
-      gmsh_session.run(file, "meshing the cell", [] { gmsh::model::mesh::generate(3); });
+      gmsh_session.run(file, "meshing the cell", [] {
+        gmsh::model::mesh::generate(3);
+      });
       make_cell(file, revolved, cell_triangulation);
       label_section_boundary(cell_triangulation, section_triangulation);
       attach_cylindrical_manifold(cell_triangulation);
@@ -515,7 +535,8 @@ namespace greentread
             double sum = 0.;
             for (std::size_t i = 0; i < block.corners.size(); ++i)
               {
-                const auto &a = block.corners[i], &b = block.corners[(i + 1) % block.corners.size()];
+                const auto &a = block.corners[i],
+                           &b = block.corners[(i + 1) % block.corners.size()];
                 sum += (a[0] + b[0]) * (a[0] * b[1] - b[0] * a[1]);
               }
             integral += std::abs(sum) / 6.;
@@ -589,9 +610,8 @@ namespace greentread
           if (face->at_boundary())
             {
               const auto found = ids.find(key(*face));
-              face->set_boundary_id(found == ids.end() ?
-                                      dealii::types::boundary_id(free_surface) :
-                                      found->second);
+              face->set_boundary_id(found == ids.end() ? dealii::types::boundary_id(free_surface) :
+                                                         found->second);
             }
       attach_cylindrical_manifold(ring);
     }

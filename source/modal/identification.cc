@@ -11,14 +11,14 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <map>
 #include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <cmath>
+#include <exception>
+#include <map>
+#include <mutex>
 #include <numeric>
+#include <thread>
 
 namespace greentread
 {
@@ -110,9 +110,9 @@ namespace greentread
                     const std::complex<double> l      = pole_of(z_low);
                     const double               xi     = -lambda.real() / std::abs(lambda);
                     const double               xi_low = -l.real() / std::abs(l);
-                    found = std::abs(l - lambda) <=
-                              parameters.stability_frequency * std::abs(lambda) &&
-                            std::abs(xi_low - xi) <= parameters.stability_damping * xi + 1e-12;
+                    found =
+                      std::abs(l - lambda) <= parameters.stability_frequency * std::abs(lambda) &&
+                      std::abs(xi_low - xi) <= parameters.stability_damping * xi + 1e-12;
                   }
                 if (!found)
                   {
@@ -130,131 +130,134 @@ namespace greentread
     namespace
     {
       Identification
-      identify_in_bands(const base::FrequencyResponse        &frf,
+      identify_in_bands(const base::FrequencyResponse  &frf,
                         const IdentificationParameters &parameters,
                         const unsigned int              B)
-    {
-      Identification     result;
-      std::vector<Pole>  poles;
-      const double       f_max = frf.f_max();
-      const unsigned int K     = frf.values.size() - 1;
-      if (B == 1)
-        // Appendix A: the whole band at once, 2 N_max real roots.
-        band_poles(impulse_response(frf), 0., 2 * parameters.max_modes, 0.,
-                   parameters.band_edge * f_max, parameters, poles, result);
-      else
-        {
-          // Zoom LSCE: B cores tiling [0, band_edge f_max), each processed in a
-          // band a quarter of a core wider on each side, at most 2 N_max roots.
-          const double       width    = f_max / B;
-          const unsigned int capacity = parameters.max_modes;
-          for (unsigned int b = 0; b < B; ++b)
-            {
-              const double       core_low  = b * width;
-              const double       core_high = b + 1 == B ? parameters.band_edge * f_max : (b + 1) * width;
-              const unsigned int first =
-                b == 0 ? 0 : static_cast<unsigned int>(std::floor((core_low - 0.25 * width) / frf.df));
-              const unsigned int last = std::min<unsigned int>(
-                K, static_cast<unsigned int>(std::ceil((core_high + 0.25 * width) / frf.df)));
-              if (b == 0)
-                {
-                  const unsigned int order = std::min(2 * capacity, (2 * last - 2) / 2);
-                  band_poles(impulse_response(frf, last), 0., order - order % 2, core_low, core_high,
-                             parameters, poles, result);
-                }
-              else
-                {
-                  const unsigned int n_b   = last - first + 1;
-                  const unsigned int order = std::min(2 * capacity, (n_b - 2) / 2);
-                  band_poles(band_impulse_response(frf, first, last), 2. * M_PI * first * frf.df,
-                             order, core_low, core_high, parameters, poles, result);
-                }
-            }
-        }
-      for (const auto &band : result.bands)
-        {
-          result.order += band.order;
-          result.rank += band.rank;
-          result.condition = std::max(result.condition, band.condition);
-        }
-      result.poles.physical = poles.size();
+      {
+        Identification     result;
+        std::vector<Pole>  poles;
+        const double       f_max = frf.f_max();
+        const unsigned int K     = frf.values.size() - 1;
+        if (B == 1)
+          // Appendix A: the whole band at once, 2 N_max real roots.
+          band_poles(impulse_response(frf), 0., 2 * parameters.max_modes, 0.,
+                     parameters.band_edge * f_max, parameters, poles, result);
+        else
+          {
+            // Zoom LSCE: B cores tiling [0, band_edge f_max), each processed in a
+            // band a quarter of a core wider on each side, at most 2 N_max roots.
+            const double       width    = f_max / B;
+            const unsigned int capacity = parameters.max_modes;
+            for (unsigned int b = 0; b < B; ++b)
+              {
+                const double core_low = b * width;
+                const double core_high =
+                  b + 1 == B ? parameters.band_edge * f_max : (b + 1) * width;
+                const unsigned int first =
+                  b == 0 ?
+                    0 :
+                    static_cast<unsigned int>(std::floor((core_low - 0.25 * width) / frf.df));
+                const unsigned int last = std::min<unsigned int>(
+                  K, static_cast<unsigned int>(std::ceil((core_high + 0.25 * width) / frf.df)));
+                if (b == 0)
+                  {
+                    const unsigned int order = std::min(2 * capacity, (2 * last - 2) / 2);
+                    band_poles(impulse_response(frf, last), 0., order - order % 2, core_low,
+                               core_high, parameters, poles, result);
+                  }
+                else
+                  {
+                    const unsigned int n_b   = last - first + 1;
+                    const unsigned int order = std::min(2 * capacity, (n_b - 2) / 2);
+                    band_poles(band_impulse_response(frf, first, last), 2. * M_PI * first * frf.df,
+                               order, core_low, core_high, parameters, poles, result);
+                  }
+              }
+          }
+        for (const auto &band : result.bands)
+          {
+            result.order += band.order;
+            result.rank += band.rank;
+            result.condition = std::max(result.condition, band.condition);
+          }
+        result.poles.physical = poles.size();
 
-      // Residues of all physical modes, then the order by contribution.
-      const ResidueFit fit(frf, poles, parameters.residue_model, parameters.lower_residual,
-                           parameters.upper_residual);
-      if (!(fit.data_norm() > 0.))
-        throw InputError("the FRF is zero at every line: there is nothing to identify");
-      std::vector<unsigned int> ranking(poles.size());
-      std::iota(ranking.begin(), ranking.end(), 0u);
-      if (!poles.empty())
-        {
-          const Eigen::VectorXd x = fit.solve_all();
-          std::vector<double>   importance(poles.size());
-          for (unsigned int m = 0; m < poles.size(); ++m)
-            importance[m] = fit.contribution(x, m);
-          std::stable_sort(ranking.begin(), ranking.end(), [&](unsigned int a, unsigned int b) {
-            return importance[a] > importance[b];
-          });
-        }
-      const std::vector<double> errors = fit.prefix_errors(ranking);
-      result.best_error = *std::min_element(errors.begin(), errors.end());
-      unsigned int n    = 0;
-      while (!(errors[n] <= result.best_error + parameters.order_tolerance))
-        ++n;
-      result.n_modes = n;
-      std::vector<unsigned int> chosen(ranking.begin(), ranking.begin() + n);
-      result.model = fit.model_of(fit.coefficients_of(n), chosen, result.lower_residual,
-                                  result.upper_residual);
-      result.error = modal_error(frf, result.model, result.lower_residual, result.upper_residual);
-      if (parameters.polish_poles && n > 0)
-        {
-          // The chosen poles refined against every line (modal/pole_polish.h),
-          // kept if E of Eq. (50) falls.
-          std::vector<PolishPole> given;
-          for (const unsigned int m : chosen)
-            given.push_back({poles[m].lambda, poles[m].real});
-          const auto refined = polish_poles(frf, given, parameters.lower_residual,
-                                            parameters.upper_residual, result.polish);
-          std::vector<Pole> moved;
-          for (const auto &p : refined)
-            moved.push_back({p.lambda, p.real});
-          const ResidueFit          again(frf, moved, parameters.residue_model,
-                                 parameters.lower_residual, parameters.upper_residual);
-          std::vector<unsigned int> all(moved.size());
-          std::iota(all.begin(), all.end(), 0u);
-          double     lower = 0., upper = 0.;
-          const auto model = again.model_of(again.solve_all(), all, lower, upper);
-          const double e   = modal_error(frf, model, lower, upper);
-          if (e < result.error)
-            {
-              result.model          = model;
-              result.error          = e;
-              result.lower_residual = lower;
-              result.upper_residual = upper;
-              poles                 = moved;
-              chosen                = all;
-            }
-        }
+        // Residues of all physical modes, then the order by contribution.
+        const ResidueFit fit(frf, poles, parameters.residue_model, parameters.lower_residual,
+                             parameters.upper_residual);
+        if (!(fit.data_norm() > 0.))
+          throw InputError("the FRF is zero at every line: there is nothing to identify");
+        std::vector<unsigned int> ranking(poles.size());
+        std::iota(ranking.begin(), ranking.end(), 0u);
+        if (!poles.empty())
+          {
+            const Eigen::VectorXd x = fit.solve_all();
+            std::vector<double>   importance(poles.size());
+            for (unsigned int m = 0; m < poles.size(); ++m)
+              importance[m] = fit.contribution(x, m);
+            std::stable_sort(ranking.begin(), ranking.end(), [&](unsigned int a, unsigned int b) {
+              return importance[a] > importance[b];
+            });
+          }
+        const std::vector<double> errors = fit.prefix_errors(ranking);
+        result.best_error                = *std::min_element(errors.begin(), errors.end());
+        unsigned int n                   = 0;
+        while (!(errors[n] <= result.best_error + parameters.order_tolerance))
+          ++n;
+        result.n_modes = n;
+        std::vector<unsigned int> chosen(ranking.begin(), ranking.begin() + n);
+        result.model = fit.model_of(fit.coefficients_of(n), chosen, result.lower_residual,
+                                    result.upper_residual);
+        result.error = modal_error(frf, result.model, result.lower_residual, result.upper_residual);
+        if (parameters.polish_poles && n > 0)
+          {
+            // The chosen poles refined against every line (modal/pole_polish.h),
+            // kept if E of Eq. (50) falls.
+            std::vector<PolishPole> given;
+            for (const unsigned int m : chosen)
+              given.push_back({poles[m].lambda, poles[m].real});
+            const auto        refined = polish_poles(frf, given, parameters.lower_residual,
+                                                     parameters.upper_residual, result.polish);
+            std::vector<Pole> moved;
+            for (const auto &p : refined)
+              moved.push_back({p.lambda, p.real});
+            const ResidueFit again(frf, moved, parameters.residue_model, parameters.lower_residual,
+                                   parameters.upper_residual);
+            std::vector<unsigned int> all(moved.size());
+            std::iota(all.begin(), all.end(), 0u);
+            double       lower = 0., upper = 0.;
+            const auto   model = again.model_of(again.solve_all(), all, lower, upper);
+            const double e     = modal_error(frf, model, lower, upper);
+            if (e < result.error)
+              {
+                result.model          = model;
+                result.error          = e;
+                result.lower_residual = lower;
+                result.upper_residual = upper;
+                poles                 = moved;
+                chosen                = all;
+              }
+          }
 
-      if (parameters.compare_models)
-        {
-          std::vector<Pole> kept;
-          for (const unsigned int m : chosen)
-            kept.push_back(poles[m]);
-          const ResidueModel other = parameters.residue_model == ResidueModel::eq7 ?
-                                       ResidueModel::general :
-                                       ResidueModel::eq7;
-          const ResidueFit   alternative(frf, kept, other, parameters.lower_residual,
-                                       parameters.upper_residual);
-          std::vector<unsigned int> all(kept.size());
-          std::iota(all.begin(), all.end(), 0u);
-          double     lower, upper;
-          const auto model = alternative.model_of(alternative.solve_all(), all, lower, upper);
-          result.other_model_error = modal_error(frf, model, lower, upper);
-        }
-      result.n_bands = B;
-      return result;
-    }
+        if (parameters.compare_models)
+          {
+            std::vector<Pole> kept;
+            for (const unsigned int m : chosen)
+              kept.push_back(poles[m]);
+            const ResidueModel        other = parameters.residue_model == ResidueModel::eq7 ?
+                                                ResidueModel::general :
+                                                ResidueModel::eq7;
+            const ResidueFit          alternative(frf, kept, other, parameters.lower_residual,
+                                                  parameters.upper_residual);
+            std::vector<unsigned int> all(kept.size());
+            std::iota(all.begin(), all.end(), 0u);
+            double     lower, upper;
+            const auto model = alternative.model_of(alternative.solve_all(), all, lower, upper);
+            result.other_model_error = modal_error(frf, model, lower, upper);
+          }
+        result.n_bands = B;
+        return result;
+      }
     } // namespace
 
 
@@ -283,13 +286,13 @@ namespace greentread
 
 
     double
-    modal_error(const base::FrequencyResponse     &frf,
-                const modal::ModalModel &model,
+    modal_error(const base::FrequencyResponse &frf,
+                const modal::ModalModel       &model,
                 const double                   lower,
                 const double                   upper)
     {
-      const unsigned int first = lower != 0. ? 1 : 0;
-      const unsigned int last  = frf.values.size() - 1;
+      const unsigned int first      = lower != 0. ? 1 : 0;
+      const unsigned int last       = frf.values.size() - 1;
       double             difference = 0., norm = 0.;
       for (unsigned int k = first; k <= last; ++k)
         {
@@ -308,9 +311,9 @@ namespace greentread
 
     std::vector<Identification>
     identify_all(const std::function<base::FrequencyResponse(std::size_t)> &get,
-                 const std::size_t                                    count,
-                 const IdentificationParameters                      &parameters,
-                 const bool                                           show_progress)
+                 const std::size_t                                          count,
+                 const IdentificationParameters                            &parameters,
+                 const bool                                                 show_progress)
     {
       std::vector<Identification> results(count);
       std::atomic<std::size_t>    next{0}, done{0};
@@ -359,7 +362,7 @@ namespace greentread
 
 
     std::vector<Identification>
-    identify_pairs(const base::FrequencyResponseMatrix                            &green,
+    identify_pairs(const base::FrequencyResponseMatrix                      &green,
                    const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                    const IdentificationParameters                           &parameters,
                    std::size_t                                              &reused,
@@ -374,14 +377,14 @@ namespace greentread
       std::vector<std::size_t> distinct;
       for (std::size_t n = 0; n < pairs.size(); ++n)
         {
-          source[n]        = n;
+          source[n]         = n;
           const auto [i, j] = pairs[n];
           const auto mirror = index.find({j, i});
           if (i != j && mirror != index.end() && mirror->second < n)
             {
-              double difference = 0., size = 0.;
-              const auto  &values = green.values;
-              const unsigned int np = green.n_points();
+              double             difference = 0., size = 0.;
+              const auto        &values = green.values;
+              const unsigned int np     = green.n_points();
               for (unsigned int k = 0; k < green.n_lines; ++k)
                 {
                   const auto a = values[(std::size_t(k) * np + i) * np + j];

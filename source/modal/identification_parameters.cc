@@ -36,8 +36,7 @@ namespace greentread
         prm.declare_entry("Pairs", "all", dealii::Patterns::Anything(),
                           "Which g_ij of the Green's function file to identify: 'all', "
                           "'diagonal', or a list 'i:j, i:j, ...' of 0-based point indices.");
-        prm.declare_entry("Bands", "auto",
-                          dealii::Patterns::Anything(),
+        prm.declare_entry("Bands", "auto", dealii::Patterns::Anything(),
                           "'auto', or a number B from 1 to 64. 1: LSCE on the whole band at "
                           "once, as in Appendix A. B > 1: 'zoom' LSCE in B sub-bands, each "
                           "inverse-transformed on its own (complex) and at its own lower rate, "
@@ -118,11 +117,11 @@ namespace greentread
                               "Identification/Bands", b, "'auto' or a whole number from 1 to 64");
             bands = static_cast<unsigned int>(value);
           }
-        zoom_above_error    = prm.get_double("Zoom above error");
-        max_modes           = prm.get_integer("Maximum number of modes");
-        order_tolerance     = prm.get_double("Order tolerance");
-        residue_model       = prm.get("Residue model") == "eq7" ? ResidueModel::eq7 :
-                                                                  ResidueModel::general;
+        zoom_above_error = prm.get_double("Zoom above error");
+        max_modes        = prm.get_integer("Maximum number of modes");
+        order_tolerance  = prm.get_double("Order tolerance");
+        residue_model =
+          prm.get("Residue model") == "eq7" ? ResidueModel::eq7 : ResidueModel::general;
         compare_models      = prm.get_bool("Compare residue models");
         lower_residual      = prm.get_bool("Lower residual");
         upper_residual      = prm.get_bool("Upper residual");

@@ -13,7 +13,7 @@ namespace greentread
     ImpulseResponse<double>
     impulse_response(const base::FrequencyResponse &frf, const unsigned int last_line)
     {
-      const std::size_t K = last_line > 0 ? last_line : frf.values.size() - 1;
+      const std::size_t                 K = last_line > 0 ? last_line : frf.values.size() - 1;
       std::vector<std::complex<double>> half(frf.values.begin(), frf.values.begin() + K + 1);
       half[K] = {half[K].real(), 0.}; // the Nyquist line of a real sequence is real
       Eigen::FFT<double> fft;
@@ -32,13 +32,13 @@ namespace greentread
 
     ImpulseResponse<std::complex<double>>
     band_impulse_response(const base::FrequencyResponse &frf,
-                          const unsigned int       first_line,
-                          const unsigned int       last_line)
+                          const unsigned int             first_line,
+                          const unsigned int             last_line)
     {
       const std::vector<std::complex<double>> band(frf.values.begin() + first_line,
                                                    frf.values.begin() + last_line + 1);
-      Eigen::FFT<double>                     fft;
-      ImpulseResponse<std::complex<double>>  h;
+      Eigen::FFT<double>                      fft;
+      ImpulseResponse<std::complex<double>>   h;
       fft.inv(h.values, band);
       const double n_b = band.size();
       for (auto &x : h.values)
@@ -82,12 +82,12 @@ namespace greentread
                                        unsigned int      &rank,
                                        double            &condition) const
     {
-      const Matrix R11 = triangle.topLeftCorner(order, order);
-      const Vector r   = triangle.col(order).head(order);
+      const Matrix                                   R11 = triangle.topLeftCorner(order, order);
+      const Vector                                   r   = triangle.col(order).head(order);
       Eigen::CompleteOrthogonalDecomposition<Matrix> cod;
       cod.setThreshold(1e-13);
       cod.compute(R11);
-      rank = static_cast<unsigned int>(cod.rank());
+      rank              = static_cast<unsigned int>(cod.rank());
       const auto  &qr   = cod.matrixQTZ();
       const double top  = std::abs(qr(0, 0));
       const double last = rank > 0 ? std::abs(qr(rank - 1, rank - 1)) : 0.;

@@ -10,8 +10,7 @@ namespace greentread
   namespace modal
   {
     void
-    ModalModel::add_pair(const std::complex<double> lambda,
-                         const std::complex<double> residue)
+    ModalModel::add_pair(const std::complex<double> lambda, const std::complex<double> residue)
     {
       if (!(lambda.imag() > 0.) || !std::isfinite(lambda.real()) ||
           !std::isfinite(std::abs(residue)))
@@ -57,8 +56,7 @@ namespace greentread
               g += term.residue.real() * std::exp(term.lambda.real() * t);
               break;
             case ModalTerm::Kind::double_pole:
-              g += (term.residue.real() + term.residue_t * t) *
-                   std::exp(term.lambda.real() * t);
+              g += (term.residue.real() + term.residue_t * t) * std::exp(term.lambda.real() * t);
               break;
           }
       return g;
@@ -79,14 +77,12 @@ namespace greentread
               dg += 2. * std::real(term.residue * term.lambda * std::exp(term.lambda * t));
               break;
             case ModalTerm::Kind::real_pole:
-              dg += term.residue.real() * term.lambda.real() *
-                    std::exp(term.lambda.real() * t);
+              dg += term.residue.real() * term.lambda.real() * std::exp(term.lambda.real() * t);
               break;
             case ModalTerm::Kind::double_pole:
               {
                 const double l = term.lambda.real();
-                dg += (term.residue.real() * l + term.residue_t * (1. + l * t)) *
-                      std::exp(l * t);
+                dg += (term.residue.real() * l + term.residue_t * (1. + l * t)) * std::exp(l * t);
                 break;
               }
           }

@@ -42,8 +42,8 @@ namespace greentread
                 for (unsigned int i = 0; i < n; ++i)
                   {
                     const std::complex<double> r = model.residue(k, i, j);
-                    loss(i, j) -= model.real[k] ? (r.real() * a).imag() :
-                                                  (r * a + std::conj(r) * b).imag();
+                    loss(i, j) -=
+                      model.real[k] ? (r.real() * a).imag() : (r * a + std::conj(r) * b).imag();
                   }
             }
           const Eigen::MatrixXd symmetric = 0.5 * (loss + loss.transpose());

@@ -74,7 +74,7 @@ namespace greentread
               const auto v1  = weights[s].first.segment(r, len).asDiagonal();
               if (B.size() == 0)
                 {
-                  Xc.noalias()                        = v1 * Ac;
+                  Xc.noalias() = v1 * Ac;
                   sum.triangularView<Eigen::Lower>() += Ac.transpose() * Xc;
                   continue;
                 }
@@ -143,7 +143,8 @@ namespace greentread
        * nearest the centre to points spread over the patch.
        */
       std::vector<base::FrequencyResponse>
-      reference_functions(const base::FrequencyResponseMatrix &green, const unsigned int n_references)
+      reference_functions(const base::FrequencyResponseMatrix &green,
+                          const unsigned int                   n_references)
       {
         const unsigned int n       = green.n_points();
         const unsigned int n_lines = green.n_lines;
@@ -194,10 +195,10 @@ namespace greentread
        * added. @return The worst E of the identifications.
        */
       double
-      find_poles(PatchModel                           &model,
+      find_poles(PatchModel                                 &model,
                  const std::vector<base::FrequencyResponse> &sources,
-                 const IdentificationParameters       &identification,
-                 const PatchModelParameters           &parameters)
+                 const IdentificationParameters             &identification,
+                 const PatchModelParameters                 &parameters)
       {
         IdentificationParameters poles_only = identification;
         poles_only.upper_residual           = true;
@@ -206,7 +207,7 @@ namespace greentread
         // functions can land within a residue column of each other, and
         // the patch model's shared least squares then loses rank.
         poles_only.polish_poles = false;
-        double worst_error                  = 0.;
+        double worst_error      = 0.;
         for (const auto &frf : sources)
           {
             const Identification found = identify(frf, poles_only);
@@ -214,7 +215,7 @@ namespace greentread
             for (const auto &term : found.model.terms())
               {
                 // A double pole (critical damping) is carried by one real pole.
-                const bool real = term.kind != modal::ModalTerm::Kind::complex_pair;
+                const bool                 real = term.kind != modal::ModalTerm::Kind::complex_pair;
                 const std::complex<double> l =
                   real ? std::complex<double>(term.lambda.real(), 0.) : term.lambda;
                 bool known = false;
@@ -242,7 +243,8 @@ namespace greentread
           }
         else if (parameters.residual_pole_factor > 0.)
           {
-            model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max, 0.);
+            model.lambda.emplace_back(-2. * M_PI * parameters.residual_pole_factor * model.f_max,
+                                      0.);
             model.real.push_back(true);
           }
         if (model.lambda.empty())
@@ -275,13 +277,13 @@ namespace greentread
         std::vector<Eigen::Index> used;
 
         ResidueSystem(const base::FrequencyResponseMatrix &green,
-                      const PatchModel              &model,
-                      const PatchModelParameters    &parameters)
-          : n(green.n_points())
-          , n_lines(green.n_lines)
-          , n_pairs(std::size_t(n) * n)
-          , row_weight(n_lines)
-          , data(2 * n_lines, n_pairs)
+                      const PatchModel                    &model,
+                      const PatchModelParameters          &parameters)
+            : n(green.n_points())
+            , n_lines(green.n_lines)
+            , n_pairs(std::size_t(n) * n)
+            , row_weight(n_lines)
+            , data(2 * n_lines, n_pairs)
         {
           for (unsigned int k = 0; k < n_lines; ++k)
             row_weight[k] = (k == 0) ? parameters.static_weight : 1.;
@@ -485,10 +487,10 @@ namespace greentread
 
 
     PatchModel
-    fit_patch_model(const base::FrequencyResponseMatrix  &green,
-                    const IdentificationParameters &identification,
-                    const PatchModelParameters     &parameters,
-                    const bool                      show_progress)
+    fit_patch_model(const base::FrequencyResponseMatrix &green,
+                    const IdentificationParameters      &identification,
+                    const PatchModelParameters          &parameters,
+                    const bool                           show_progress)
     {
       const unsigned int n       = green.n_points();
       const unsigned int n_lines = green.n_lines;

@@ -14,9 +14,8 @@ namespace greentread
   {
     namespace
     {
-      const std::vector<std::string> patch_datasets = {"lambda", "real",   "residues",
-                                                       "errors", "points", "info",
-                                                       "instantaneous"};
+      const std::vector<std::string> patch_datasets = {"lambda", "real", "residues",     "errors",
+                                                       "points", "info", "instantaneous"};
     } // namespace
 
 
@@ -31,7 +30,7 @@ namespace greentread
         throw NumericalError("write_patch_model: a model from the ring's modes is saved as "
                              "modal_model.h5 (write_modal_model), not as a patch model");
       write_hdf5_stage(file, model.points, record, stage_key, [&](dealii::HDF5::File &h5) {
-        const std::size_t  n = model.n_points(), m = model.n_terms();
+        const std::size_t n = model.n_points(), m = model.n_terms();
         h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
         std::vector<int> real(model.real.begin(), model.real.end());
         h5.create_dataset<int>("real", {m}).write(real);
@@ -94,8 +93,9 @@ namespace greentread
         throw InputError("patch model file '" + file +
                          "' has inconsistent dataset sizes; delete it to recompute it");
       const auto finite = [](const auto &values) {
-        return std::all_of(values.begin(), values.end(),
-                           [](const auto &x) { return std::isfinite(std::abs(x)); });
+        return std::all_of(values.begin(), values.end(), [](const auto &x) {
+          return std::isfinite(std::abs(x));
+        });
       };
       if (!finite(model.lambda) || !finite(r) || !finite(gr) || !finite(p) || !finite(info))
         throw InputError("patch model file '" + file +
@@ -112,9 +112,12 @@ namespace greentread
         for (std::size_t i = 0; i < n; ++i)
           for (std::size_t j = 0; j < n; ++j)
             model.residues[t](i, j) = r[(t * n + i) * n + j];
-      if (std::any_of(gr.begin(), gr.end(), [](const double x) { return x != 0.; }))
-        model.instantaneous = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
-                                                             Eigen::RowMajor>>(gr.data(), n, n);
+      if (std::any_of(gr.begin(), gr.end(), [](const double x) {
+            return x != 0.;
+          }))
+        model.instantaneous =
+          Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            gr.data(), n, n);
       model.f_max            = info[0];
       model.identified_modes = static_cast<unsigned int>(info[1]);
       model.sum_error        = info[2];

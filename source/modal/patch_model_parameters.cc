@@ -46,7 +46,8 @@ namespace greentread
                           "relative to the other lines: a large weight makes the model's "
                           "static compliance that of the structure, which the static contact "
                           "solve uses.");
-        prm.declare_entry("Pole merge tolerance", "0.005", base::RangePattern::closed(1e-6, 0.1, ""),
+        prm.declare_entry("Pole merge tolerance", "0.005",
+                          base::RangePattern::closed(1e-6, 0.1, ""),
                           "The poles are identified on a few reference functions and merged: "
                           "two poles closer than this, relative to |lambda|, are one.");
         prm.declare_entry("Reference transfers", "8", dealii::Patterns::Integer(0, 64),
@@ -72,15 +73,15 @@ namespace greentread
     {
       prm.enter_subsection("Patch model");
       {
-        source = prm.get("Source") == "fe modes" ? PatchModelSource::fe_modes :
-                                                   PatchModelSource::identified;
+        source                 = prm.get("Source") == "fe modes" ? PatchModelSource::fe_modes :
+                                                                   PatchModelSource::identified;
         mode_cutoff            = prm.get_double("Mode cutoff");
         instantaneous_residual = prm.get("Residual flexibility") == "instantaneous";
         residual_pole_factor   = prm.get_double("Residual pole factor");
-        static_weight        = prm.get_double("Static weight");
-        pole_merge_tolerance = prm.get_double("Pole merge tolerance");
-        reference_transfers  = prm.get_integer("Reference transfers");
-        allow_non_passive    = prm.get_bool("Allow non-passive");
+        static_weight          = prm.get_double("Static weight");
+        pole_merge_tolerance   = prm.get_double("Pole merge tolerance");
+        reference_transfers    = prm.get_integer("Reference transfers");
+        allow_non_passive      = prm.get_bool("Allow non-passive");
       }
       prm.leave_subsection();
     }

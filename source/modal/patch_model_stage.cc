@@ -31,19 +31,20 @@ namespace greentread
 
 
     PatchModel
-    patch_model_stage(const base::FrequencyResponseMatrix  &green,
-                      const IdentificationParameters &identification,
-                      const PatchModelParameters     &parameters,
-                      const std::filesystem::path    &file,
-                      const std::string              &key,
-                      const base::ParameterRecord    &record,
-                      const bool                      reuse,
-                      const bool                      print_timings)
+    patch_model_stage(const base::FrequencyResponseMatrix &green,
+                      const IdentificationParameters      &identification,
+                      const PatchModelParameters          &parameters,
+                      const std::filesystem::path         &file,
+                      const std::string                   &key,
+                      const base::ParameterRecord         &record,
+                      const bool                           reuse,
+                      const bool                           print_timings)
     {
       const unsigned int n_p = green.n_points();
       PatchModel         model;
-      if (reuse && read_patch_model_key(file.string()) == key &&
-          base::read_saved_stage(file, [&] { model = read_patch_model(file.string()); }))
+      if (reuse && read_patch_model_key(file.string()) == key && base::read_saved_stage(file, [&] {
+            model = read_patch_model(file.string());
+          }))
         {
           std::cout << "Reusing " << file.string()
                     << ": same Green's functions and identification parameters\n";

@@ -21,17 +21,17 @@ namespace greentread
        */
       struct Projection : Eigen::DenseFunctor<double>
       {
-        Projection(const base::FrequencyResponse       &frf_,
+        Projection(const base::FrequencyResponse &frf_,
                    const std::vector<PolishPole> &shape,
                    const bool                     lower_,
                    const bool                     upper_)
-          : Eigen::DenseFunctor<double>(parameter_count(shape),
-                                        2 * int(frf_.values.size() - (lower_ ? 1 : 0)))
-          , frf(frf_)
-          , real(shape.size())
-          , lower(lower_)
-          , upper(upper_)
-          , first(lower_ ? 1 : 0)
+            : Eigen::DenseFunctor<double>(parameter_count(shape),
+                                          2 * int(frf_.values.size() - (lower_ ? 1 : 0)))
+            , frf(frf_)
+            , real(shape.size())
+            , lower(lower_)
+            , upper(upper_)
+            , first(lower_ ? 1 : 0)
         {
           for (std::size_t r = 0; r < shape.size(); ++r)
             real[r] = shape[r].real;
@@ -134,7 +134,7 @@ namespace greentread
           for (Eigen::Index c = 0; c < scale.size(); ++c)
             if (!(scale(c) > 0.))
               scale(c) = 1.;
-          const Eigen::MatrixXd                        S = A * scale.cwiseInverse().asDiagonal();
+          const Eigen::MatrixXd S = A * scale.cwiseInverse().asDiagonal();
           const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(S);
           x = qr.solve(data).cwiseQuotient(scale);
           Q = qr.householderQ() * Eigen::MatrixXd::Identity(A.rows(), qr.rank());
@@ -180,7 +180,7 @@ namespace greentread
                       {
                         const Complex a = dl / ((jw - l[p]) * (jw - l[p]));
                         const Complex b = dlb / ((jw - std::conj(l[p])) * (jw - std::conj(l[p])));
-                        d = x(c) * (a + b) + x(c + 1) * (j * a - j * b);
+                        d               = x(c) * (a + b) + x(c + 1) * (j * a - j * b);
                       }
                     v(k)     = weight(k) * d.real();
                     v(k + n) = weight(k) * d.imag();
@@ -202,18 +202,18 @@ namespace greentread
         }
 
         const base::FrequencyResponse &frf;
-        std::vector<bool>        real;
-        bool                     lower, upper;
-        unsigned int             first;
-        Eigen::VectorXd          omega, weight, data;
-        mutable unsigned int     evaluations = 0;
+        std::vector<bool>              real;
+        bool                           lower, upper;
+        unsigned int                   first;
+        Eigen::VectorXd                omega, weight, data;
+        mutable unsigned int           evaluations = 0;
       };
     } // namespace
 
 
 
     std::vector<PolishPole>
-    polish_poles(const base::FrequencyResponse       &frf,
+    polish_poles(const base::FrequencyResponse &frf,
                  const std::vector<PolishPole> &poles,
                  const bool                     lower,
                  const bool                     upper,

@@ -12,7 +12,7 @@ namespace greentread
   namespace periodic
   {
     BlochCell::BlochCell(const PeriodicCell &cell)
-      : n_reduced(cell.n_face + cell.n_interior)
+        : n_reduced(cell.n_face + cell.n_interior)
     {
       // Fold R onto L. Phase class 0: none; 1: e^{i phi} (column on R);
       // 2: e^{-i phi} (row on R).
@@ -75,8 +75,8 @@ namespace greentread
       const Complex phase = std::polar(1., phi);
       Complex      *out   = matrix.valuePtr();
       for (std::size_t e = 0; e < at_frequency[0].size(); ++e)
-        out[e] = at_frequency[0][e] + phase * at_frequency[1][e] +
-                 std::conj(phase) * at_frequency[2][e];
+        out[e] =
+          at_frequency[0][e] + phase * at_frequency[1][e] + std::conj(phase) * at_frequency[2][e];
       return matrix;
     }
 

@@ -40,9 +40,8 @@ namespace greentread
                       "tributary rectangle %.3f x %.3f mm (L_c / N_x x l_c / N_y) on the "
                       "tread, radius up to %.2f mm:\n"
                       "  x from %.3f to %.3f mm, y from %.3f to %.3f mm; %u contact cells",
-                      points.size(), points_along, points_across, 1e3 * dx, 1e3 * dy,
-                      1e3 * radius, 1e3 * x_min, 1e3 * x_max, 1e3 * y_min, 1e3 * y_max,
-                      n_contact_cells);
+                      points.size(), points_along, points_across, 1e3 * dx, 1e3 * dy, 1e3 * radius,
+                      1e3 * x_min, 1e3 * x_max, 1e3 * y_min, 1e3 * y_max, n_contact_cells);
       return text;
     }
 
@@ -70,7 +69,9 @@ namespace greentread
         double z_scale = 0.;
         for (const auto &d : cell.dofs)
           z_scale = std::max(z_scale, std::abs(d.axial) + d.radius);
-        const auto key = [&](const double z) { return std::llround(z / (1e-9 * z_scale)); };
+        const auto key = [&](const double z) {
+          return std::llround(z / (1e-9 * z_scale));
+        };
         std::map<long long, unsigned int> face, mid;
         std::map<long long, double>       z_at, radius_at;
         for (unsigned int i = 0; i < cell.n_face + cell.n_interior; ++i)
@@ -81,10 +82,10 @@ namespace greentread
             if (i < cell.n_face)
               {
                 if (face.count(key(d.axial)))
-                  throw InputError("the tread surface has two nodes at z = " +
-                                   format_short(d.axial) +
-                                   " m; allowed: a tread surface that every axial position "
-                                   "crosses once (no vertical groove walls)");
+                  throw InputError(
+                    "the tread surface has two nodes at z = " + format_short(d.axial) +
+                    " m; allowed: a tread surface that every axial position "
+                    "crosses once (no vertical groove walls)");
                 face[key(d.axial)]      = i;
                 z_at[key(d.axial)]      = d.axial;
                 radius_at[key(d.axial)] = d.radius;
@@ -143,15 +144,19 @@ namespace greentread
        * Gauss points, with dS = r sqrt(1 + (dr/dz)^2) dtheta dz.
        */
       std::vector<LoadEntry>
-      tributary_load(const TreadNodes &nodes, const double cell_angle, const double theta_a,
-                     const double theta_b, const double z_a, const double z_b)
+      tributary_load(const TreadNodes &nodes,
+                     const double      cell_angle,
+                     const double      theta_a,
+                     const double      theta_b,
+                     const double      z_a,
+                     const double      z_b)
       {
         const double gauss_t[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
         const double gauss_w[3] = {5. / 18., 8. / 18., 5. / 18.};
-        const unsigned int p    = nodes.degree;
-        const double       tiny = 1e-12;
+        const unsigned int                                      p    = nodes.degree;
+        const double                                            tiny = 1e-12;
         std::map<std::pair<unsigned int, unsigned int>, double> load;
-        double                                                   total = 0.;
+        double                                                  total = 0.;
         const auto first_cell = static_cast<unsigned int>(std::floor(theta_a / cell_angle + tiny));
         for (unsigned int c = first_cell; c * cell_angle < theta_b - tiny * cell_angle; ++c)
           {
@@ -175,8 +180,8 @@ namespace greentread
                       const double xi    = theta / cell_angle - c;
                       const double eta   = (z - z0) / (z1 - z0);
                       const double r     = r0 + (r1 - r0) * eta;
-                      const double dS    = r * std::sqrt(1. + slope * slope) * (tb - ta) *
-                                        (zb - za) * gauss_w[i] * gauss_w[j];
+                      const double dS = r * std::sqrt(1. + slope * slope) * (tb - ta) * (zb - za) *
+                                        gauss_w[i] * gauss_w[j];
                       total += dS;
                       for (unsigned int a = 0; a <= p; ++a)
                         for (unsigned int b = 0; b <= p; ++b)
@@ -204,9 +209,9 @@ namespace greentread
       double
       radius_at(const TreadNodes &nodes, const double z)
       {
-        const auto   it = std::lower_bound(nodes.z.begin(), nodes.z.end(), z);
-        const auto   k  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - nodes.z.begin(), 1),
-                                              nodes.z.size() - 1);
+        const auto it = std::lower_bound(nodes.z.begin(), nodes.z.end(), z);
+        const auto k  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - nodes.z.begin(), 1),
+                                             nodes.z.size() - 1);
         if (nodes.z.size() == 1)
           return nodes.radius[0];
         const double t = (z - nodes.z[k - 1]) / (nodes.z[k] - nodes.z[k - 1]);
@@ -231,12 +236,11 @@ namespace greentread
       // Across: the whole patch on the tread.
       const double half_width = 0.5 * request.width;
       if (half_width > -nodes.z.front() * (1. + 1e-9) || half_width > nodes.z.back() * (1. + 1e-9))
-        throw InputError("parameter 'Green's functions/Patch width' = " +
-                         format_number(request.width) +
-                         " does not fit on the tread surface (z from " +
-                         format_short(nodes.z.front()) + " to " + format_short(nodes.z.back()) +
-                         " m); allowed: a patch at most " +
-                         format_short(2. * std::min(-nodes.z.front(), nodes.z.back())) + " m wide");
+        throw InputError(
+          "parameter 'Green's functions/Patch width' = " + format_number(request.width) +
+          " does not fit on the tread surface (z from " + format_short(nodes.z.front()) + " to " +
+          format_short(nodes.z.back()) + " m); allowed: a patch at most " +
+          format_short(2. * std::min(-nodes.z.front(), nodes.z.back())) + " m wide");
 
       // Along: the centre on a cell face or mid-plane, the first that
       // leaves the patch in the cells from 0 on; arc lengths on the outer
@@ -249,12 +253,12 @@ namespace greentread
       patch.n_contact_cells =
         static_cast<unsigned int>(std::ceil((centre + half_angle) / cell.angle - 1e-9));
       if (patch.n_contact_cells + 1 > cell.n_cells)
-        throw InputError("parameter 'Green's functions/Patch length' = " +
-                         format_number(request.length) + " spans " +
-                         std::to_string(patch.n_contact_cells) + " of the ring's " +
-                         std::to_string(cell.n_cells) +
-                         " cells; allowed: a patch shorter than the ring (at least one cell "
-                         "outside it)");
+        throw InputError(
+          "parameter 'Green's functions/Patch length' = " + format_number(request.length) +
+          " spans " + std::to_string(patch.n_contact_cells) + " of the ring's " +
+          std::to_string(cell.n_cells) +
+          " cells; allowed: a patch shorter than the ring (at least one cell "
+          "outside it)");
 
       for (unsigned int i = 0; i < nx; ++i)
         for (unsigned int j = 0; j < ny; ++j)
@@ -265,8 +269,7 @@ namespace greentread
             patch.points.push_back(
               {x, y, radius_at(nodes, y), theta,
                tributary_load(nodes, cell.angle, theta - 0.5 * patch.dx / R,
-                              theta + 0.5 * patch.dx / R, y - 0.5 * patch.dy,
-                              y + 0.5 * patch.dy)});
+                              theta + 0.5 * patch.dx / R, y - 0.5 * patch.dy, y + 0.5 * patch.dy)});
           }
       return patch;
     }
@@ -289,41 +292,41 @@ namespace greentread
       patch.asked_dy      = request.width / request.points_across;
 
       // Across: a whole stride of tread nodes about the node nearest z = 0.
-      const unsigned int ny = request.points_across;
+      const unsigned int ny     = request.points_across;
       std::size_t        centre = 0;
       for (std::size_t k = 0; k < z.size(); ++k)
         if (std::abs(z[k]) < std::abs(z[centre]))
           centre = k;
-      const double node_dy = z.size() > 1 ? (centre + 1 < z.size() ? z[centre + 1] - z[centre] :
-                                                                       z[centre] - z[centre - 1]) :
-                                            0.;
+      const double node_dy  = z.size() > 1 ? (centre + 1 < z.size() ? z[centre + 1] - z[centre] :
+                                                                      z[centre] - z[centre - 1]) :
+                                             0.;
       const double asked_dy = request.width / ny;
-      const long   qy = ny == 1 ? 1 : std::max(1L, std::lround(asked_dy / node_dy));
-      const long   first_y = static_cast<long>(centre) - (static_cast<long>(ny) - 1) * qy / 2;
-      const long   last_y  = first_y + (static_cast<long>(ny) - 1) * qy;
+      const long   qy       = ny == 1 ? 1 : std::max(1L, std::lround(asked_dy / node_dy));
+      const long   first_y  = static_cast<long>(centre) - (static_cast<long>(ny) - 1) * qy / 2;
+      const long   last_y   = first_y + (static_cast<long>(ny) - 1) * qy;
       if (first_y < 0 || last_y >= static_cast<long>(z.size()))
-        throw InputError("parameter 'Green's functions/Patch width' = " +
-                         format_number(request.width) + " with " + std::to_string(ny) +
-                         " points across does not fit on the tread surface (" +
-                         format_short(z.back() - z.front()) + " m wide, tread nodes every " +
-                         format_short(node_dy) + " m); allowed: a narrower patch or fewer points");
+        throw InputError(
+          "parameter 'Green's functions/Patch width' = " + format_number(request.width) + " with " +
+          std::to_string(ny) + " points across does not fit on the tread surface (" +
+          format_short(z.back() - z.front()) + " m wide, tread nodes every " +
+          format_short(node_dy) + " m); allowed: a narrower patch or fewer points");
 
       // Along: a whole stride of half cells (faces and mid-planes).
       const unsigned int nx        = request.points_along;
       const double       half_cell = 0.5 * radius * cell.angle;
       const double       asked_dx  = request.length / nx;
-      long qx = nx == 1 ? 2 : std::max(1L, std::lround(asked_dx / half_cell));
+      long               qx        = nx == 1 ? 2 : std::max(1L, std::lround(asked_dx / half_cell));
       if (nodes.degree == 1 && qx % 2 == 1)
         qx += 1; // no mid-plane nodes (linear elements): faces only
-      const long last_s = (static_cast<long>(nx) - 1) * qx;
+      const long last_s     = (static_cast<long>(nx) - 1) * qx;
       patch.n_contact_cells = static_cast<unsigned int>(last_s / 2 + 1);
       if (patch.n_contact_cells + 1 > cell.n_cells)
-        throw InputError("parameter 'Green's functions/Patch length' = " +
-                         format_number(request.length) + " with " + std::to_string(nx) +
-                         " points along spans " + std::to_string(patch.n_contact_cells) +
-                         " of the ring's " + std::to_string(cell.n_cells) +
-                         " cells; allowed: a patch shorter than the ring (at least one cell "
-                         "outside it)");
+        throw InputError(
+          "parameter 'Green's functions/Patch length' = " + format_number(request.length) +
+          " with " + std::to_string(nx) + " points along spans " +
+          std::to_string(patch.n_contact_cells) + " of the ring's " + std::to_string(cell.n_cells) +
+          " cells; allowed: a patch shorter than the ring (at least one cell "
+          "outside it)");
 
       patch.dx = qx * half_cell;
       patch.dy = ny > 1 ? (z[last_y] - z[first_y]) / (ny - 1) : 0.;
@@ -333,13 +336,14 @@ namespace greentread
         {
           const double step = z[first_y + (j + 1) * qy] - z[first_y + j * qy];
           if (std::abs(step - patch.dy) > 0.01 * patch.dy)
-            throw InputError("parameter 'Green's functions/Patch width' = " +
-                             format_number(request.width) + " with " + std::to_string(ny) +
-                             " points across: the tread nodes under it are not evenly spaced "
-                             "(a step of " + format_short(1e3 * step) + " mm against the mean " +
-                             format_short(1e3 * patch.dy) +
-                             " mm); allowed: a patch within the evenly meshed crown, or a "
-                             "smaller 'Geometry/Mesh size'");
+            throw InputError(
+              "parameter 'Green's functions/Patch width' = " + format_number(request.width) +
+              " with " + std::to_string(ny) +
+              " points across: the tread nodes under it are not evenly spaced "
+              "(a step of " +
+              format_short(1e3 * step) + " mm against the mean " + format_short(1e3 * patch.dy) +
+              " mm); allowed: a patch within the evenly meshed crown, or a "
+              "smaller 'Geometry/Mesh size'");
         }
       for (unsigned int i = 0; i < nx; ++i)
         {
@@ -350,7 +354,9 @@ namespace greentread
               // quadratic elements alone have (qx is even otherwise).
               const std::size_t  k   = first_y + j * qy;
               const unsigned int dof = s % 2 == 0 ? nodes.face_dof[k] : nodes.mid_dof[k];
-              patch.points.push_back({(s - 0.5 * last_s) * half_cell, z[k], nodes.radius[k],
+              patch.points.push_back({(s - 0.5 * last_s) * half_cell,
+                                      z[k],
+                                      nodes.radius[k],
                                       0.5 * s * cell.angle,
                                       {{static_cast<unsigned int>(s / 2), dof, 1.}}});
             }

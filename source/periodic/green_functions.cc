@@ -44,10 +44,9 @@ namespace greentread
       std::string               failure;
       SolveDiagnostics          diagnostics;
       base::Progress            progress(n_ranks == 1 ?
-                                "Green's functions (" + std::to_string(n_lines) +
-                                  " frequencies)" :
-                                "Green's functions (rank 0's " + std::to_string(lines.size()) +
-                                  " of " + std::to_string(n_lines) + " frequencies)",
+                                           "Green's functions (" + std::to_string(n_lines) + " frequencies)" :
+                                           "Green's functions (rank 0's " + std::to_string(lines.size()) +
+                                             " of " + std::to_string(n_lines) + " frequencies)",
                               lines.size());
       const auto work = [&]() {
         try
@@ -61,8 +60,8 @@ namespace greentread
                   if (!failure.empty())
                     return;
                 }
-                const unsigned int k = lines[l];
-                const auto         g = solver->solve(2. * M_PI * k * df, mine);
+                const unsigned int k   = lines[l];
+                const auto         g   = solver->solve(2. * M_PI * k * df, mine);
                 double            *out = values.data() + 2 * std::size_t(k) * P * P;
                 for (unsigned int i = 0; i < P; ++i)
                   for (unsigned int j = 0; j < P; ++j)
@@ -84,9 +83,9 @@ namespace greentread
       };
       base::run_on_threads(n_threads, work, done, lines.size(),
                            show_progress && rank == 0 ? &progress : nullptr, [&]() {
-                                 std::lock_guard<std::mutex> lock(mutex);
-                                 return !failure.empty();
-                               });
+                             std::lock_guard<std::mutex> lock(mutex);
+                             return !failure.empty();
+                           });
 
       // Every rank learns whether any failed; the lowest failing rank's
       // message is the one reported.
@@ -103,8 +102,7 @@ namespace greentread
                      MPI_SUM, 0, comm);
           values.swap(sum);
         }
-      report.diagnostics.max_residual =
-        dealii::Utilities::MPI::max(diagnostics.max_residual, comm);
+      report.diagnostics.max_residual = dealii::Utilities::MPI::max(diagnostics.max_residual, comm);
       report.diagnostics.max_condition =
         dealii::Utilities::MPI::max(diagnostics.max_condition, comm);
       report.ranks   = n_ranks;

@@ -37,8 +37,7 @@ namespace greentread
                           "'doubling': the paper's recursive doubling of the condensed cell "
                           "(Eqs. 46-49; exact, dense). 'full-ring': all N cells in one sparse "
                           "solve (the reference; coarse meshes only).");
-        prm.declare_entry("Harmonic tolerance", "1e-3",
-                          base::RangePattern::closed(1e-8, 0.1, ""),
+        prm.declare_entry("Harmonic tolerance", "1e-3", base::RangePattern::closed(1e-8, 0.1, ""),
                           "'Method' = harmonic: the harmonics 0 .. N - 1 are summed, N the "
                           "first for which a bound of the neglected static tail is below "
                           "this fraction of the smallest static driving point "
@@ -92,16 +91,16 @@ namespace greentread
     {
       prm.enter_subsection("Green's functions");
       {
-        max_frequency        = prm.get_double("Maximum frequency");
-        frequency_step       = prm.get_double("Frequency step");
-        method               = prm.get("Method");
-        harmonic_tolerance   = prm.get_double("Harmonic tolerance");
-        patch.length         = prm.get_double("Patch length");
-        patch.width          = prm.get_double("Patch width");
-        patch.points_along   = prm.get_integer("Points along");
-        patch.points_across  = prm.get_integer("Points across");
+        max_frequency       = prm.get_double("Maximum frequency");
+        frequency_step      = prm.get_double("Frequency step");
+        method              = prm.get("Method");
+        harmonic_tolerance  = prm.get_double("Harmonic tolerance");
+        patch.length        = prm.get_double("Patch length");
+        patch.width         = prm.get_double("Patch width");
+        patch.points_along  = prm.get_integer("Points along");
+        patch.points_across = prm.get_integer("Points across");
         patch.load = prm.get("Point load") == "node" ? PointLoad::node : PointLoad::tributary_area;
-        pairs                = prm.get("Pairs");
+        pairs      = prm.get("Pairs");
         deflection_frequency = prm.get_double("Deflection shape frequency");
       }
       prm.leave_subsection();
@@ -113,11 +112,11 @@ namespace greentread
                         frequency_step,
                         "at most 'Maximum frequency' = " + format_number(max_frequency) + " Hz");
       const double lines = max_frequency / frequency_step;
-      require_parameter(std::abs(lines - std::round(lines)) < 1e-9 * lines,
-                        "Green's functions/Frequency step", frequency_step,
-                        "a whole fraction of 'Maximum frequency' = " +
-                          format_number(max_frequency) + " Hz (f_max / df = " +
-                          format_short(lines) + ")");
+      require_parameter(
+        std::abs(lines - std::round(lines)) < 1e-9 * lines, "Green's functions/Frequency step",
+        frequency_step,
+        "a whole fraction of 'Maximum frequency' = " + format_number(max_frequency) +
+          " Hz (f_max / df = " + format_short(lines) + ")");
       require_parameter(lines <= 1e6, "Green's functions/Frequency step", frequency_step,
                         "at least f_max / 1e6");
       require_parameter(deflection_frequency <= max_frequency,
@@ -151,7 +150,7 @@ namespace greentread
           return chosen;
         }
       const unsigned int nx = contact.points_along, ny = contact.points_across;
-      const unsigned int centre = (nx / 2) * ny + ny / 2;
+      const unsigned int centre                                 = (nx / 2) * ny + ny / 2;
       std::vector<std::pair<unsigned int, unsigned int>> result = {{centre, centre}};
       if (nx > 1)
         result.emplace_back(centre, centre - ny);

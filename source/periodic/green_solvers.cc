@@ -96,12 +96,12 @@ namespace greentread
        * Throws past the limits.
        */
       void
-      check_solution(const SparseComplex    &A,
-                     const Dense            &X,
-                     const Dense            &B,
-                     const double            omega,
-                     const std::string      &what,
-                     SolveDiagnostics       &diagnostics)
+      check_solution(const SparseComplex &A,
+                     const Dense         &X,
+                     const Dense         &B,
+                     const double         omega,
+                     const std::string   &what,
+                     SolveDiagnostics    &diagnostics)
       {
         Eigen::VectorXcd w(X.cols());
         for (int j = 0; j < X.cols(); ++j)
@@ -126,9 +126,9 @@ namespace greentread
                                " gave NaN or inf");
         if (condition > condition_limit || residual > residual_limit)
           throw NumericalError("the dynamic stiffness " + what + " is nearly singular at " +
-                               at_frequency(omega) + ": condition number >= " +
-                               format_short(condition) + ", backward error " +
-                               format_short(residual) +
+                               at_frequency(omega) +
+                               ": condition number >= " + format_short(condition) +
+                               ", backward error " + format_short(residual) +
                                ": an undamped resonance? Give the materials a loss factor or "
                                "move the frequency grid");
         diagnostics.max_residual  = std::max(diagnostics.max_residual, residual);
@@ -172,10 +172,10 @@ namespace greentread
       {
       public:
         BlochSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
-          : cell(cell_)
-          , patch(patch_)
-          , bloch(cell_)
-          , dofs(contact_dofs(patch_))
+            : cell(cell_)
+            , patch(patch_)
+            , bloch(cell_)
+            , dofs(contact_dofs(patch_))
         {
           for (const auto &p : patch.points)
             {
@@ -201,7 +201,7 @@ namespace greentread
             {
               const double         phi = 2. * M_PI * k / N;
               const SparseComplex &D_k = factorise(phi, omega, k);
-              const Dense X = lu.solve(B);
+              const Dense          X   = lu.solve(B);
               check_solution(D_k, X, B, omega, "of Bloch wavenumber " + std::to_string(k),
                              diagnostics);
               Dense S(n_slots, n_slots);
@@ -232,15 +232,14 @@ namespace greentread
           Dense g = Dense::Zero(P, n_columns);
           for (unsigned int k = 0; 2 * k <= N; ++k)
             {
-              const double         phi = 2. * M_PI * k / N;
-              const SparseComplex &D_k = factorise(phi, omega, k);
-              const Dense W = weights(phi);
-              const auto  response = [&](const bool transposed) {
+              const double         phi      = 2. * M_PI * k / N;
+              const SparseComplex &D_k      = factorise(phi, omega, k);
+              const Dense          W        = weights(phi);
+              const auto           response = [&](const bool transposed) {
                 Dense B = Dense::Zero(bloch.size(), n_columns);
                 for (unsigned int s = 0; s < n_slots; ++s)
                   for (unsigned int c = 0; c < n_columns; ++c)
-                    B(dofs[s], c) =
-                      transposed ? std::conj(W(s, columns[c])) : W(s, columns[c]);
+                    B(dofs[s], c) = transposed ? std::conj(W(s, columns[c])) : W(s, columns[c]);
                 const std::string what =
                   "of Bloch wavenumber " + std::to_string(transposed ? N - k : k);
                 const Dense X = transposed ? Dense(lu.transpose().solve(B)) : Dense(lu.solve(B));
@@ -306,7 +305,7 @@ namespace greentread
       /// Factorise the chain's matrix @p A (analysed already), solve for
       /// unit loads at the contact points, check, and read g off.
       Dense
-      solve_chain(ChainLU            &lu,
+      solve_chain(ChainLU             &lu,
                   const SparseComplex &A,
                   const RingChain     &chain,
                   const ContactPatch  &patch,
@@ -340,10 +339,11 @@ namespace greentread
       {
       public:
         FullRingSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
-          : cell(cell_)
-          , patch(patch_)
-          , ring{cell_.n_face, cell_.n_interior, cell_.n_cells, cell_.n_cells}
-        {}
+            : cell(cell_)
+            , patch(patch_)
+            , ring{cell_.n_face, cell_.n_interior, cell_.n_cells, cell_.n_cells}
+        {
+        }
 
         Dense
         solve(const double omega, SolveDiagnostics &diagnostics) override
@@ -382,7 +382,7 @@ namespace greentread
            SolveDiagnostics   &diagnostics)
       {
         const Eigen::PartialPivLU<Dense> S(A.RR + B.LL);
-        const double condition = 1. / S.rcond();
+        const double                     condition = 1. / S.rcond();
         if (!std::isfinite(condition) || condition > condition_limit)
           throw NumericalError("the doubling (Eq. 47) meets a nearly singular D_RR + D_LL at " +
                                at_frequency(omega) + ": condition number about " +
@@ -390,8 +390,8 @@ namespace greentread
                                ": an undamped resonance? Give the materials a loss factor or "
                                "move the frequency grid");
         diagnostics.max_condition = std::max(diagnostics.max_condition, condition);
-        const Dense X1 = S.solve(A.RL);
-        const Dense X2 = S.solve(B.LR);
+        const Dense X1            = S.solve(A.RL);
+        const Dense X2            = S.solve(B.LR);
         return {A.LL - A.LR * X1, -A.LR * X2, -B.RL * X1, B.RR - B.RL * X2};
       }
 
@@ -402,11 +402,12 @@ namespace greentread
       {
       public:
         DoublingSolver(const PeriodicCell &cell_, const ContactPatch &patch_)
-          : cell(cell_)
-          , patch(patch_)
-          , contact{cell_.n_face, cell_.n_interior, patch_.n_contact_cells,
-                    patch_.n_contact_cells + 1}
-        {}
+            : cell(cell_)
+            , patch(patch_)
+            , contact{cell_.n_face, cell_.n_interior, patch_.n_contact_cells,
+                      patch_.n_contact_cells + 1}
+        {
+        }
 
         Dense
         solve(const double omega, SolveDiagnostics &diagnostics) override
@@ -427,8 +428,8 @@ namespace greentread
             D_Ib << Dense(D.block(nf, 0, ni, nf)), Dense(D.block(nf, nf + ni, ni, nf));
             const Dense Y = interior.solve(D_Ib);
             // The backward error, as check_solution() measures it.
-            const double residual = (D_II * Y - D_Ib).norm() /
-                                    (norm_1(D_II) * Y.norm() + D_Ib.norm() + 1e-300);
+            const double residual =
+              (D_II * Y - D_Ib).norm() / (norm_1(D_II) * Y.norm() + D_Ib.norm() + 1e-300);
             if (!(residual < residual_limit))
               throw NumericalError("the condensation of the cell's interior at " +
                                    at_frequency(omega) + " left a backward error of " +
@@ -445,8 +446,8 @@ namespace greentread
           }
 
           // The free part, N_l cells, along the binary digits of N_l (Eq. 48).
-          const unsigned int n_free = cell.n_cells - patch.n_contact_cells;
-          SuperElement       power = one, free_part;
+          const unsigned int n_free  = cell.n_cells - patch.n_contact_cells;
+          SuperElement       power   = one, free_part;
           bool               started = false;
           for (unsigned int bits = n_free; bits != 0; bits >>= 1)
             {
@@ -501,8 +502,8 @@ namespace greentread
       BlochCell bloch(cell);
       bloch.set_frequency(omega);
       const unsigned int N = cell.n_cells, n = bloch.size();
-      Dense    u = Dense::Zero(n, N);
-      SparseLU lu;
+      Dense              u = Dense::Zero(n, N);
+      SparseLU           lu;
       // All N wavenumbers, one factorisation each: this is one frequency,
       // and the transposed solves D_{N-k} = D_k^T would save only half.
       for (unsigned int k = 0; k < N; ++k)
@@ -518,8 +519,7 @@ namespace greentread
           for (const auto &e : load)
             b(e.dof, 0) += e.weight * std::polar(1., -phi * e.cell);
           const Dense x = lu.solve(b);
-          check_solution(D_k, x, b, omega, "of Bloch wavenumber " + std::to_string(k),
-                         diagnostics);
+          check_solution(D_k, x, b, omega, "of Bloch wavenumber " + std::to_string(k), diagnostics);
           for (unsigned int m = 0; m < N; ++m)
             u.col(m) += std::polar(1., phi * static_cast<double>(m)) * x.col(0);
         }
@@ -544,7 +544,9 @@ namespace greentread
 
 
     std::unique_ptr<GreenSolver>
-    make_green_solver(const Method method, const PeriodicCell &cell, const ContactPatch &patch,
+    make_green_solver(const Method        method,
+                      const PeriodicCell &cell,
+                      const ContactPatch &patch,
                       const HarmonicRing *harmonic)
     {
       switch (method)

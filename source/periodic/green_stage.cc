@@ -52,10 +52,10 @@ namespace greentread
                                const std::optional<HarmonicOptions> &harmonic_options)
     {
       if (!harmonic_options && geometry.cell_degree() > 2)
-        throw InputError("parameter 'Geometry/Element degree' = " +
-                         std::to_string(geometry.cell_degree()) +
-                         " is not allowed with a 3D cell; allowed: 1 or 2 (up to 4 with "
-                         "'Green's functions/Method' = harmonic)");
+        throw InputError(
+          "parameter 'Geometry/Element degree' = " + std::to_string(geometry.cell_degree()) +
+          " is not allowed with a 3D cell; allowed: 1 or 2 (up to 4 with "
+          "'Green's functions/Method' = harmonic)");
       if (harmonic_options && materials.tread_surface_mass_inward)
         throw InputError("parameter 'Materials/Tread pattern/Surface mass' = inward is not "
                          "allowed with 'Green's functions/Method' = harmonic; allowed there: "
@@ -78,8 +78,8 @@ namespace greentread
       inflation_seconds = base::seconds_since(start);
 
       tread_growth  = fe::tread_growth(*model, u, geometry.outer_radius()).first;
-      periodic_cell = make_periodic_cell(*model, cell->angle(), cell->n_cells(),
-                                         geometry::rim_seat, geometry::tread_surface, true);
+      periodic_cell = make_periodic_cell(*model, cell->angle(), cell->n_cells(), geometry::rim_seat,
+                                         geometry::tread_surface, true);
       if (materials.tread_surface_mass_inward)
         moved_mass_fraction = move_tread_mass_inward(periodic_cell);
       patch = place_contact_points(periodic_cell, patch_request);
@@ -110,10 +110,10 @@ namespace greentread
              " each, interior " + std::to_string(pc.n_interior) + "), inflated at " +
              format_number(pressure) + " Pa (tread growth " +
              format_printf("%.4g", 1e3 * tread_growth) + " mm)" +
-             (moved_mass_fraction > 0. ? "; the tread surface's mass (" +
-                                           format_printf("%.3g", 100. * moved_mass_fraction) +
-                                           "% of the cell's) moved inward"
-                                       : std::string()) +
+             (moved_mass_fraction > 0. ?
+                "; the tread surface's mass (" + format_printf("%.3g", 100. * moved_mass_fraction) +
+                  "% of the cell's) moved inward" :
+                std::string()) +
              "\n  " + patch.describe() + '\n' + (harmonic ? harmonic->describe() : std::string());
     }
 
@@ -177,10 +177,9 @@ namespace greentread
             result.green = base::read_green_hdf5(h5.string());
           return result;
         }
-      result.green = compute_green_functions(tyre.periodic_cell, tyre.patch,
-                                             parse_method(parameters.method),
-                                             parameters.frequency_step, parameters.n_lines(), comm,
-                                             show_progress, result.report, tyre.harmonic.get());
+      result.green = compute_green_functions(
+        tyre.periodic_cell, tyre.patch, parse_method(parameters.method), parameters.frequency_step,
+        parameters.n_lines(), comm, show_progress, result.report, tyre.harmonic.get());
       if (rank == 0)
         base::write_green_hdf5(h5, result.green, record, key);
       return result;
@@ -189,8 +188,11 @@ namespace greentread
 
 
     std::string
-    describe(const GreenStageResult &result, const InflatedTyre &tyre,
-             const GreenParameters &parameters, const std::filesystem::path &h5, const bool timings)
+    describe(const GreenStageResult      &result,
+             const InflatedTyre          &tyre,
+             const GreenParameters       &parameters,
+             const std::filesystem::path &h5,
+             const bool                   timings)
     {
       if (result.reused)
         return "Reusing " + h5.string() +
@@ -202,19 +204,19 @@ namespace greentread
                          ", largest condition estimate " +
                          format_printf("%.2g", report.diagnostics.max_condition) + "\n";
       if (timings)
-        text += "Run time on " + std::to_string(report.ranks) + " MPI rank(s) x " +
-                std::to_string(report.threads) + " thread(s): mesh " +
-                format_printf("%.3g", tyre.mesh_seconds) + " s, assembly " +
-                format_printf("%.3g", tyre.assembly_seconds) + " s, inflation and Kp " +
-                format_printf("%.3g", tyre.inflation_seconds) + " s, " +
-                (tyre.harmonic ? "section and harmonics " +
-                                   format_printf("%.3g", tyre.harmonic_seconds) + " s, " :
-                                 std::string()) +
-                "Green's functions " +
-                format_printf("%.4g", report.seconds) + " s (" +
-                format_printf("%.3g", report.seconds * report.ranks * report.threads /
-                                        parameters.n_lines()) +
-                " core-seconds per frequency)\n";
+        text +=
+          "Run time on " + std::to_string(report.ranks) + " MPI rank(s) x " +
+          std::to_string(report.threads) + " thread(s): mesh " +
+          format_printf("%.3g", tyre.mesh_seconds) + " s, assembly " +
+          format_printf("%.3g", tyre.assembly_seconds) + " s, inflation and Kp " +
+          format_printf("%.3g", tyre.inflation_seconds) + " s, " +
+          (tyre.harmonic ?
+             "section and harmonics " + format_printf("%.3g", tyre.harmonic_seconds) + " s, " :
+             std::string()) +
+          "Green's functions " + format_printf("%.4g", report.seconds) + " s (" +
+          format_printf("%.3g",
+                        report.seconds * report.ranks * report.threads / parameters.n_lines()) +
+          " core-seconds per frequency)\n";
       return text;
     }
   } // namespace periodic

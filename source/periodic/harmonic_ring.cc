@@ -38,11 +38,13 @@ namespace greentread
        * is not positive definite gets an empty matrix.
        */
       std::vector<Eigen::MatrixXd>
-      static_terms_of(const fe::HarmonicSection &section, const Eigen::MatrixXd &loads,
-                      const unsigned int first, const unsigned int count)
+      static_terms_of(const fe::HarmonicSection &section,
+                      const Eigen::MatrixXd     &loads,
+                      const unsigned int         first,
+                      const unsigned int         count)
       {
-        const unsigned int n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
-        std::vector<Eigen::MatrixXd>                                    terms(count);
+        const unsigned int           n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
+        std::vector<Eigen::MatrixXd> terms(count);
         std::vector<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> ldlt(n_threads);
         std::vector<char>                                               analysed(n_threads, 0);
         base::for_each_index(count, n_threads, [&](const std::size_t i, const unsigned int t) {
@@ -64,8 +66,8 @@ namespace greentread
                                const ContactPatch        &patch,
                                const double               tolerance,
                                const double               max_omega)
-      : section(section)
-      , arc(patch.arc)
+        : section(section)
+        , arc(patch.arc)
     {
       if (patch.load != PointLoad::tributary_area)
         throw InputError("parameter 'Green's functions/Point load' = node is not allowed with "
@@ -75,9 +77,9 @@ namespace greentread
       loads.resize(section.size(), ny);
       for (unsigned int j = 0; j < ny; ++j)
         {
-          const double y      = patch.points[j].y;
-          const auto [w, W]   = section.tread_strip(y - 0.5 * patch.dy, y + 0.5 * patch.dy);
-          loads.col(j)        = w / W;
+          const double y    = patch.points[j].y;
+          const auto [w, W] = section.tread_strip(y - 0.5 * patch.dy, y + 0.5 * patch.dy);
+          loads.col(j)      = w / W;
         }
       for (std::size_t p = 0; p < patch.points.size(); ++p)
         {
@@ -95,7 +97,7 @@ namespace greentread
       std::deque<Eigen::MatrixXd> ahead; // harmonics n, n + 1, ...
       unsigned int                n     = 0;
       const unsigned int          batch = 8 * std::max(1u, dealii::MultithreadInfo::n_threads());
-      const auto add_harmonic = [&]() {
+      const auto                  add_harmonic = [&]() {
         if (ahead.empty())
           for (auto &H : static_terms_of(section, loads, n, std::min(batch, max_harmonics - n)))
             ahead.push_back(std::move(H));
@@ -103,8 +105,9 @@ namespace greentread
         ahead.pop_front();
         if (H.size() == 0)
           throw NumericalError("the harmonic ring: the static stiffness of harmonic " +
-                               std::to_string(n) + " is not positive definite (an unheld "
-                               "section, or a prestress that buckles it)");
+                                                std::to_string(n) +
+                                                " is not positive definite (an unheld "
+                                                                 "section, or a prestress that buckles it)");
         driving += weight(n) * H.diagonal();
         h.push_back(H.diagonal().maxCoeff());
         static_terms.push_back(H);
@@ -124,7 +127,8 @@ namespace greentread
             throw NumericalError("the harmonic ring: " + std::to_string(max_harmonics) +
                                  " harmonics leave a tail of " + format_printf("%.2g", tail_bound) +
                                  " of the driving point, above 'Green's functions/Harmonic "
-                                 "tolerance' = " + format_short(tolerance));
+                                 "tolerance' = " +
+                                 format_short(tolerance));
           add_harmonic();
         }
       const double shift = 2. * max_omega * max_omega;
@@ -137,16 +141,16 @@ namespace greentread
           while (n < target)
             add_harmonic();
         }
-      tail_bound      = tail();
-      n_harmonics     = n;
-      this->tolerance = tolerance;
+      tail_bound           = tail();
+      n_harmonics          = n;
+      this->tolerance      = tolerance;
       const Eigen::Index P = angle.size();
       static_green         = Eigen::MatrixXd::Zero(P, P);
       for (unsigned int k = 0; k < n; ++k)
         for (Eigen::Index p = 0; p < P; ++p)
           for (Eigen::Index q = 0; q < P; ++q)
-            static_green(p, q) += weight(k) * std::cos(k * (angle[p] - angle[q])) *
-                                  static_terms[k](strip[p], strip[q]);
+            static_green(p, q) +=
+              weight(k) * std::cos(k * (angle[p] - angle[q])) * static_terms[k](strip[p], strip[q]);
     }
 
 
@@ -182,33 +186,36 @@ namespace greentread
     {
       for (unsigned int n = ring.n_harmonics; n < ring.n_harmonics + 8; ++n)
         if (!positive_definite(ring.section.shifted_stiffness(n, cutoff * cutoff)))
-          throw InputError("parameter 'Patch model/Mode cutoff' = " +
-                           format_number(cutoff / (2. * M_PI)) + " Hz is not allowed: harmonic " +
-                           std::to_string(n) + " has a mode below it, and the Green's functions "
-                           "sum harmonics 0 to " + std::to_string(ring.n_harmonics - 1) +
-                           " only; allowed: a lower cut-off, or a smaller 'Green's "
-                           "functions/Harmonic tolerance' (more harmonics)");
+          throw InputError(
+            "parameter 'Patch model/Mode cutoff' = " + format_number(cutoff / (2. * M_PI)) +
+            " Hz is not allowed: harmonic " + std::to_string(n) +
+            " has a mode below it, and the Green's functions "
+            "sum harmonics 0 to " +
+            std::to_string(ring.n_harmonics - 1) +
+            " only; allowed: a lower cut-off, or a smaller 'Green's "
+            "functions/Harmonic tolerance' (more harmonics)");
     }
 
 
 
     HarmonicGreenSolver::HarmonicGreenSolver(const HarmonicRing &ring)
-      : ring(ring)
-    {}
+        : ring(ring)
+    {
+    }
 
 
 
     Eigen::MatrixXcd
     HarmonicGreenSolver::solve(const double omega, SolveDiagnostics &diagnostics)
     {
-      using SparseC                = Eigen::SparseMatrix<Complex>;
-      const Eigen::Index       P   = ring.angle.size();
-      Eigen::MatrixXcd         g   = ring.static_green.cast<Complex>();
-      n_dynamic                    = 0;
+      using SparseC        = Eigen::SparseMatrix<Complex>;
+      const Eigen::Index P = ring.angle.size();
+      Eigen::MatrixXcd   g = ring.static_green.cast<Complex>();
+      n_dynamic            = 0;
       if (omega == 0.)
         return g;
-      const Eigen::MatrixXcd   loads = ring.loads.cast<Complex>();
-      const auto               parts = ring.section.dynamic_stiffness(omega);
+      const Eigen::MatrixXcd   loads    = ring.loads.cast<Complex>();
+      const auto               parts    = ring.section.dynamic_stiffness(omega);
       const double             smallest = ring.static_green.diagonal().minCoeff();
       const double             a        = ring.arc;
       Eigen::SparseLU<SparseC> lu;
@@ -225,7 +232,7 @@ namespace greentread
             {
               const Complex *a = parts[0].valuePtr(), *b = parts[1].valuePtr(),
                             *c = parts[2].valuePtr();
-              Complex *v = D.valuePtr();
+              Complex *v       = D.valuePtr();
               for (Eigen::Index i = 0; i < D.nonZeros(); ++i)
                 v[i] = a[i] + n1 * b[i] + n2 * c[i];
             }
@@ -273,7 +280,7 @@ namespace greentread
             continue;
           const unsigned int half  = n / 2;
           const double       decay = std::clamp(
-            d[half] > 0. && d[n] > 0. ? std::log(d[half] / d[n]) / std::log(double(n) / half) : 0.,
+                  d[half] > 0. && d[n] > 0. ? std::log(d[half] / d[n]) / std::log(double(n) / half) : 0.,
             0., 3.);
           const double tail = 4. * d[n] / (M_PI * a * a * n * (1. + decay)) / smallest;
           if (tail <= ring.tolerance &&

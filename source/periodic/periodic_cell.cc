@@ -29,13 +29,14 @@ namespace greentread
     {
       /// A deal.II matrix as T A T^T over the kept DoFs, in the new order.
       SparseReal
-      rotate_and_reorder(const dealii::SparseMatrix<double>  &A,
-                         const std::vector<int>               &new_index,
-                         const std::vector<unsigned int>      &node_of_dof,
-                         const std::vector<unsigned int>      &component_of_dof,
-                         const std::vector<std::array<double, 2>> &cos_sin,
-                         const std::vector<std::array<dealii::types::global_dof_index, 3>> &triplets,
-                         const unsigned int                    size)
+      rotate_and_reorder(
+        const dealii::SparseMatrix<double>                                &A,
+        const std::vector<int>                                            &new_index,
+        const std::vector<unsigned int>                                   &node_of_dof,
+        const std::vector<unsigned int>                                   &component_of_dof,
+        const std::vector<std::array<double, 2>>                          &cos_sin,
+        const std::vector<std::array<dealii::types::global_dof_index, 3>> &triplets,
+        const unsigned int                                                 size)
       {
         // t = [[c, s, 0], [-s, c, 0], [0, 0, 1]]: u_r = c u_x + s u_y,
         // u_theta = -s u_x + c u_y. Column q of t (the Cartesian component
@@ -88,24 +89,24 @@ namespace greentread
                        const dealii::types::boundary_id tread,
                        const bool                       with_prestress)
     {
-      const auto        nodes = fe::nodes(model.dof_handler(), model.mapping());
-      const std::size_t n     = model.dof_handler().n_dofs();
+      const auto                        nodes = fe::nodes(model.dof_handler(), model.mapping());
+      const std::size_t                 n     = model.dof_handler().n_dofs();
       dealii::AffineConstraints<double> clamp;
       model.add_clamp(clamped, clamp);
       clamp.close();
-      const dealii::IndexSet tread_dofs =
-        dealii::DoFTools::extract_boundary_dofs(model.dof_handler(), dealii::ComponentMask(), {tread});
+      const dealii::IndexSet tread_dofs = dealii::DoFTools::extract_boundary_dofs(
+        model.dof_handler(), dealii::ComponentMask(), {tread});
 
       // Sort the nodes into the left face, the interior and the right face.
       double size = 0.;
       for (const auto &node : nodes)
         size = std::max(size, node.position.norm());
-      const double length_tolerance = 1e-8 * size, angle_tolerance = 1e-6 * angle;
-      std::vector<unsigned int>               node_of_dof(n), component_of_dof(n);
-      std::vector<std::array<double, 2>>      cos_sin(nodes.size());
+      const double              length_tolerance = 1e-8 * size, angle_tolerance = 1e-6 * angle;
+      std::vector<unsigned int> node_of_dof(n), component_of_dof(n);
+      std::vector<std::array<double, 2>>                          cos_sin(nodes.size());
       std::vector<std::array<dealii::types::global_dof_index, 3>> triplets(nodes.size());
-      std::vector<unsigned int>               left, interior, right;
-      std::vector<double>                     theta(nodes.size());
+      std::vector<unsigned int>                                   left, interior, right;
+      std::vector<double>                                         theta(nodes.size());
       for (unsigned int a = 0; a < nodes.size(); ++a)
         {
           const auto &x = nodes[a].position;
@@ -151,8 +152,9 @@ namespace greentread
             {
               const auto &x = nodes[a].position;
               throw InputError("the periodic faces of the cell do not match: the node at "
-                               "(radius, z) = (" + format_number(std::hypot(x[0], x[1])) +
-                               ", " + format_number(x[2]) + ") m on the face theta = 2 pi / N "
+                               "(radius, z) = (" +
+                               format_number(std::hypot(x[0], x[1])) + ", " + format_number(x[2]) +
+                               ") m on the face theta = 2 pi / N "
                                "has no partner on the face theta = 0 (tolerance " +
                                format_short(length_tolerance) + " m)");
             }
@@ -162,16 +164,16 @@ namespace greentread
           right_of[found->second] = a;
         }
       if (left.size() != right.size())
-        throw InputError("the periodic faces of the cell do not match: " +
-                         std::to_string(left.size()) + " nodes at theta = 0 against " +
-                         std::to_string(right.size()) + " at theta = 2 pi / N");
+        throw InputError(
+          "the periodic faces of the cell do not match: " + std::to_string(left.size()) +
+          " nodes at theta = 0 against " + std::to_string(right.size()) + " at theta = 2 pi / N");
 
       // The new order: L, I, R, each node's r, theta, z; clamped DoFs out.
       PeriodicCell cell;
       cell.angle   = angle;
       cell.n_cells = n_cells;
       std::vector<int> new_index(n, -1);
-      int              next = 0;
+      int              next  = 0;
       const auto       place = [&](const unsigned int a) {
         bool held = true;
         for (unsigned int c = 0; c < 3; ++c)
@@ -226,7 +228,7 @@ namespace greentread
         cell.stiffness += rotate(model.geometric_stiffness());
       cell.damping      = rotate(model.damping());
       cell.mass_damping = rotate(model.mass_damping());
-      cell.mass    = rotate(model.mass());
+      cell.mass         = rotate(model.mass());
       return cell;
     }
 
@@ -268,10 +270,10 @@ namespace greentread
                 }
             }
           if (partner < 0)
-            throw NumericalError("move_tread_mass_inward: the tread-surface node at (radius, z) = (" +
-                                 format_number(cell.dofs[i].radius) + ", " +
-                                 format_number(cell.dofs[i].axial) +
-                                 ") m shares no element with a node off the surface");
+            throw NumericalError(
+              "move_tread_mass_inward: the tread-surface node at (radius, z) = (" +
+              format_number(cell.dofs[i].radius) + ", " + format_number(cell.dofs[i].axial) +
+              ") m shares no element with a node off the surface");
           map.emplace_back(i, partner, 1.);
         }
       SparseReal T(n, n);

@@ -13,7 +13,9 @@ namespace greentread
     {
       /// Factorise @p A, or say which matrix could not be.
       void
-      factorise(Eigen::UmfPackLU<periodic::SparseReal> &lu, const periodic::SparseReal &A, const std::string &what)
+      factorise(Eigen::UmfPackLU<periodic::SparseReal> &lu,
+                const periodic::SparseReal             &A,
+                const std::string                      &what)
       {
         // No iterative refinement: the set-up's solves are checked against
         // the backward-error bound instead, and refinement tripled a step's cost.
@@ -21,23 +23,29 @@ namespace greentread
         const auto lock                     = base::lock_serial_blas();
         lu.compute(A);
         if (lu.info() != Eigen::Success)
-          throw NumericalError("Newmark reference: UMFPACK could not factorise " + what + " of the "
-                               "full ring (" + std::to_string(A.rows()) + " unknowns, UMFPACK "
-                               "status " + std::to_string(lu.umfpackFactorizeReturncode()) + ")");
+          throw NumericalError("Newmark reference: UMFPACK could not factorise " + what +
+                               " of the "
+                               "full ring (" +
+                               std::to_string(A.rows()) +
+                               " unknowns, UMFPACK "
+                               "status " +
+                               std::to_string(lu.umfpackFactorizeReturncode()) + ")");
       }
 
       /// Solve A X = B and check the normwise backward error, as the
       /// Green's solvers do.
       Eigen::MatrixXd
-      checked_solve(const Eigen::UmfPackLU<periodic::SparseReal> &lu, const periodic::SparseReal &A,
-                    const Eigen::MatrixXd &B, const std::string &what)
+      checked_solve(const Eigen::UmfPackLU<periodic::SparseReal> &lu,
+                    const periodic::SparseReal                   &A,
+                    const Eigen::MatrixXd                        &B,
+                    const std::string                            &what)
       {
         Eigen::MatrixXd X;
         {
           const auto lock = base::lock_serial_blas();
           X               = lu.solve(B);
         }
-        double                norm_a = 0.;
+        double norm_a = 0.;
         for (int c = 0; c < A.outerSize(); ++c)
           norm_a = std::max(norm_a, A.col(c).cwiseAbs().sum());
         for (Eigen::Index j = 0; j < B.cols(); ++j)
@@ -55,16 +63,18 @@ namespace greentread
 
 
 
-    NewmarkRing::NewmarkRing(const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch, const double dt_)
-      : convolution::PatchConvolution(patch.points.size(), dt_)
-      , ring{cell.n_face, cell.n_interior, cell.n_cells, cell.n_cells}
+    NewmarkRing::NewmarkRing(const periodic::PeriodicCell &cell,
+                             const periodic::ContactPatch &patch,
+                             const double                  dt_)
+        : convolution::PatchConvolution(patch.points.size(), dt_)
+        , ring{cell.n_face, cell.n_interior, cell.n_cells, cell.n_cells}
     {
       if (!(dt > 0.) || !std::isfinite(dt))
         throw NumericalError("Newmark reference: the time step " + format_short(dt) +
                              " s is not allowed; allowed: a finite time step > 0");
-      K = ring.assemble(cell.stiffness);
-      C = ring.assemble(cell.damping);
-      M = ring.assemble(cell.mass);
+      K                       = ring.assemble(cell.stiffness);
+      C                       = ring.assemble(cell.damping);
+      M                       = ring.assemble(cell.mass);
       const Eigen::MatrixXd B = ring.loads(patch);
       loads                   = B.sparseView();
       loads_t                 = loads.transpose();
@@ -96,13 +106,13 @@ namespace greentread
     void
     NewmarkRing::history(Eigen::VectorXd &uh, Eigen::VectorXd &vh)
     {
-      rhs            = M * ((4. / (dt * dt)) * u + (4. / dt) * v + a) + C * ((2. / dt) * u + v);
+      rhs = M * ((4. / (dt * dt)) * u + (4. / dt) * v + a) + C * ((2. / dt) * u + v);
       {
         const auto lock = base::lock_serial_blas();
         u_free          = effective.solve(rhs);
       }
-      have_history   = true;
-      uh             = loads_t * u_free;
+      have_history = true;
+      uh           = loads_t * u_free;
       // v_{n+1} = 2 (u_{n+1} - u_n) / dt - v_n with no force at the end.
       vh = loads_t * ((2. / dt) * (u_free - u) - v);
     }
@@ -118,8 +128,7 @@ namespace greentread
           history(uh, vh);
         }
       const Eigen::VectorXd u_next = u_free + response * load.component[2];
-      const Eigen::VectorXd a_next =
-        (4. / (dt * dt)) * (u_next - u) - (4. / dt) * v - a;
+      const Eigen::VectorXd a_next = (4. / (dt * dt)) * (u_next - u) - (4. / dt) * v - a;
       v += 0.5 * dt * (a + a_next);
       a            = a_next;
       u            = u_next;

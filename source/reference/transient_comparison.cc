@@ -1,17 +1,17 @@
 #include <greentread/analysis/third_octave.h>
-#include <greentread/reference/transient_comparison.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/progress.h>
 #include <greentread/contact/rolling.h>
+#include <greentread/fe/inflation.h>
+#include <greentread/fe/material.h>
 #include <greentread/modal/identification.h>
-#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/periodic/green_functions.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/reference/newmark_ring.h>
+#include <greentread/reference/transient_comparison.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/ring_modes.h>
-#include <greentread/fe/inflation.h>
-#include <greentread/fe/material.h>
 
 #include <algorithm>
 #include <chrono>
@@ -73,8 +73,8 @@ namespace greentread
           }
         if (low == 0. || high < low)
           return NAN;
-        const auto sa = analysis::third_octave_spectrum(a, dt, 1., low, high);
-        const auto sb = analysis::third_octave_spectrum(b, dt, 1., low, high);
+        const auto sa    = analysis::third_octave_spectrum(a, dt, 1., low, high);
+        const auto sb    = analysis::third_octave_spectrum(b, dt, 1., low, high);
         double     worst = 0.;
         for (std::size_t k = 0; k < sa.level.size(); ++k)
           worst = std::max(worst, std::abs(sa.level[k] - sb.level[k]));
@@ -89,7 +89,7 @@ namespace greentread
     {
       if (run.force.size() != reference.force.size())
         throw InputError("compare: runs of " + std::to_string(run.force.size()) + " and " +
-                            std::to_string(reference.force.size()) + " steps");
+                         std::to_string(reference.force.size()) + " steps");
       TransientDifference d;
       d.force       = relative_difference(run.force, reference.force);
       d.force_rms   = rms_difference(run.force, reference.force);
@@ -102,7 +102,7 @@ namespace greentread
 
 
     TransientCase::TransientCase(const TransientCaseSetup &setup_)
-      : setup(setup_)
+        : setup(setup_)
     {
       geometry::GeometryParameters geometry;
       geometry.geo_file  = setup.geo_file;
@@ -114,8 +114,8 @@ namespace greentread
       if (setup.proportional_damping)
         {
           materials.tread_loss = materials.belt_loss = materials.sidewall_loss =
-            materials.bead_loss = setup.loss_factor;
-          inflation.pressure = 0.;
+            materials.bead_loss                      = setup.loss_factor;
+          inflation.pressure                         = 0.;
         }
       tyre = std::make_unique<periodic::InflatedTyre>(geometry, materials, inflation, setup.patch);
       const auto &patch = tyre->patch;
@@ -124,8 +124,8 @@ namespace greentread
       const unsigned int       n_lines =
         static_cast<unsigned int>(std::round(setup.max_frequency / setup.frequency_step)) + 1;
       green = periodic::compute_green_functions(tyre->periodic_cell, patch, periodic::Method::bloch,
-                                                setup.frequency_step, n_lines, MPI_COMM_SELF,
-                                                false, report);
+                                                setup.frequency_step, n_lines, MPI_COMM_SELF, false,
+                                                report);
       G0    = synthesis::static_line(green);
       for (const auto &p : patch.points)
         points.push_back({{p.x, p.y, p.radius}});
@@ -134,10 +134,10 @@ namespace greentread
       area   = patch.dx * patch.dy;
 
       road::RoadTextureParameters parameters;
-      parameters.sampling   = setup.sampling;
+      parameters.sampling            = setup.sampling;
       parameters.sinusoid.amplitude  = setup.sinusoid_amplitude;
       parameters.sinusoid.wavelength = setup.sinusoid_wavelength;
-      spacing               = parameters.spacing;
+      spacing                        = parameters.spacing;
       double y_min = 0., y_max = 0.;
       for (const auto &p : points)
         {
@@ -175,12 +175,13 @@ namespace greentread
     TransientCase::describe() const
     {
       const double pressure = setup.proportional_damping ? 0. : fe::InflationParameters().pressure;
-      return tyre->describe(pressure) + "  full ring: " + std::to_string(ring_dofs) + " unknowns; its static compliance B^T K^-1 B equals the "
-             "Green's functions' 0 Hz line to " + format_printf("%.2g", static_difference) +
+      return tyre->describe(pressure) + "  full ring: " + std::to_string(ring_dofs) +
+             " unknowns; its static compliance B^T K^-1 B equals the "
+             "Green's functions' 0 Hz line to " +
+             format_printf("%.2g", static_difference) +
              "\n  Green's functions: " + std::to_string(green.n_lines) + " lines every " +
              format_number(setup.frequency_step) + " Hz (Bloch); static load " +
-             format_number(setup.static_load) + " N at " + format_number(setup.speed_kmh) +
-             " km/h";
+             format_number(setup.static_load) + " N at " + format_number(setup.speed_kmh) + " km/h";
     }
 
 
@@ -205,12 +206,13 @@ namespace greentread
     PathModel
     TransientCase::lsce_model() const
     {
-      const auto                       start = std::chrono::steady_clock::now();
-      modal::IdentificationParameters  identification;
+      const auto                      start = std::chrono::steady_clock::now();
+      modal::IdentificationParameters identification;
       identification.max_modes = setup.lsce_modes;
       PathModel path;
-      path.name    = "LSCE patch model";
-      path.model   = modal::fit_patch_model(green, identification, modal::PatchModelParameters(), false);
+      path.name = "LSCE patch model";
+      path.model =
+        modal::fit_patch_model(green, identification, modal::PatchModelParameters(), false);
       path.seconds = base::seconds_since(start);
       return path;
     }
@@ -221,12 +223,12 @@ namespace greentread
     TransientCase::mode_model(const double cutoff_hz) const
     {
       const auto            start = std::chrono::steady_clock::now();
-      synthesis::ModeSearch  search;
+      synthesis::ModeSearch search;
       search.cutoff = 2. * M_PI * cutoff_hz;
       const synthesis::RingModes modes =
         synthesis::ring_modes(tyre->periodic_cell, tyre->patch, search, MPI_COMM_SELF, false);
-      const synthesis::ModeSynthesis synthesis =
-        synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green);
+      const synthesis::ModeSynthesis synthesis = synthesis::synthesise(
+        modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag, green);
       PathModel path;
       path.name    = "modes to " + format_number(cutoff_hz / 1000.) + " kHz";
       path.model   = synthesis::to_patch_model(synthesis, Eigen::MatrixXd(), cutoff_hz);
@@ -248,8 +250,9 @@ namespace greentread
 
 
     TransientRun
-    TransientCase::run(convolution::PatchConvolution &convolution, const std::string &name,
-                       const double dt) const
+    TransientCase::run(convolution::PatchConvolution &convolution,
+                       const std::string             &name,
+                       const double                   dt) const
     {
       const road::PatchRoad          &road    = road_named(name);
       const double                    run_in  = setup.run_in;
@@ -265,10 +268,10 @@ namespace greentread
         z *= w;
       };
       contact::RollingSetup rolling;
-      rolling.speed       = setup.speed_kmh / 3.6;
-      rolling.time_step   = dt;
-      rolling.n_steps     = steps(dt);
-      rolling.static_load = setup.static_load;
+      rolling.speed            = setup.speed_kmh / 3.6;
+      rolling.time_step        = dt;
+      rolling.n_steps          = steps(dt);
+      rolling.static_load      = setup.static_load;
       const auto start_contact = contact::start_contact(G0, tread, heights, rolling);
 
       TransientRun result;
@@ -278,9 +281,10 @@ namespace greentread
         result.force.push_back(s.force.sum());
         result.stress.push_back(s.force[centre] / area);
       };
-      const auto start    = std::chrono::steady_clock::now();
-      const auto summary  = contact::roll_patch(convolution, tread, heights, start_contact, rolling, observe);
-      result.seconds      = base::seconds_since(start);
+      const auto start = std::chrono::steady_clock::now();
+      const auto summary =
+        contact::roll_patch(convolution, tread, heights, start_contact, rolling, observe);
+      result.seconds              = base::seconds_since(start);
       result.step_compliance      = convolution.influence().u[2](centre, centre);
       result.failed_steps         = summary.failed_steps;
       result.static_contacts      = start_contact.n_contact;
@@ -293,14 +297,15 @@ namespace greentread
 
     std::vector<double>
     TransientCase::driven_difference(const std::vector<const PathModel *> &models,
-                                     const double dt, const double pulse) const
+                                     const double                          dt,
+                                     const double                          pulse) const
     {
-      const unsigned int n_steps = static_cast<unsigned int>(std::lround(3. * pulse / dt));
-      const Eigen::VectorXd Q    = Eigen::VectorXd::LinSpaced(points.size(), 10., 60.);
-      const auto            drive = [&](convolution::PatchConvolution &c) {
+      const unsigned int    n_steps = static_cast<unsigned int>(std::lround(3. * pulse / dt));
+      const Eigen::VectorXd Q       = Eigen::VectorXd::LinSpaced(points.size(), 10., 60.);
+      const auto            drive   = [&](convolution::PatchConvolution &c) {
         std::vector<Eigen::VectorXd> u;
         Eigen::VectorXd              uh, vh;
-        convolution::PatchLoad           load(points.size());
+        convolution::PatchLoad       load(points.size());
         for (unsigned int k = 0; k < n_steps; ++k)
           {
             const double t = (k + 1) * dt;
@@ -316,8 +321,8 @@ namespace greentread
         return u;
       };
       reference::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
-      const auto            reference = drive(ring);
-      double                peak      = 0.;
+      const auto             reference = drive(ring);
+      double                 peak      = 0.;
       for (const auto &u : reference)
         peak = std::max(peak, u.cwiseAbs().maxCoeff());
       std::vector<double> differences;
@@ -339,10 +344,10 @@ namespace greentread
     TransientRun
     TransientCase::reference(const std::string &road, const double dt) const
     {
-      const auto            start = std::chrono::steady_clock::now();
+      const auto             start = std::chrono::steady_clock::now();
       reference::NewmarkRing ring(tyre->periodic_cell, tyre->patch, dt);
-      const double          setup_seconds = base::seconds_since(start);
-      TransientRun          result        = run(ring, road, dt);
+      const double           setup_seconds = base::seconds_since(start);
+      TransientRun           result        = run(ring, road, dt);
       result.seconds += setup_seconds;
       return result;
     }
@@ -350,7 +355,9 @@ namespace greentread
 
 
     TransientRun
-    TransientCase::fast(const std::string &road, const double dt, const PathModel &model,
+    TransientCase::fast(const std::string        &road,
+                        const double              dt,
+                        const PathModel          &model,
                         const convolution::Method method) const
     {
       const auto start = std::chrono::steady_clock::now();

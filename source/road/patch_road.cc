@@ -10,11 +10,11 @@ namespace greentread
 {
   namespace road
   {
-    PatchRoad::PatchRoad(const Texture                     &texture,
+    PatchRoad::PatchRoad(const Texture                            &texture,
                          const std::vector<std::array<double, 3>> &points,
                          const RoadSampling                        sampling,
                          const std::string                        &name)
-      : spacing(texture.dx)
+        : spacing(texture.dx)
     {
       // The lattice of points: distinct x and y.
       std::vector<double> xs, ys;
@@ -31,8 +31,8 @@ namespace greentread
         }
       std::sort(xs.begin(), xs.end());
       std::sort(ys.begin(), ys.end());
-      dx_points = xs.size() > 1 ? (xs.back() - xs.front()) / (xs.size() - 1) : texture.dx;
-      dy_points = ys.size() > 1 ? (ys.back() - ys.front()) / (ys.size() - 1) : texture.dy;
+      dx_points           = xs.size() > 1 ? (xs.back() - xs.front()) / (xs.size() - 1) : texture.dx;
+      dy_points           = ys.size() > 1 ? (ys.back() - ys.front()) / (ys.size() - 1) : texture.dy;
       const double width  = ys.back() - ys.front() + dy_points;
       const double needed = width + 2. * texture.dy;
       if (texture.ny * texture.dy < needed && texture.ny > 1)
@@ -70,9 +70,11 @@ namespace greentread
           else
             {
               // Highest point across the tributary strip...
-              const int j0 = std::max(0, int(std::ceil((y - 0.5 * dy_points + y_centre) / texture.dy)));
-              const int j1 = std::min(int(texture.ny) - 1,
-                                      int(std::floor((y + 0.5 * dy_points + y_centre) / texture.dy)));
+              const int j0 =
+                std::max(0, int(std::ceil((y - 0.5 * dy_points + y_centre) / texture.dy)));
+              const int j1 =
+                std::min(int(texture.ny) - 1,
+                         int(std::floor((y + 0.5 * dy_points + y_centre) / texture.dy)));
               for (int j = j0; j <= j1; ++j)
                 for (unsigned int i = 0; i < texture.nx; ++i)
                   profile[i] = std::max(profile[i], texture(i, j));

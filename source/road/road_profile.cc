@@ -7,10 +7,11 @@ namespace greentread
   namespace road
   {
     Sinusoid::Sinusoid(const double amplitude_, const double wavelength_)
-      : a0(amplitude_)
-      , wavelength(wavelength_)
-      , k(2. * M_PI / wavelength_)
-    {}
+        : a0(amplitude_)
+        , wavelength(wavelength_)
+        , k(2. * M_PI / wavelength_)
+    {
+    }
 
 
 

@@ -70,12 +70,12 @@ namespace greentread
             throw InputError("parameter 'Road texture/Roads': '" + r +
                              "' is neither road-A, road-B, sinusoid, flat nor an existing "
                              "texture file");
-        seed       = prm.get_integer("Seed");
-        length     = prm.get_double("Length");
-        spacing    = prm.get_double("Spacing");
+        seed         = prm.get_integer("Seed");
+        length       = prm.get_double("Length");
+        spacing      = prm.get_double("Spacing");
         height_scale = prm.get_double("Height scale");
-        sampling   = prm.get("Between points") == "point" ? RoadSampling::point :
-                                                             RoadSampling::envelope;
+        sampling =
+          prm.get("Between points") == "point" ? RoadSampling::point : RoadSampling::envelope;
       }
       prm.leave_subsection();
       sinusoid.parse_parameters(prm);
@@ -84,8 +84,9 @@ namespace greentread
 
 
     Texture
-    RoadTextureParameters::make(const std::string &name, const double width,
-                                const double at_least) const
+    RoadTextureParameters::make(const std::string &name,
+                                const double       width,
+                                const double       at_least) const
     {
       Texture t = make_unscaled(name, width, std::max(length, at_least));
       for (auto &z : t.z)
@@ -129,8 +130,8 @@ namespace greentread
         t.z.assign(std::size_t(nx) * ny, 0.);
         for (unsigned int k = 0, i0 = 0; i0 + overlap < nx || k == 0; ++k, i0 += piece_nx - overlap)
           {
-            const Texture piece = synthetic_texture(
-              bands, levels, spacing, piece_nx, ny, seed + k * std::uint64_t(0x9E3779B97F4A7C15));
+            const Texture piece = synthetic_texture(bands, levels, spacing, piece_nx, ny,
+                                                    seed + k * std::uint64_t(0x9E3779B97F4A7C15));
             for (unsigned int j = 0; j < ny; ++j)
               for (unsigned int i = 0; i < piece_nx && i0 + i < nx; ++i)
                 {
@@ -138,7 +139,7 @@ namespace greentread
                   if (k > 0 && i < overlap)
                     {
                       const double phi = 0.5 * M_PI * (i + 0.5) / overlap;
-                      z = std::cos(phi) * z + std::sin(phi) * piece(i, j);
+                      z                = std::cos(phi) * z + std::sin(phi) * piece(i, j);
                     }
                   else
                     z = piece(i, j);
@@ -151,8 +152,9 @@ namespace greentread
 
 
     Texture
-    RoadTextureParameters::make_unscaled(const std::string &name, const double width,
-                                         const double road_length) const
+    RoadTextureParameters::make_unscaled(const std::string &name,
+                                         const double       width,
+                                         const double       road_length) const
     {
       if (!is_built_in(name))
         return read_texture(name);
@@ -160,12 +162,12 @@ namespace greentread
       t.dx = t.dy = spacing;
       // Lengths with small factors keep the FFT fast (1.4 m is 3646 = 2 x
       // 1823 samples, 3750 once rounded up).
-      t.nx        = unsigned(convolution::fast_fft_length(std::size_t(std::ceil(road_length / spacing))));
-      t.ny        = static_cast<unsigned int>(std::ceil(width / spacing)) + 2;
+      t.nx = unsigned(convolution::fast_fft_length(std::size_t(std::ceil(road_length / spacing))));
+      t.ny = static_cast<unsigned int>(std::ceil(width / spacing)) + 2;
       if (name == "road-A" || name == "road-B")
         {
           std::vector<WavelengthBand> bands;
-          std::vector<double>               levels;
+          std::vector<double>         levels;
           texture_preset(name, bands, levels);
           t.ny += t.ny % 2;
           const unsigned int piece_nx =

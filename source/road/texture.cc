@@ -493,7 +493,9 @@ namespace greentread
             across[j] =
               std::pow(10., target[c] / 20.) / std::sqrt(1. / bands[c].lower - 1. / bands[c].upper);
         }
-      if (std::all_of(across.begin(), across.end(), [](const double a) { return a == 0.; }))
+      if (std::all_of(across.begin(), across.end(), [](const double a) {
+            return a == 0.;
+          }))
         throw InputError("synthetic texture: the grid is " + format_short(Ly) +
                          " m wide across y, too narrow for any band from " +
                          format_number(1e3 * bands.front().nominal) + " to " +

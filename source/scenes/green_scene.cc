@@ -1,7 +1,7 @@
+#include <greentread/analysis/green_output.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
-#include <greentread/analysis/green_output.h>
 #include <greentread/periodic/deflection_shape.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/scenes/green_scene.h>
@@ -44,7 +44,8 @@ namespace greentread
           directory_name = base::prepare_output_directory(global.output_directory).string();
       });
       const fs::path directory = dealii::Utilities::MPI::broadcast(comm, directory_name, 0);
-      const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
+      const auto     record =
+        base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
 
       // Every rank builds the tyre; a rank that fails (a file it cannot
       // read) must not leave the others waiting in the frequency loop.
@@ -61,8 +62,9 @@ namespace greentread
       out << "GreenTread: scene 'tyre-green', Green's functions of the inflated ring at the "
              "contact points (Meftah et al. 2013, Section 4.2)\n"
           << tyre.describe(inflation.pressure) << "  frequencies 0 to "
-          << format_number(green.max_frequency) << " Hz every " << format_number(green.frequency_step)
-          << " Hz (" << green.n_lines() << " lines), method '" << green.method << "'\n";
+          << format_number(green.max_frequency) << " Hz every "
+          << format_number(green.frequency_step) << " Hz (" << green.n_lines()
+          << " lines), method '" << green.method << "'\n";
 
       const fs::path h5     = directory / "green_functions.h5";
       const auto     result = periodic::run_green_stage(tyre, green, key, h5, record, global.reuse,
@@ -76,9 +78,8 @@ namespace greentread
       if (with_deflection && rank == 0)
         {
           const auto &q = tyre.patch.points[centre];
-          const auto  u = periodic::ring_response(tyre.periodic_cell,
-                                                  2. * M_PI * green.deflection_frequency, q.load,
-                                                  deflection);
+          const auto  u = periodic::ring_response(
+             tyre.periodic_cell, 2. * M_PI * green.deflection_frequency, q.load, deflection);
           periodic::write_ring_deflection(directory / "ring_deflection.vtu", tyre.cell->cell(),
                                           tyre.periodic_cell, u);
         }
@@ -104,8 +105,9 @@ namespace greentread
           << "\n";
       if (global.print_timings)
         out << "Total run time "
-            << format_printf("%.4g", std::chrono::duration<double>(
-                                       std::chrono::steady_clock::now() - start).count())
+            << format_printf(
+                 "%.4g",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
             << " s\n";
     }
   } // namespace scenes

@@ -1,6 +1,6 @@
+#include <greentread/analysis/identification_output.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
-#include <greentread/analysis/identification_output.h>
 #include <greentread/scenes/identify_scene.h>
 
 #include <algorithm>
@@ -14,16 +14,16 @@ namespace greentread
   namespace scenes
   {
     IdentifyScene::IdentifyScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
-      : prm(prm_)
-      , global(global_)
+        : prm(prm_)
+        , global(global_)
     {
       identification.parse_parameters(prm);
       const bool csv = !identification.frf_file.empty(), h5 = !identification.green_file.empty();
       if (csv == h5)
         throw InputError(std::string("scene 'identify' needs exactly one input: ") +
                          (csv ? "both 'Identification/FRF file' and 'Identification/Green's "
-                                "function file' are set"
-                              : "set 'Identification/FRF file' (one FRF, CSV 'f,re,im') or "
+                                "function file' are set" :
+                                "set 'Identification/FRF file' (one FRF, CSV 'f,re,im') or "
                                 "'Identification/Green's function file' (HDF5)"));
     }
 
@@ -34,8 +34,8 @@ namespace greentread
     {
       namespace fs = std::filesystem;
       // Read the input before anything is written.
-      base::FrequencyResponse                           single;
-      base::FrequencyResponseMatrix                     green;
+      base::FrequencyResponse                            single;
+      base::FrequencyResponseMatrix                      green;
       std::vector<std::pair<unsigned int, unsigned int>> pairs;
       std::string                                        source;
       if (!identification.frf_file.empty())
@@ -46,9 +46,9 @@ namespace greentread
         }
       else
         {
-          green  = base::read_green_hdf5(identification.green_file);
-          pairs  = base::parse_point_pairs(identification.pairs, green.n_points(),
-                                            "Identification/Pairs");
+          green = base::read_green_hdf5(identification.green_file);
+          pairs =
+            base::parse_point_pairs(identification.pairs, green.n_points(), "Identification/Pairs");
           source = identification.green_file;
         }
       const double df      = single.values.empty() ? green.df : single.df;
@@ -63,32 +63,31 @@ namespace greentread
 
       std::cout << "GreenTread: scene 'identify', LSCE modal identification (Appendix A) of "
                 << pairs.size() << " FRF" << (pairs.size() > 1 ? "s" : "") << " from "
-                << std::filesystem::path(source).filename().string()
-                << "\n  lines: " << n_lines << " from 0 to " << format_number(df * (n_lines - 1))
-                << " Hz (df = " << format_number(df) << " Hz); at most "
-                << identification.max_modes << " modes; residue model "
-                << modal::to_string(identification.residue_model) << "; bands "
+                << std::filesystem::path(source).filename().string() << "\n  lines: " << n_lines
+                << " from 0 to " << format_number(df * (n_lines - 1))
+                << " Hz (df = " << format_number(df) << " Hz); at most " << identification.max_modes
+                << " modes; residue model " << modal::to_string(identification.residue_model)
+                << "; bands "
                 << (identification.bands == 0 ? std::string("auto") :
                                                 std::to_string(identification.bands))
                 << "\n";
 
-      const auto  start  = std::chrono::steady_clock::now();
-      std::size_t reused = 0;
-      const auto  results =
-        single.values.empty() ? modal::identify_pairs(green, pairs, identification, reused) :
-                                modal::identify_all(get, 1, identification);
+      const auto   start   = std::chrono::steady_clock::now();
+      std::size_t  reused  = 0;
+      const auto   results = single.values.empty() ?
+                               modal::identify_pairs(green, pairs, identification, reused) :
+                               modal::identify_all(get, 1, identification);
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-      analysis::write_identifications(directory, pairs, results,
-                                      identification.lower_residual ||
-                                        identification.upper_residual,
-                                      record);
+      analysis::write_identifications(
+        directory, pairs, results, identification.lower_residual || identification.upper_residual,
+        record);
       const analysis::IdentificationStatistics statistics(results);
       // The worst fit, as in Figure A.10.
-      const bool plotted = analysis::write_worst_fit(directory, get(statistics.worst),
-                                                     results[statistics.worst],
-                                                     pairs[statistics.worst], record);
+      const bool plotted =
+        analysis::write_worst_fit(directory, get(statistics.worst), results[statistics.worst],
+                                  pairs[statistics.worst], record);
       std::cout << statistics.describe(pairs, identification);
       if (reused > 0)
         std::cout << "Reciprocity: " << reused << " FRFs g_ij equal to g_ji were identified once "

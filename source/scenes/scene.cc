@@ -2,8 +2,8 @@
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
-#include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/contact_grid.h>
+#include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/rolling_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
@@ -16,8 +16,8 @@
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/scene_input.h>
 #include <greentread/scenes/sdof_scene.h>
-#include <greentread/scenes/tyre_road_contact_scene.h>
 #include <greentread/scenes/tyre_cell_scene.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
 #include <greentread/sdof/oscillator.h>
 
 #include <algorithm>
@@ -54,9 +54,12 @@ namespace greentread
     subsections_read(const std::string &scene)
     {
       if (scene == "sdof")
-        return {"Oscillator",         "Road",
-                "Contact",            "Time stepping",
-                "Convolution/Method", "Convolution/Truncation threshold",
+        return {"Oscillator",
+                "Road",
+                "Contact",
+                "Time stepping",
+                "Convolution/Method",
+                "Convolution/Truncation threshold",
                 "Identification"};
       if (scene == "identify")
         return {"Identification"};
@@ -64,10 +67,21 @@ namespace greentread
         return {"Geometry", "Materials", "Inflation"};
       if (scene == "tyre-green")
         return {"Geometry", "Materials", "Inflation", "Green's functions"};
-      return {"Geometry",       "Materials",   "Inflation",    "Green's functions",
-              "Identification", "Patch model", "Road texture", "Road/Sinusoid", "Rolling",
-              "Contact grid", "Time stepping/Time step", "Convolution/Method",
-              "Convolution/Shape precision", "Spectra", "Error bars"};
+      return {"Geometry",
+              "Materials",
+              "Inflation",
+              "Green's functions",
+              "Identification",
+              "Patch model",
+              "Road texture",
+              "Road/Sinusoid",
+              "Rolling",
+              "Contact grid",
+              "Time stepping/Time step",
+              "Convolution/Method",
+              "Convolution/Shape precision",
+              "Spectra",
+              "Error bars"};
     }
 
 
@@ -105,11 +119,10 @@ namespace greentread
               list += (list.empty() ? "" : ", ") + r;
               reads_part = reads_part || r.rfind(section + "/", 0) == 0;
             }
-          throw InputError("parameter '" + entry.path + "' = " + entry.value +
-                           " is set, but scene '" + scene + "' does not read " +
-                           (reads_part ? "it" : "subsection '" + section + "'") +
-                           "; allowed: the subsections and entries scene '" + scene +
-                           "' reads: " + list);
+          throw InputError(
+            "parameter '" + entry.path + "' = " + entry.value + " is set, but scene '" + scene +
+            "' does not read " + (reads_part ? "it" : "subsection '" + section + "'") +
+            "; allowed: the subsections and entries scene '" + scene + "' reads: " + list);
         }
     }
 

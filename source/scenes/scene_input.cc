@@ -68,13 +68,17 @@ namespace greentread
       std::string
       get(dealii::ParameterHandler &prm, const std::string &path)
       {
-        return at_path(prm, path, [&](const std::string &name) { return prm.get(name); });
+        return at_path(prm, path, [&](const std::string &name) {
+          return prm.get(name);
+        });
       }
 
       void
       set(dealii::ParameterHandler &prm, const std::string &path, const std::string &value)
       {
-        at_path(prm, path, [&](const std::string &name) { prm.set(name, value); });
+        at_path(prm, path, [&](const std::string &name) {
+          prm.set(name, value);
+        });
       }
 
       /// Each number of a comma-separated list times @p factor.
@@ -112,13 +116,11 @@ namespace greentread
     {
       for (const auto &r : renames)
         at_path(prm, r.old_path, [&](const std::string &name) {
-          prm.declare_entry(name, "", dealii::Patterns::Anything(),
-                            std::string("Deprecated: the old spelling of '") + r.new_path +
-                              "'" +
-                              (r.factor != 1. ? " in the old unit (times " +
-                                                  format_number(r.factor) + ")" :
-                                                "") +
-                              "; still read, with a warning, in this release.");
+          prm.declare_entry(
+            name, "", dealii::Patterns::Anything(),
+            std::string("Deprecated: the old spelling of '") + r.new_path + "'" +
+              (r.factor != 1. ? " in the old unit (times " + format_number(r.factor) + ")" : "") +
+              "; still read, with a warning, in this release.");
         });
     }
 
@@ -188,9 +190,8 @@ namespace greentread
         folders.push_back(fs::absolute(scene_file).parent_path());
       folders.push_back(fs::current_path());
 
-      const auto resolve = [&](const std::string &path,
-                               const std::string &value,
-                               const bool         shipped_default) -> std::string {
+      const auto resolve = [&](const std::string &path, const std::string &value,
+                               const bool shipped_default) -> std::string {
         if (value.empty() || fs::path(value).is_absolute())
           return value;
         std::vector<fs::path> where = folders;
@@ -219,9 +220,8 @@ namespace greentread
       // The shipped tyre, which the built-in scene names relative to the
       // checkout: found from any working directory.
       const std::string shipped_geometry = "geometry/tyre_165_65_r13.geo";
-      for (const std::string path :
-           {"Geometry/Geometry file", "Identification/FRF file",
-            "Identification/Green's function file"})
+      for (const std::string path : {"Geometry/Geometry file", "Identification/FRF file",
+                                     "Identification/Green's function file"})
         if (reads(path))
           {
             const std::string value = get(prm, path);
@@ -232,9 +232,9 @@ namespace greentread
         {
           std::string roads;
           for (const auto &road : base::split_list(get(prm, "Road texture/Roads")))
-            roads += (roads.empty() ? "" : ", ") +
-                     (road::RoadTextureParameters::is_built_in(road) ? road :
-                                                resolve("Road texture/Roads", road, false));
+            roads += (roads.empty() ? "" : ", ") + (road::RoadTextureParameters::is_built_in(road) ?
+                                                      road :
+                                                      resolve("Road texture/Roads", road, false));
           set(prm, "Road texture/Roads", roads);
         }
     }

@@ -1,6 +1,6 @@
+#include <greentread/analysis/sdof_output.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
-#include <greentread/analysis/sdof_output.h>
 #include <greentread/scenes/sdof_scene.h>
 #include <greentread/sdof/exact_solution.h>
 #include <greentread/sdof/sdof_solver.h>
@@ -15,8 +15,8 @@ namespace greentread
   namespace scenes
   {
     SdofScene::SdofScene(dealii::ParameterHandler &prm_, const GlobalParameters &global_)
-      : prm(prm_)
-      , global(global_)
+        : prm(prm_)
+        , global(global_)
     {
       oscillator.parse_parameters(prm);
       road.parse_parameters(prm);
@@ -30,10 +30,10 @@ namespace greentread
     void
     SdofScene::run()
     {
-      namespace fs = std::filesystem;
-      const fs::path directory = base::prepare_output_directory(global.output_directory);
-      std::vector<std::string> stages = {"Scene",   "Output directory", "Oscillator", "Road",
-                                         "Contact", "Time stepping",    "Convolution"};
+      namespace fs                       = std::filesystem;
+      const fs::path           directory = base::prepare_output_directory(global.output_directory);
+      std::vector<std::string> stages    = {"Scene",   "Output directory", "Oscillator", "Road",
+                                            "Contact", "Time stepping",    "Convolution"};
       if (oscillator.identified_green)
         stages.push_back("Identification");
       const auto record = base::ParameterRecord::from(prm, "sdof", stages);
@@ -49,7 +49,8 @@ namespace greentread
                 << "  oscillator: M = " << format_number(osc.mass())
                 << " kg, K = " << format_number(osc.stiffness())
                 << " N/m, xi = " << format_number(osc.damping_ratio())
-                << ", f0 = " << format_printf("%.4g", osc.natural_frequency() / (2 * M_PI)) << " Hz\n"
+                << ", f0 = " << format_printf("%.4g", osc.natural_frequency() / (2 * M_PI))
+                << " Hz\n"
                 << "  road: A0 = " << format_number(road.amplitude)
                 << " m, lambda_r = " << format_number(road.wavelength)
                 << " m, V0 = " << format_number(oscillator.speed) << " m/s\n"
@@ -64,20 +65,21 @@ namespace greentread
           std::cout << "  Green's function: identified by LSCE from the oscillator's FRF, "
                     << identified->frf.values.size() << " lines to "
                     << format_number(identified->frf.f_max())
-                    << " Hz: N_m = " << identified->identification.n_modes << ", E = "
-                    << format_printf("%.3g", identified->identification.error) << ", pole error "
-                    << format_printf("%.3g", identified->pole_error) << "\n";
+                    << " Hz: N_m = " << identified->identification.n_modes
+                    << ", E = " << format_printf("%.3g", identified->identification.error)
+                    << ", pole error " << format_printf("%.3g", identified->pole_error) << "\n";
           base::write_frf_csv(directory / "frf.csv", identified->frf, record);
           analysis::write_modal_parameters(directory / "modal_parameters.csv",
                                            identified->identification.model, record);
         }
-      auto conv = sdof::make_convolution(osc, convolution, dt, n_steps,
+      auto              conv = sdof::make_convolution(osc, convolution, dt, n_steps,
                                          identified ? &identified->identification.model : nullptr);
-      const std::string size_name = convolution.method == convolution::Method::direct ? "N_g" : "N_m";
+      const std::string size_name =
+        convolution.method == convolution::Method::direct ? "N_g" : "N_m";
       std::cout << "  contact: " << contact.describe() << "; convolution: " << conv->name() << " ("
                 << size_name << " = " << conv->size() << ")\n";
 
-      const sdof::SdofRun run = sdof::solve(osc, track, *conv, contact);
+      const sdof::SdofRun run        = sdof::solve(osc, track, *conv, contact);
       double              round_trip = NAN;
       if (identified)
         {
@@ -89,7 +91,7 @@ namespace greentread
             round_trip = std::max(round_trip, std::abs(run.u[n] - reference.u[n]));
         }
 
-      const auto exact_start = std::chrono::steady_clock::now();
+      const auto                exact_start = std::chrono::steady_clock::now();
       const sdof::ExactSolution exact(osc, track, n_steps * dt);
       const sdof::SdofErrors    e = sdof::compare(run, exact, track);
       const double              exact_time =
@@ -105,21 +107,23 @@ namespace greentread
         prm.print_parameters(file.stream(), dealii::ParameterHandler::ShortPRM);
         file.commit();
       }
-      const bool plotted = analysis::plot_time_history(
-        directory,
-        contact::to_string(contact.law) + ", " + conv->name() + ", dt = " + format_number(dt) + " s",
-        e.peak_contact_force, record);
+      const bool plotted =
+        analysis::plot_time_history(directory,
+                                    contact::to_string(contact.law) + ", " + conv->name() +
+                                      ", dt = " + format_number(dt) + " s",
+                                    e.peak_contact_force, record);
 
       std::cout << analysis::describe_errors(e, exact, road.amplitude);
       if (identified)
-        std::cout << "  max |u - u(exact modal form)|  = " << format_printf("%.4g", 1e9 * round_trip)
+        std::cout << "  max |u - u(exact modal form)|  = "
+                  << format_printf("%.4g", 1e9 * round_trip)
                   << " nm (the round trip through LSCE)\n";
       if (run.branches)
         {
           std::cout << "  contact steps by branch:";
           for (unsigned int b = 1; b < run.branch_count.size(); ++b)
-            std::cout << ' ' << contact::to_string(static_cast<contact::KinematicBranch>(b))
-                      << ' ' << run.branch_count[b];
+            std::cout << ' ' << contact::to_string(static_cast<contact::KinematicBranch>(b)) << ' '
+                      << run.branch_count[b];
           std::cout << '\n';
         }
       if (global.print_timings)

@@ -11,25 +11,25 @@
 #include <greentread/contact/rolling.h>
 #include <greentread/modal/passivity.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
+#include <greentread/synthesis/mode_stage.h>
 #include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/mode_truncation.h>
-#include <greentread/synthesis/mode_stage.h>
-#include <greentread/scenes/tyre_road_contact_scene.h>
 
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
 #include <exception>
+#include <filesystem>
+#include <iostream>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
 #include <tuple>
-#include <chrono>
-#include <cmath>
-#include <filesystem>
-#include <iostream>
 
 namespace greentread
 {
@@ -68,8 +68,9 @@ namespace greentread
         std::unique_ptr<analysis::PatchLattice> lattice;
         Eigen::VectorXd                         tread;
 
-        CoarserGrid(const std::vector<std::array<double, 3>> &coarse_points,
-                    const contact::ContactGrid &fine, const contact::ElasticLayer &layer,
+        CoarserGrid(const std::vector<std::array<double, 3>>              &coarse_points,
+                    const contact::ContactGrid                            &fine,
+                    const contact::ElasticLayer                           &layer,
                     const std::vector<std::vector<analysis::EstimateRun>> &estimates)
         {
           bool wanted = false;
@@ -78,11 +79,11 @@ namespace greentread
               wanted = wanted || e.what == analysis::Discretisation::contact_grid;
           if (!wanted)
             return;
-          grid = std::make_unique<contact::ContactGrid>(coarse_points, fine.subdivisions / 2,
-                                                        layer, fine.matrix_free,
-                                                        fine.candidate_set);
-          lattice = std::make_unique<analysis::PatchLattice>(grid->points, "the coarser contact grid");
-          tread   = contact::tread_heights(grid->points);
+          grid = std::make_unique<contact::ContactGrid>(coarse_points, fine.subdivisions / 2, layer,
+                                                        fine.matrix_free, fine.candidate_set);
+          lattice =
+            std::make_unique<analysis::PatchLattice>(grid->points, "the coarser contact grid");
+          tread = contact::tread_heights(grid->points);
         }
       };
     } // namespace
@@ -90,9 +91,9 @@ namespace greentread
 
 
     TyreRoadContactScene::TyreRoadContactScene(dealii::ParameterHandler &prm_,
-                                       const GlobalParameters   &global_)
-      : prm(prm_)
-      , global(global_)
+                                               const GlobalParameters   &global_)
+        : prm(prm_)
+        , global(global_)
     {
       geometry.parse_parameters(prm);
       materials.parse_parameters(prm);
@@ -117,8 +118,9 @@ namespace greentread
                                                      green.patch.length},
             {"across", spectra.reporting_across, green.patch.width}})
         if (size > patch_size * (1. + 1e-9))
-          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) + "' = " +
-                           format_number(1e3 * size) + " mm; allowed: 0 (the Green's-function "
+          throw InputError("parameter 'Spectra/Reporting cell " + std::string(name) +
+                           "' = " + format_number(1e3 * size) +
+                           " mm; allowed: 0 (the Green's-function "
                            "rectangle) or up to the contact patch's " +
                            format_number(1e3 * patch_size) + " mm ('Green's functions/Patch " +
                            (std::string(name) == "along" ? "length" : "width") + "')");
@@ -130,7 +132,7 @@ namespace greentread
       for (const auto &name : roads.roads)
         if (!road::RoadTextureParameters::is_built_in(name) && texture_files.count(name) == 0)
           {
-            road::Texture t = road::read_texture(name);
+            road::Texture t            = road::read_texture(name);
             const double  needed_width = green.patch.width + 2. * t.dy;
             if (t.ny > 1 && t.ny * t.dy < needed_width)
               throw InputError("texture file '" + name + "' is " + format_short(t.ny * t.dy) +
@@ -162,13 +164,13 @@ namespace greentread
               const double dt = rolling.time_step > 0. ? rolling.time_step : spacing / V;
               spectrum_top_band(dt);
               if (rolling.distance / V < needed)
-                throw InputError("parameter 'Rolling/Distance' = " +
-                                 format_short(rolling.distance) + " m lasts " +
-                                 format_short(rolling.distance / V) + " s at " +
-                                 format_number(speed_kmh) +
-                                 " km/h; the 100 Hz band of the spectra needs a record of at "
-                                 "least " + format_short(needed) + " s; allowed: a distance >= " +
-                                 format_short(needed * V) + " m");
+                throw InputError(
+                  "parameter 'Rolling/Distance' = " + format_short(rolling.distance) + " m lasts " +
+                  format_short(rolling.distance / V) + " s at " + format_number(speed_kmh) +
+                  " km/h; the 100 Hz band of the spectra needs a record of at "
+                  "least " +
+                  format_short(needed) + " s; allowed: a distance >= " + format_short(needed * V) +
+                  " m");
             }
         }
     }
@@ -178,18 +180,20 @@ namespace greentread
     void
     TyreRoadContactScene::run()
     {
-      namespace fs     = std::filesystem;
-      const auto start = std::chrono::steady_clock::now();
+      namespace fs             = std::filesystem;
+      const auto     start     = std::chrono::steady_clock::now();
       const fs::path directory = base::prepare_output_directory(global.output_directory);
-      const auto     record    = base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
+      const auto     record =
+        base::ParameterRecord::from(prm, global.scene, recorded_sections(global.scene));
       std::cout << "GreenTread: scene 'tyre-road-contact', dynamic contact of the rolling tyre "
                    "on road textures (Meftah et al. 2013, Section 5)\n";
 
       // Stages 1-3: geometry, fe, periodic: the Green's functions (saved).
-      const std::string                    green_key = periodic::green_stage_key(prm, geometry.geo_file);
-      const fs::path                       h5        = directory / "green_functions.h5";
+      const std::string green_key = periodic::green_stage_key(prm, geometry.geo_file);
+      const fs::path    h5        = directory / "green_functions.h5";
       std::unique_ptr<periodic::InflatedTyre> tyre;
-      const base::FrequencyResponseMatrix G = green_stage(geometry, green, h5, green_key, record, tyre);
+      const base::FrequencyResponseMatrix     G =
+        green_stage(geometry, green, h5, green_key, record, tyre);
 
       // Stage 4: modal, the patch model (saved too).
       std::optional<CoarserModel> coarser_model;
@@ -212,27 +216,29 @@ namespace greentread
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "
-                  << format_printf("%.3f", 1e3 * grid.dy) << " mm ("
-                  << grid.subdivisions << " x " << grid.subdivisions
-                  << " per Green's-function rectangle, the tread as a "
+                  << format_printf("%.3f", 1e3 * grid.dy) << " mm (" << grid.subdivisions << " x "
+                  << grid.subdivisions << " per Green's-function rectangle, the tread as a "
                   << format_number(1e3 * geometry.tread_thickness) << " mm layer below it)\n";
       std::cout << "  the contact solved by "
-                << (!grid.matrix_free   ? "block principal pivoting" :
+                << (!grid.matrix_free  ? "block principal pivoting" :
                     grid.candidate_set ? "projected CG on the candidate points (matrix-free)" :
                                          "projected CG on the whole grid (matrix-free)")
                 << " ('Contact grid/Solver' = " << contact_grid.solver << ")\n";
       {
-        const double along  = spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;
-        const double across = spectra.reporting_across > 0. ? spectra.reporting_across : grid.coarse_dy;
+        const double along =
+          spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;
+        const double across =
+          spectra.reporting_across > 0. ? spectra.reporting_across : grid.coarse_dy;
         std::cout << "  the stress at the patch centre: the mean over a "
-                  << format_printf("%.3g", 1e3 * along) << " x " << format_printf("%.3g", 1e3 * across)
+                  << format_printf("%.3g", 1e3 * along) << " x "
+                  << format_printf("%.3g", 1e3 * across)
                   << " mm cell ('Spectra/Reporting cell along', 'across'), nulls at V / "
                   << format_printf("%.3g", 1e3 * along) << " mm\n";
       }
       const analysis::PatchLattice lattice(grid.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
       const Eigen::MatrixXd        G0    = synthesis::static_line(G);
-      const double static_mismatch =
+      const double                 static_mismatch =
         (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
       std::cout << "  the model's static compliance differs from the structure's by "
                 << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
@@ -248,7 +254,7 @@ namespace greentread
       // texture (6 MB per metre).
       struct RoadOfRuns
       {
-        std::string     name;
+        std::string                      name;
         road::PatchRoad                  patch_road;
         std::unique_ptr<road::PatchRoad> coarser; ///< under the coarser grid's points
       };
@@ -261,11 +267,11 @@ namespace greentread
         /// -1, or the index of the error bars' other level it is.
         int estimate = -1;
       };
-      std::vector<Job>                               jobs;
-      std::vector<std::vector<analysis::BandRun>>    plans;
+      std::vector<Job>                            jobs;
+      std::vector<std::vector<analysis::BandRun>> plans;
       // The error bars' coarser levels of each road and speed's runs.
       std::vector<std::vector<analysis::EstimateRun>> estimates;
-      std::vector<double>                            road_length(roads.roads.size(), 0.);
+      std::vector<double>                             road_length(roads.roads.size(), 0.);
       for (std::size_t r = 0; r < roads.roads.size(); ++r)
         {
           const auto   file    = texture_files.find(roads.roads[r]);
@@ -274,51 +280,52 @@ namespace greentread
           // can roll over.
           analysis::SpectraParameters limits = spectra;
           if (file != texture_files.end())
-            limits.longest_distance = std::min(
-              spectra.longest_distance,
-              road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
-                .usable_length());
+            limits.longest_distance =
+              std::min(spectra.longest_distance,
+                       road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
+                         .usable_length());
           for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
-          {
-            const double V       = rolling.speeds[v] / 3.6;
-            const double dt      = rolling.time_step > 0. ? rolling.time_step : spacing / V;
-            plans.push_back(analysis::plan_band_runs(limits, V, dt, rolling.distance,
-                                                     spectrum_top_band(dt)));
-            for (const auto &run : plans.back())
-              {
-                if (run.target_out_of_reach)
-                  std::cout << "  " << roads.roads[r] << " at " << format_number(rolling.speeds[v])
-                            << " km/h: the low-rate run stops at " << format_short(run.distance)
-                            << " m ('Spectra/Longest distance'"
-                            << (file != texture_files.end() ? ", or the texture file's length" : "")
-                            << "), short of the standard error target\n";
-                jobs.push_back({r, v, run});
-                // As long as the run may extend to ('Spectra/Extend runs').
-                road_length[r] = std::max({road_length[r], run.distance,
-                                           run.longest_steps * V * run.time_step});
-              }
-            estimates.push_back(analysis::plan_estimate_runs(plans.back(), error_bars,
-                                                             spectra.target_from, V,
-                                                             grid.subdivisions));
-            auto &e = estimates.back();
-            e.erase(std::remove_if(e.begin(), e.end(),
-                                   [&](const analysis::EstimateRun &x) {
-                                     return (x.what == analysis::Discretisation::mode_cutoff &&
-                                             !coarser_model) ||
-                                            (x.what == analysis::Discretisation::ring_section &&
-                                             !section);
-                                   }),
-                    e.end());
-            for (std::size_t k = 0; k < e.size(); ++k)
-              {
-                if (e[k].what == analysis::Discretisation::mode_cutoff)
-                  e[k].factor = coarser_model->factor;
-                if (e[k].what == analysis::Discretisation::ring_section)
-                  e[k].factor = section->factor;
-                if (e[k].run.steps > 0)
-                  jobs.push_back({r, v, e[k].run, int(k)});
-              }
-          }
+            {
+              const double V  = rolling.speeds[v] / 3.6;
+              const double dt = rolling.time_step > 0. ? rolling.time_step : spacing / V;
+              plans.push_back(
+                analysis::plan_band_runs(limits, V, dt, rolling.distance, spectrum_top_band(dt)));
+              for (const auto &run : plans.back())
+                {
+                  if (run.target_out_of_reach)
+                    std::cout << "  " << roads.roads[r] << " at "
+                              << format_number(rolling.speeds[v])
+                              << " km/h: the low-rate run stops at " << format_short(run.distance)
+                              << " m ('Spectra/Longest distance'"
+                              << (file != texture_files.end() ? ", or the texture file's length" :
+                                                                "")
+                              << "), short of the standard error target\n";
+                  jobs.push_back({r, v, run});
+                  // As long as the run may extend to ('Spectra/Extend runs').
+                  road_length[r] =
+                    std::max({road_length[r], run.distance, run.longest_steps * V * run.time_step});
+                }
+              estimates.push_back(analysis::plan_estimate_runs(
+                plans.back(), error_bars, spectra.target_from, V, grid.subdivisions));
+              auto &e = estimates.back();
+              e.erase(std::remove_if(e.begin(), e.end(),
+                                     [&](const analysis::EstimateRun &x) {
+                                       return (x.what == analysis::Discretisation::mode_cutoff &&
+                                               !coarser_model) ||
+                                              (x.what == analysis::Discretisation::ring_section &&
+                                               !section);
+                                     }),
+                      e.end());
+              for (std::size_t k = 0; k < e.size(); ++k)
+                {
+                  if (e[k].what == analysis::Discretisation::mode_cutoff)
+                    e[k].factor = coarser_model->factor;
+                  if (e[k].what == analysis::Discretisation::ring_section)
+                    e[k].factor = section->factor;
+                  if (e[k].run.steps > 0)
+                    jobs.push_back({r, v, e[k].run, int(k)});
+                }
+            }
         }
       // The error bars' coarser grid (its road under its own points).
       const CoarserGrid coarser(model.points, grid,
@@ -338,12 +345,12 @@ namespace greentread
           // longest run needs (the patch and a margin of 0.1 m beyond it).
           const double width = green.patch.width + 0.03;
           std::cout << "Road '" << road_name << "'\n";
-          const auto          file    = texture_files.find(road_name);
-          road::Texture       texture = file != texture_files.end() ?
-                                          file->second :
-                                          roads.make(road_name, width,
-                                                     road_length[r] + green.patch.length + 0.1);
-          road::PatchRoad     patch_road(texture, grid.points, roads.sampling, road_name);
+          const auto    file = texture_files.find(road_name);
+          road::Texture texture =
+            file != texture_files.end() ?
+              file->second :
+              roads.make(road_name, width, road_length[r] + green.patch.length + 0.1);
+          road::PatchRoad patch_road(texture, grid.points, roads.sampling, road_name);
           analysis::write_road_report(directory, road_name, texture, record);
           road_list.push_back(std::make_unique<RoadOfRuns>(
             RoadOfRuns{road_name, std::move(patch_road),
@@ -379,17 +386,16 @@ namespace greentread
                   };
                   const bool on_coarser_grid    = is(analysis::Discretisation::contact_grid);
                   const bool on_coarser_section = is(analysis::Discretisation::ring_section);
-                  job_spectra[k] =
-                    roll(is(analysis::Discretisation::mode_cutoff) ? coarser_model->model :
-                         on_coarser_section                          ? section->model :
-                                                                       model,
-                         on_coarser_grid ? *coarser.grid : grid,
-                         on_coarser_section ? section->G0 : G0,
-                         on_coarser_grid ? coarser.tread : tread,
-                         on_coarser_grid ? *coarser.lattice : lattice,
-                         on_coarser_grid ? *r.coarser : r.patch_road, r.name,
-                         rolling.speeds[job.speed], job.run, directory, record,
-                         std::max(1u, threads / side_by_side), job.estimate < 0);
+                  job_spectra[k]                = roll(
+                                   is(analysis::Discretisation::mode_cutoff) ? coarser_model->model :
+                                   on_coarser_section                        ? section->model :
+                                                                               model,
+                    on_coarser_grid ? *coarser.grid : grid, on_coarser_section ? section->G0 : G0,
+                    on_coarser_grid ? coarser.tread : tread,
+                    on_coarser_grid ? *coarser.lattice : lattice,
+                    on_coarser_grid ? *r.coarser : r.patch_road, r.name, rolling.speeds[job.speed],
+                    job.run, directory, record, std::max(1u, threads / side_by_side),
+                    job.estimate < 0);
                 }
               catch (...)
                 {
@@ -399,7 +405,10 @@ namespace greentread
               ++done;
             }
         },
-        done, n_runs, nullptr, [&]() { return failed.load(); });
+        done, n_runs, nullptr,
+        [&]() {
+          return failed.load();
+        });
       for (const auto &f : failures)
         if (f)
           std::rethrow_exception(f);
@@ -410,9 +419,11 @@ namespace greentread
         for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
           {
             const auto job_of = [&](const std::string &name) {
-              return std::find_if(jobs.begin(), jobs.end(), [&](const Job &j) {
-                       return j.road == r && j.speed == v && j.run.name == name;
-                     }) - jobs.begin();
+              return std::find_if(jobs.begin(), jobs.end(),
+                                  [&](const Job &j) {
+                                    return j.road == r && j.speed == v && j.run.name == name;
+                                  }) -
+                     jobs.begin();
             };
             analysis::RunSpectrum merged = job_spectra[job_of("")];
             const auto           &plan   = plans[r * rolling.speeds.size() + v];
@@ -438,9 +449,10 @@ namespace greentread
                     used[i] = false;
                     continue;
                   }
-                merged.spectrum       = analysis::merge_band_spectra(merged.spectrum, low.spectrum, plan[i]);
-                merged.force_spectrum = analysis::merge_band_spectra(merged.force_spectrum,
-                                                                     low.force_spectrum, plan[i]);
+                merged.spectrum =
+                  analysis::merge_band_spectra(merged.spectrum, low.spectrum, plan[i]);
+                merged.force_spectrum =
+                  analysis::merge_band_spectra(merged.force_spectrum, low.force_spectrum, plan[i]);
               }
             analysis::add_error_bars(
               merged, estimates[r * rolling.speeds.size() + v], plan, used,
@@ -455,11 +467,12 @@ namespace greentread
       analysis::write_spectra(directory, run_spectra, roads.roads, rolling.speeds,
                               rolling.stress_reference, model.f_max, spectra, record);
       if (global.print_timings)
-        std::cout << "Total run time "
-                  << format_printf("%.3g", std::chrono::duration<double>(
-                                             std::chrono::steady_clock::now() - start)
-                                             .count())
-                  << " s\n";
+        std::cout
+          << "Total run time "
+          << format_printf(
+               "%.3g",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+          << " s\n";
     }
 
 

@@ -32,9 +32,10 @@ namespace greentread
                                       std::unique_ptr<periodic::InflatedTyre> &tyre) const
     {
       base::FrequencyResponseMatrix G;
-      const bool green_cached =
-        global.reuse && base::read_green_stage_key(h5.string()) == key &&
-        base::read_saved_stage(h5, [&] { G = base::read_green_hdf5(h5.string()); });
+      const bool green_cached = global.reuse && base::read_green_stage_key(h5.string()) == key &&
+                                base::read_saved_stage(h5, [&] {
+                                  G = base::read_green_hdf5(h5.string());
+                                });
       if (green_cached)
         std::cout << "Reusing " << h5.string()
                   << ": same geometry, materials, inflation and Green's-function parameters\n";
@@ -54,7 +55,7 @@ namespace greentread
           std::cout << "  " << tyre->patch.describe() << '\n'
                     << (tyre->harmonic ? tyre->harmonic->describe() : std::string());
           const auto result = periodic::run_green_stage(*tyre, lines, key, h5, record, false,
-                                              global.print_timings, MPI_COMM_WORLD);
+                                                        global.print_timings, MPI_COMM_WORLD);
           G                 = result.green;
           std::cout << "  every solve checked: largest backward error "
                     << format_printf("%.2g", result.report.diagnostics.max_residual) << '\n';
@@ -67,18 +68,18 @@ namespace greentread
     modal::PatchModel
     TyreRoadContactScene::modal_stage(const geometry::GeometryParameters  &tyre_geometry,
                                       const base::FrequencyResponseMatrix &G,
-                                  const std::string                    &green_key,
-                                  const std::filesystem::path          &directory,
-                                  const base::ParameterRecord          &record,
-                                  const periodic::InflatedTyre         *tyre,
-                                  std::optional<CoarserModel>          *coarser) const
+                                      const std::string                   &green_key,
+                                      const std::filesystem::path         &directory,
+                                      const base::ParameterRecord         &record,
+                                      const periodic::InflatedTyre        *tyre,
+                                      std::optional<CoarserModel>         *coarser) const
     {
       if (patch_model.source == modal::PatchModelSource::identified)
         {
-          modal::PatchModel model = modal::patch_model_stage(
-            G, identification, patch_model, directory / "patch_model.h5",
-            modal::patch_model_stage_key(prm, green_key), record, global.reuse,
-            global.print_timings);
+          modal::PatchModel model =
+            modal::patch_model_stage(G, identification, patch_model, directory / "patch_model.h5",
+                                     modal::patch_model_stage_key(prm, green_key), record,
+                                     global.reuse, global.print_timings);
           const modal::Passivity passivity = modal::measure_passivity(model, G.df, G.n_lines - 1);
           modal::print_passivity(passivity, "the identified patch model");
           modal::check_passivity(passivity, patch_model.allow_non_passive,
@@ -88,14 +89,15 @@ namespace greentread
                          "model/Source' = fe modes): not estimated\n";
           return model;
         }
-      const synthesis::ModeStageInputs inputs{tyre_geometry, materials, inflation, green.patch,
-                                             patch_model.mode_cutoff, green.harmonic(), tyre};
+      const synthesis::ModeStageInputs inputs{
+        tyre_geometry,           materials,        inflation, green.patch,
+        patch_model.mode_cutoff, green.harmonic(), tyre};
       // The modes' part at every line, when the stage computes it (not
       // when it is reused): compare() then only adds the residual.
       synthesis::ModalLines          lines;
       const synthesis::ModeSynthesis synthesis = synthesis::run_mode_stage(
-        inputs, G, directory / "modal_model.h5", synthesis::mode_stage_key(prm, green_key),
-        record, global.reuse, global.print_timings, MPI_COMM_WORLD, &lines);
+        inputs, G, directory / "modal_model.h5", synthesis::mode_stage_key(prm, green_key), record,
+        global.reuse, global.print_timings, MPI_COMM_WORLD, &lines);
       analysis::write_dispersion(directory, synthesis.dispersion, patch_model.mode_cutoff, record);
       const synthesis::SynthesisErrors errors = synthesis::compare(synthesis, G, &lines);
       analysis::report_synthesis(directory, synthesis, errors, record);
@@ -112,13 +114,13 @@ namespace greentread
           // cut-off, with their own residual. The estimate scales the level
           // difference by how much closer to the direct lines the finer
           // level is (E's median): the observed convergence.
-          const double cutoff = error_bars.cutoff_ratio * patch_model.mode_cutoff;
-          const synthesis::ModeSynthesis fewer = synthesis::truncate(synthesis, cutoff, G);
-          const double e_fewer = synthesis::compare(fewer, G).median;
-          const double factor =
+          const double                   cutoff = error_bars.cutoff_ratio * patch_model.mode_cutoff;
+          const synthesis::ModeSynthesis fewer  = synthesis::truncate(synthesis, cutoff, G);
+          const double                   e_fewer = synthesis::compare(fewer, G).median;
+          const double                   factor =
             e_fewer > errors.median ? errors.median / (e_fewer - errors.median) : 1.;
-          std::cout << "  the mode cut-off's error bar: the " << fewer.n_modes()
-                    << " modes to " << format_number(cutoff) << " Hz ('Error bars/Coarser mode "
+          std::cout << "  the mode cut-off's error bar: the " << fewer.n_modes() << " modes to "
+                    << format_number(cutoff) << " Hz ('Error bars/Coarser mode "
                     << "cutoff'), E median " << format_printf("%.3g", 100. * e_fewer)
                     << "% against " << format_printf("%.3g", 100. * errors.median)
                     << "%: the estimate is " << format_printf("%.3g", factor)
@@ -159,7 +161,8 @@ namespace greentread
         prm, geometry.geo_file,
         {{"Geometry/Mesh size", format_printf("%.17g", coarse.mesh_size)},
          {"Green's functions/Frequency step", format_printf("%.17g", lines.frequency_step)}});
-      std::cout << "The ring section's error bar: the section at " << format_number(1e3 * coarse.mesh_size)
+      std::cout << "The ring section's error bar: the section at "
+                << format_number(1e3 * coarse.mesh_size)
                 << " mm ('Geometry/Mesh size' doubled), its direct lines at 0 and "
                 << format_number(lines.max_frequency) << " Hz, its own stages in " << sub.string()
                 << '\n';
@@ -170,9 +173,8 @@ namespace greentread
                              synthesis::static_line(G), coarse.mesh_size,
                              analysis::richardson_factor(2., analysis::ring_section_order)};
       std::cout << "  the ring section's error bar: the estimate is "
-                << format_printf("%.3g", section.factor)
-                << " times the level difference (order " << format_number(analysis::ring_section_order)
-                << " in the mesh size)\n";
+                << format_printf("%.3g", section.factor) << " times the level difference (order "
+                << format_number(analysis::ring_section_order) << " in the mesh size)\n";
       return section;
     }
   } // namespace scenes

@@ -29,7 +29,7 @@ namespace greentread
           return a;
         std::uintmax_t iterations = 200;
         const auto     bracket    = boost::math::tools::toms748_solve(
-          f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(52), iterations);
+                 f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(52), iterations);
         return bracket.second;
       }
 
@@ -40,7 +40,7 @@ namespace greentread
       {
         std::uintmax_t iterations = 200;
         const auto     bracket    = boost::math::tools::toms748_solve(
-          df, a, b, boost::math::tools::eps_tolerance<double>(52), iterations);
+                 df, a, b, boost::math::tools::eps_tolerance<double>(52), iterations);
         return 0.5 * (bracket.first + bracket.second);
       }
     } // namespace
@@ -50,13 +50,12 @@ namespace greentread
     ExactSolution::ExactSolution(const Oscillator      &oscillator_,
                                  const road::RoadTrack &road_,
                                  const double           end_time_)
-      : oscillator(oscillator_)
-      , road(road_)
-      , end_time(end_time_)
+        : oscillator(oscillator_)
+        , road(road_)
+        , end_time(end_time_)
     {
       const double period_oscillator =
-        2. * M_PI / oscillator.natural_frequency() /
-        std::max(1., oscillator.damping_ratio());
+        2. * M_PI / oscillator.natural_frequency() / std::max(1., oscillator.damping_ratio());
       const double period_road = road.profile.shortest_wavelength() / road.speed;
       scan_step                = std::min(period_oscillator, period_road) / 64.;
       const dealii::QGauss<1> rule(12);
@@ -109,10 +108,8 @@ namespace greentread
     double
     ExactSolution::force_in_contact(const double t) const
     {
-      return oscillator.mass() * road.acceleration(t) +
-             oscillator.damping() * road.velocity(t) +
-             oscillator.stiffness() * road.height(t) +
-             oscillator.mass() * oscillator.gravity();
+      return oscillator.mass() * road.acceleration(t) + oscillator.damping() * road.velocity(t) +
+             oscillator.stiffness() * road.height(t) + oscillator.mass() * oscillator.gravity();
     }
 
 
@@ -120,10 +117,11 @@ namespace greentread
     double
     ExactSolution::find_lift_off(const double t0) const
     {
-      const auto force = [&](double t) { return force_in_contact(t); };
-      const auto rate  = [&](double t) {
-        return oscillator.mass() * road.jerk(t) +
-               oscillator.damping() * road.acceleration(t) +
+      const auto force = [&](double t) {
+        return force_in_contact(t);
+      };
+      const auto rate = [&](double t) {
+        return oscillator.mass() * road.jerk(t) + oscillator.damping() * road.acceleration(t) +
                oscillator.stiffness() * road.velocity(t);
       };
       for (double a = t0; a < end_time;)
@@ -179,8 +177,9 @@ namespace greentread
     ExactSolution::phase_at(const double t) const
     {
       // The last phase that begins at or before t.
-      auto it = std::upper_bound(phases.begin(), phases.end(), t,
-                                 [](double time, const Phase &p) { return time < p.t_begin; });
+      auto it = std::upper_bound(phases.begin(), phases.end(), t, [](double time, const Phase &p) {
+        return time < p.t_begin;
+      });
       if (it != phases.begin())
         --it;
       return *it;
@@ -246,8 +245,10 @@ namespace greentread
           total += i.impulse;
 
       // Only the phases that overlap (t_a, t_b]: binary search for the first.
-      auto first = std::upper_bound(phases.begin(), phases.end(), t_a,
-                                    [](double time, const Phase &p) { return time < p.t_end; });
+      auto first =
+        std::upper_bound(phases.begin(), phases.end(), t_a, [](double time, const Phase &p) {
+          return time < p.t_end;
+        });
       for (auto p = first; p != phases.end() && p->t_begin < t_b; ++p)
         {
           if (!p->contact)
@@ -293,7 +294,8 @@ namespace greentread
       for (const auto &p : phases)
         if (p.contact)
           for (unsigned int i = 0; i <= 64; ++i)
-            largest = std::max(largest, force_in_contact(p.t_begin + (p.t_end - p.t_begin) * i / 64.));
+            largest =
+              std::max(largest, force_in_contact(p.t_begin + (p.t_end - p.t_begin) * i / 64.));
       return largest;
     }
   } // namespace sdof

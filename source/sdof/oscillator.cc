@@ -7,15 +7,16 @@ namespace greentread
   namespace sdof
   {
     Oscillator::Oscillator(const OscillatorParameters &p)
-      : M(p.mass)
-      , K(p.stiffness)
-      , xi(p.damping_ratio)
-      , g(p.gravity)
-      , C(2. * p.damping_ratio * std::sqrt(p.stiffness * p.mass))
-      , omega0(std::sqrt(p.stiffness / p.mass))
-      , sigma(p.damping_ratio * std::sqrt(p.stiffness / p.mass))
-      , delta(K / M * (1. - p.damping_ratio) * (1. + p.damping_ratio))
-    {}
+        : M(p.mass)
+        , K(p.stiffness)
+        , xi(p.damping_ratio)
+        , g(p.gravity)
+        , C(2. * p.damping_ratio * std::sqrt(p.stiffness * p.mass))
+        , omega0(std::sqrt(p.stiffness / p.mass))
+        , sigma(p.damping_ratio * std::sqrt(p.stiffness / p.mass))
+        , delta(K / M * (1. - p.damping_ratio) * (1. + p.damping_ratio))
+    {
+    }
 
 
 
@@ -25,8 +26,8 @@ namespace greentread
       void
       trigonometric_series(const double mu, double &c, double &s)
       {
-        c = 0.;
-        s = 0.;
+        c           = 0.;
+        s           = 0.;
         double term = 1.; // (-mu)^k / (2k)!
         for (unsigned int k = 0; k < 14; ++k)
           {
@@ -63,8 +64,8 @@ namespace greentread
           // cancellation since beta t >= 1 here.
           const double beta = std::sqrt(-delta);
           const double grow = std::exp((beta - sigma) * t), fall = std::exp(-(beta + sigma) * t);
-          c                 = 0.5 * (grow + fall);
-          s                 = (grow - fall) / (2. * beta);
+          c = 0.5 * (grow + fall);
+          s = (grow - fall) / (2. * beta);
         }
     }
 
@@ -133,9 +134,9 @@ namespace greentread
         {
           // Over-damped: the two roots of M s^2 + C s + K, the smaller one
           // without cancellation (product of the roots is K/M).
-          const double beta = std::sqrt(-delta);
-          const double fast = -(sigma + beta);
-          const double slow = (K / M) / fast;
+          const double beta    = std::sqrt(-delta);
+          const double fast    = -(sigma + beta);
+          const double slow    = (K / M) / fast;
           const double residue = 1. / (M * (slow - fast));
           model.add_real(slow, residue);
           model.add_real(fast, -residue);
@@ -146,17 +147,14 @@ namespace greentread
 
 
     void
-    Oscillator::free_motion(const double u0,
-                            const double v0,
-                            const double t,
-                            double      &u,
-                            double      &v) const
+    Oscillator::free_motion(const double u0, const double v0, const double t, double &u, double &v)
+      const
     {
       const double x0 = u0 - static_deflection();
       double       c, s;
       damped_functions(t, c, s);
-      u               = static_deflection() + c * x0 + s * (v0 + sigma * x0);
-      v               = c * v0 - s * (omega0 * omega0 * x0 + sigma * v0);
+      u = static_deflection() + c * x0 + s * (v0 + sigma * x0);
+      v = c * v0 - s * (omega0 * omega0 * x0 + sigma * v0);
     }
   } // namespace sdof
 } // namespace greentread

@@ -63,7 +63,8 @@ namespace greentread
                           frf_max_frequency / frf_line_spacing <= 1e6,
                         "Oscillator/FRF line spacing", frf_line_spacing,
                         "a spacing that gives from 2 to 1e6 lines up to 'FRF maximum "
-                        "frequency' = " + format_number(frf_max_frequency) + " Hz");
+                        "frequency' = " +
+                          format_number(frf_max_frequency) + " Hz");
     }
   } // namespace sdof
 } // namespace greentread

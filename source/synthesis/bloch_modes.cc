@@ -1,6 +1,6 @@
 #include <greentread/base/exceptions.h>
-#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/synthesis/shared_pattern.h>
 
 #include <Eigen/Eigenvalues>
@@ -38,14 +38,15 @@ namespace greentread
               const Dense                   &locked_,
               const Dense                   &mass_locked_,
               const Eigen::Index             limit_)
-          : KM(KM_)
-          , locked(locked_)
-          , mass_locked(mass_locked_)
-          , limit(limit_)
-          , V(KM_.size(), std::min<Eigen::Index>(limit_, 512))
-          , MV(KM_.size(), V.cols())
-          , H(V.cols(), V.cols())
-        {}
+            : KM(KM_)
+            , locked(locked_)
+            , mass_locked(mass_locked_)
+            , limit(limit_)
+            , V(KM_.size(), std::min<Eigen::Index>(limit_, 512))
+            , MV(KM_.size(), V.cols())
+            , H(V.cols(), V.cols())
+        {
+        }
 
         Eigen::Index
         size() const
@@ -186,13 +187,13 @@ namespace greentread
           KM.apply(X, {&KX, &MX});
           if (X.cols() == 0)
             return 1.;
-          const Dense G = X.adjoint() * MX;
+          const Dense                                G = X.adjoint() * MX;
           const Eigen::SelfAdjointEigenSolver<Dense> eigen(0.5 * (G + G.adjoint()));
-          const Eigen::VectorXd &lambda    = eigen.eigenvalues();
-          const Eigen::Index     n         = G.cols();
-          const double           largest   = lambda(n - 1);
-          const double           threshold = drop * (absolute ? 1. : largest);
-          Eigen::Index           keep      = 0;
+          const Eigen::VectorXd                     &lambda    = eigen.eigenvalues();
+          const Eigen::Index                         n         = G.cols();
+          const double                               largest   = lambda(n - 1);
+          const double                               threshold = drop * (absolute ? 1. : largest);
+          Eigen::Index                               keep      = 0;
           while (keep < n && largest > 0. && lambda(n - 1 - keep) > threshold)
             ++keep;
           Dense U(n, keep);
@@ -241,8 +242,10 @@ namespace greentread
        * unless an eigenvalue lies within that of @p sigma.
        */
       Eigen::Index
-      count_below(const periodic::SparseComplex &K, const periodic::SparseComplex &M, const double sigma,
-                  const std::string &which)
+      count_below(const periodic::SparseComplex &K,
+                  const periodic::SparseComplex &M,
+                  const double                   sigma,
+                  const std::string             &which)
       {
         for (const double nudge : {0., 1e-9, -1e-9})
           {
@@ -261,8 +264,8 @@ namespace greentread
             if (!zero)
               return negative;
           }
-        throw NumericalError("the inertia of K - s M of " + which + " at s = " +
-                             format_short(sigma) +
+        throw NumericalError("the inertia of K - s M of " + which +
+                             " at s = " + format_short(sigma) +
                              " rad^2/s^2 could not be computed: its LDL^H factorisation met a "
                              "zero pivot at every try");
       }
@@ -283,7 +286,7 @@ namespace greentread
         std::vector<double> theta;
         Dense               shapes;
         unsigned int        n_solves = 0, dimension = 0;
-        double              worst    = 0.;
+        double              worst = 0.;
       };
 
       /**
@@ -296,23 +299,23 @@ namespace greentread
        * there are eigenvalues there (the inertia), none is missing.
        */
       Slice
-      search_slice(const Problem    &problem,
-                   const Dense      &locked,
-                   const Dense      &mass_locked,
-                   const double      shift,
-                   const double      upper,
+      search_slice(const Problem     &problem,
+                   const Dense       &locked,
+                   const Dense       &mass_locked,
+                   const double       shift,
+                   const double       upper,
                    const Eigen::Index expected,
-                   const ModeSearch &search,
-                   const unsigned    seed)
+                   const ModeSearch  &search,
+                   const unsigned     seed)
       {
         const periodic::SparseComplex &K = problem.K, &M = problem.M;
-        Slice                slice;
+        Slice                          slice;
         if (expected == 0)
           {
             slice.shapes.resize(K.rows(), 0);
             return slice;
           }
-        const periodic::SparseComplex A = K - shift * M;
+        const periodic::SparseComplex                                        A = K - shift * M;
         Eigen::SparseLU<periodic::SparseComplex, Eigen::COLAMDOrdering<int>> lu;
         lu.analyzePattern(A);
         lu.factorize(A);
@@ -342,8 +345,7 @@ namespace greentread
         // rounding level: against the size of K and M, a mode far below the
         // stiffest layer cannot do better than eps ||K|| / w^2.
         double     worst = 0.;
-        const auto judge = [&](const double theta, const auto &x, const auto &Kx,
-                               const auto &Mx) {
+        const auto judge = [&](const double theta, const auto &x, const auto &Kx, const auto &Mx) {
           const double misfit   = (Kx - theta * Mx).norm();
           const double residual = misfit / Kx.norm();
           const double backward =
@@ -373,7 +375,7 @@ namespace greentread
                 const Dense                          H = basis.projected_stiffness();
                 Eigen::SelfAdjointEigenSolver<Dense> ritz(H, counted ? Eigen::ComputeEigenvectors :
                                                                        Eigen::EigenvaluesOnly);
-                Eigen::Index below = 0;
+                Eigen::Index                         below = 0;
                 while (below < ritz.eigenvalues().size() && ritz.eigenvalues()(below) <= upper)
                   ++below;
                 if (below > expected)
@@ -390,9 +392,8 @@ namespace greentread
                     counted                      = true;
                     const Eigen::VectorXd &theta = ritz.eigenvalues();
                     const Eigen::VectorXcd x = basis.vectors() * ritz.eigenvectors().col(below - 1);
-                    const Eigen::VectorXcd Kx = K * x,
-                                           Mx = basis.mass_times_vectors() *
-                                                ritz.eigenvectors().col(below - 1);
+                    const Eigen::VectorXcd Kx = K * x, Mx = basis.mass_times_vectors() *
+                                                            ritz.eigenvectors().col(below - 1);
                     const auto highest = judge(theta(below - 1), x, Kx, Mx);
                     top                = highest.second;
                     bool converged     = highest.first;
@@ -420,10 +421,9 @@ namespace greentread
                   }
                 if (full)
                   throw NumericalError("the mode search of " + problem.which +
-                                       " did not converge in " +
-                                       std::to_string(basis.size()) +
-                                       " vectors (worst relative residual " +
-                                       format_short(worst) + ")");
+                                       " did not converge in " + std::to_string(basis.size()) +
+                                       " vectors (worst relative residual " + format_short(worst) +
+                                       ")");
                 const Eigen::Index step = std::max<Eigen::Index>(4 * b, basis.size() / 10);
                 next_check              = basis.size() + step;
                 if (top > 0. && previous_residual > top)
@@ -431,9 +431,9 @@ namespace greentread
                     const double per_vector =
                       std::log(previous_residual / top) / double(basis.size() - previous_size);
                     const double needed = std::log(top / search.tolerance) / per_vector;
-                    next_check = basis.size() + std::clamp<Eigen::Index>(
-                                                  static_cast<Eigen::Index>(std::ceil(needed)),
-                                                  b, step);
+                    next_check =
+                      basis.size() + std::clamp<Eigen::Index>(
+                                       static_cast<Eigen::Index>(std::ceil(needed)), b, step);
                   }
                 previous_residual = top;
                 previous_size     = basis.size();
@@ -453,9 +453,10 @@ namespace greentread
     BlochModes
     bloch_modes(const periodic::PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
     {
-      const double phi = 2. * M_PI * k / cell.n_cells;
-      periodic::BlochCell    bloch(cell);
-      const auto   part = [&](const periodic::Complex a, const periodic::Complex c, const periodic::Complex m) {
+      const double        phi = 2. * M_PI * k / cell.n_cells;
+      periodic::BlochCell bloch(cell);
+      const auto          part = [&](const periodic::Complex a, const periodic::Complex c,
+                            const periodic::Complex m) {
         bloch.set_combination(a, c, m);
         return periodic::SparseComplex(bloch.assemble(phi));
       };
@@ -466,12 +467,17 @@ namespace greentread
 
 
     BlochModes
-    hermitian_modes(periodic::SparseComplex K, periodic::SparseComplex C, periodic::SparseComplex M,
-                    const unsigned int k, const std::string &which, const ModeSearch &search)
+    hermitian_modes(periodic::SparseComplex K,
+                    periodic::SparseComplex C,
+                    periodic::SparseComplex M,
+                    const unsigned int      k,
+                    const std::string      &which,
+                    const ModeSearch       &search)
     {
       if (!(search.cutoff > 0.) || search.block == 0 || search.slices == 0)
         throw NumericalError("bloch_modes: the cut-off must be positive and the block size "
-                             "and the number of slices at least 1 (" + which + ")");
+                             "and the number of slices at least 1 (" +
+                             which + ")");
       Problem problem;
       problem.K      = std::move(K);
       problem.C      = std::move(C);
@@ -497,8 +503,8 @@ namespace greentread
       // lowest modes, far below the shift in relative terms, stopped at
       // relative residuals of 1e-5 to 1e-4 (accepted on their backward
       // error, but less accurate than from a shift below them).
-      const double cut2 = search.cutoff * search.cutoff;
-      Dense        locked(problem.M.rows(), 0), mass_locked(problem.M.rows(), 0);
+      const double        cut2 = search.cutoff * search.cutoff;
+      Dense               locked(problem.M.rows(), 0), mass_locked(problem.M.rows(), 0);
       std::vector<double> theta;
       BlochModes          modes;
       modes.wavenumber = k;
@@ -512,7 +518,7 @@ namespace greentread
                                            search, 12345u + k + 7919u * s);
           modes.n_solves += slice.n_solves;
           modes.krylov_dimension += slice.dimension;
-          modes.max_residual = std::max(modes.max_residual, slice.worst);
+          modes.max_residual     = std::max(modes.max_residual, slice.worst);
           const Eigen::Index had = locked.cols(), added = slice.shapes.cols();
           locked.conservativeResize(Eigen::NoChange, had + added);
           locked.rightCols(added) = slice.shapes;
@@ -531,8 +537,9 @@ namespace greentread
       std::vector<Eigen::Index> order(theta.size());
       for (std::size_t j = 0; j < order.size(); ++j)
         order[j] = static_cast<Eigen::Index>(j);
-      std::stable_sort(order.begin(), order.end(),
-                       [&](const Eigen::Index a, const Eigen::Index b) { return theta[a] < theta[b]; });
+      std::stable_sort(order.begin(), order.end(), [&](const Eigen::Index a, const Eigen::Index b) {
+        return theta[a] < theta[b];
+      });
       const Eigen::Index count = static_cast<Eigen::Index>(order.size());
       modes.omega.resize(count);
       modes.damping_ratio.resize(count);
@@ -541,10 +548,10 @@ namespace greentread
         {
           const double t = theta[order[j]];
           if (!(t > 0.))
-            throw NumericalError(which + " has a mode of zero or negative stiffness (w^2 = " +
-                                 format_short(t) +
-                                 "): the cell is not held against rigid motion, or the "
-                                 "prestress makes it unstable");
+            throw NumericalError(
+              which + " has a mode of zero or negative stiffness (w^2 = " + format_short(t) +
+              "): the cell is not held against rigid motion, or the "
+              "prestress makes it unstable");
           modes.omega(j)      = std::sqrt(t);
           modes.shapes.col(j) = locked.col(order[j]);
           fix_phase(modes.shapes.col(j));

@@ -36,9 +36,10 @@ namespace greentread
 
         StandardShiftInvert(const Eigen::SimplicialLDLT<Sparse> &shifted_,
                             const Eigen::SimplicialLLT<Sparse>  &mass_)
-          : shifted(shifted_)
-          , mass(mass_)
-        {}
+            : shifted(shifted_)
+            , mass(mass_)
+        {
+        }
 
         Eigen::Index
         rows() const
@@ -90,9 +91,10 @@ namespace greentread
         using Scalar = double;
 
         Deflated(const StandardShiftInvert &op_, const Eigen::MatrixXd &Y_)
-          : op(op_)
-          , Y(Y_)
-        {}
+            : op(op_)
+            , Y(Y_)
+        {
+        }
 
         Eigen::Index
         rows() const
@@ -124,8 +126,11 @@ namespace greentread
       /// pivots count the eigenvalues below s (Sylvester). The pattern is
       /// the same for every n and s: @p ldlt is analysed once.
       void
-      factorise_shifted(const fe::HarmonicSection &section, const unsigned int n, const double s,
-                        Eigen::SimplicialLDLT<Sparse> &ldlt, bool &analysed)
+      factorise_shifted(const fe::HarmonicSection     &section,
+                        const unsigned int             n,
+                        const double                   s,
+                        Eigen::SimplicialLDLT<Sparse> &ldlt,
+                        bool                          &analysed)
       {
         for (const double nudge : {0., 1e-9, -1e-9})
           {
@@ -137,8 +142,9 @@ namespace greentread
             if (ldlt.info() == Eigen::Success && (ldlt.vectorD().array() != 0.).all())
               return;
           }
-        throw NumericalError("the modes of harmonic " + std::to_string(n) + ": K_n - s M at s = " +
-                             format_short(s) + " rad^2/s^2 could not be factorised (a zero pivot "
+        throw NumericalError("the modes of harmonic " + std::to_string(n) +
+                             ": K_n - s M at s = " + format_short(s) +
+                             " rad^2/s^2 could not be factorised (a zero pivot "
                              "at every try)");
       }
 
@@ -152,8 +158,9 @@ namespace greentread
 
 
     unsigned int
-    count_harmonic_modes(const fe::HarmonicSection &section, const unsigned int n,
-                         const double cutoff)
+    count_harmonic_modes(const fe::HarmonicSection &section,
+                         const unsigned int         n,
+                         const double               cutoff)
     {
       Eigen::SimplicialLDLT<Sparse> ldlt;
       bool                          analysed = false;
@@ -164,15 +171,17 @@ namespace greentread
 
 
     BlochModes
-    harmonic_modes(const fe::HarmonicSection &section, const unsigned int n, const double cutoff,
-                   const unsigned int modes_per_slice)
+    harmonic_modes(const fe::HarmonicSection &section,
+                   const unsigned int         n,
+                   const double               cutoff,
+                   const unsigned int         modes_per_slice)
     {
       BlochModes modes;
-      modes.wavenumber     = n;
-      const Sparse  K      = section.stiffness(n);
-      const Sparse &M      = section.mass();
-      const double  cut2   = cutoff * cutoff;
-      const Eigen::Index size = section.size();
+      modes.wavenumber                   = n;
+      const Sparse                  K    = section.stiffness(n);
+      const Sparse                 &M    = section.mass();
+      const double                  cut2 = cutoff * cutoff;
+      const Eigen::Index            size = section.size();
       Eigen::SimplicialLDLT<Sparse> ldlt;
       bool                          analysed = false;
       factorise_shifted(section, n, cut2, ldlt, analysed);
@@ -204,8 +213,8 @@ namespace greentread
       // nearest the shift are then those inside it, and a few more are
       // asked for so that the ones at its ends converge fast; those
       // outside it are dropped, and the count in it must be met exactly.
-      const unsigned int slices = std::max(1u, (m + modes_per_slice - 1) / modes_per_slice);
-      std::vector<double> top(slices);
+      const unsigned int        slices = std::max(1u, (m + modes_per_slice - 1) / modes_per_slice);
+      std::vector<double>       top(slices);
       std::vector<unsigned int> below(slices + 1, 0);
       for (unsigned int j = 0; j < slices; ++j)
         top[j] = cut2 * (j + 1) / slices;
@@ -275,8 +284,9 @@ namespace greentread
                 {
                   // Y's columns from separate searches: orthonormal again.
                   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
-                  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(size, Y.cols());
-                  Deflated deflated(op, Q);
+                  const Eigen::MatrixXd                       Q =
+                    qr.householderQ() * Eigen::MatrixXd::Identity(size, Y.cols());
+                  Deflated                         deflated(op, Q);
                   Spectra::SymEigsSolver<Deflated> solver(deflated, nev, ncv);
                   found(solver);
                 }
@@ -299,8 +309,9 @@ namespace greentread
       std::vector<unsigned int> order(m);
       for (unsigned int r = 0; r < m; ++r)
         order[r] = r;
-      std::sort(order.begin(), order.end(),
-                [&](const unsigned int a, const unsigned int b) { return lambda[a] < lambda[b]; });
+      std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
+        return lambda[a] < lambda[b];
+      });
       // Row-major: Eigen's product of a column-major sparse matrix with a
       // dense one adds rows of the dense one, which are then contiguous
       // (three times faster than with columns).
@@ -314,11 +325,10 @@ namespace greentread
         {
           const double l = lambda[order[r]];
           if (!(l > 0.))
-            throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                                 ": eigenvalue " + format_printf("%.6g", l) +
-                                 " found, not one of the " + std::to_string(m) +
-                                 " counted in (0, w_c^2]");
-          const double scale    = 1. / std::sqrt(V.col(r).dot(MV.col(r)));
+            throw NumericalError("the modes of harmonic " + std::to_string(n) + ": eigenvalue " +
+                                 format_printf("%.6g", l) + " found, not one of the " +
+                                 std::to_string(m) + " counted in (0, w_c^2]");
+          const double scale = 1. / std::sqrt(V.col(r).dot(MV.col(r)));
           V.col(r) *= scale;
           const double residual = (KV.col(r) - l * MV.col(r)).norm() / KV.col(r).norm();
           if (!(residual < 1e-6))
@@ -330,9 +340,9 @@ namespace greentread
         }
       const RowMajor        CV = section.damping(n) * V;
       const Eigen::MatrixXd B  = V.transpose() * CV;
-      modes.modal_damping     = B.cast<std::complex<double>>();
-      modes.damping_ratio     = B.diagonal().cwiseQuotient(2. * modes.omega);
-      modes.shapes            = V.cast<std::complex<double>>();
+      modes.modal_damping      = B.cast<std::complex<double>>();
+      modes.damping_ratio      = B.diagonal().cwiseQuotient(2. * modes.omega);
+      modes.shapes             = V.cast<std::complex<double>>();
       return modes;
     }
 
@@ -352,7 +362,7 @@ namespace greentread
       // The counts are taken in batches over the threads (one factorisation
       // each), then read in order.
       periodic::check_mode_cutoff(ring, cutoff);
-      const unsigned int n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
+      const unsigned int        n_threads = std::max(1u, dealii::MultithreadInfo::n_threads());
       std::vector<unsigned int> counts;
       unsigned int              n_k = 0;
       for (unsigned int n = 0, empty = 0; empty < 8; ++n)
@@ -360,11 +370,10 @@ namespace greentread
           if (n == counts.size())
             {
               counts.resize(n + 8 * n_threads);
-              base::for_each_index(8 * n_threads, n_threads,
-                                   [&](const std::size_t i, unsigned int) {
-                                     counts[n + i] =
-                                       count_harmonic_modes(ring.section, n + i, cutoff);
-                                   });
+              base::for_each_index(
+                8 * n_threads, n_threads, [&](const std::size_t i, unsigned int) {
+                  counts[n + i] = count_harmonic_modes(ring.section, n + i, cutoff);
+                });
             }
           if (counts[n] == 0)
             {
@@ -378,9 +387,9 @@ namespace greentread
       return gather_ring_modes(
         n_k, P,
         [&](const unsigned int n) {
-          BlochModes       modes = harmonic_modes(ring.section, n, cutoff);
-          const double     s     = std::sqrt(ring.weight(n));
-          Eigen::MatrixXcd a(modes.omega.size(), P);
+          BlochModes            modes = harmonic_modes(ring.section, n, cutoff);
+          const double          s     = std::sqrt(ring.weight(n));
+          Eigen::MatrixXcd      a(modes.omega.size(), P);
           const Eigen::MatrixXd seen =
             modes.omega.size() > 0 ? Eigen::MatrixXd(modes.shapes.real().transpose() * ring.loads) :
                                      Eigen::MatrixXd(0, ring.loads.cols());
@@ -388,7 +397,8 @@ namespace greentread
             a.col(p) = s * std::polar(1., n * ring.angle[p]) *
                        seen.col(ring.strip[p]).cast<std::complex<double>>();
           modes.shapes.resize(0, 0); // not needed past here
-          PointModes points = coupled_point_modes(modes, a, n == 0 ? 1. : 2., n == 0, couple_damping);
+          PointModes points =
+            coupled_point_modes(modes, a, n == 0 ? 1. : 2., n == 0, couple_damping);
           return std::make_pair(std::move(modes), std::move(points));
         },
         "harmonics", comm, show_progress, couple_damping);

@@ -1,8 +1,8 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/modal_sources_digest.h>
-#include <greentread/synthesis/mode_stage.h>
 #include <greentread/synthesis/harmonic_modes.h>
+#include <greentread/synthesis/mode_stage.h>
 #include <greentread/synthesis/ring_modes.h>
 
 #include <chrono>
@@ -31,35 +31,35 @@ namespace greentread
 
 
     synthesis::ModeSynthesis
-    run_mode_stage(const ModeStageInputs                &inputs,
+    run_mode_stage(const ModeStageInputs               &inputs,
                    const base::FrequencyResponseMatrix &green,
-                   const std::filesystem::path          &file,
-                   const std::string                    &key,
-                   const base::ParameterRecord          &record,
-                   const bool                            reuse,
-                   const bool                            print_timings,
-                   const MPI_Comm                        comm,
-                   synthesis::ModalLines                    *lines)
+                   const std::filesystem::path         &file,
+                   const std::string                   &key,
+                   const base::ParameterRecord         &record,
+                   const bool                           reuse,
+                   const bool                           print_timings,
+                   const MPI_Comm                       comm,
+                   synthesis::ModalLines               *lines)
     {
       synthesis::ModeSynthesis synthesis;
       if (reuse && synthesis::read_modal_model_key(file.string()) == key &&
-          base::read_saved_stage(file, [&] { synthesis = synthesis::read_modal_model(file.string()); }))
+          base::read_saved_stage(file, [&] {
+            synthesis = synthesis::read_modal_model(file.string());
+          }))
         {
-          std::cout << "Reusing " << file.string()
-                    << ": same Green's functions and mode cut-off\n";
+          std::cout << "Reusing " << file.string() << ": same Green's functions and mode cut-off\n";
           return synthesis;
         }
       const auto t0 = std::chrono::steady_clock::now();
-      std::cout << "Stage modal: the ring's own modes up to "
-                << format_number(inputs.cutoff_hz) << " Hz, per circumferential "
+      std::cout << "Stage modal: the ring's own modes up to " << format_number(inputs.cutoff_hz)
+                << " Hz, per circumferential "
                 << (inputs.harmonic ? "harmonic of the section\n" : "wavenumber\n");
       std::unique_ptr<periodic::InflatedTyre> built;
       if (inputs.tyre == nullptr)
-        built = std::make_unique<periodic::InflatedTyre>(inputs.geometry, inputs.materials,
-                                                         inputs.inflation, inputs.patch,
-                                                         inputs.harmonic);
+        built = std::make_unique<periodic::InflatedTyre>(
+          inputs.geometry, inputs.materials, inputs.inflation, inputs.patch, inputs.harmonic);
       const periodic::InflatedTyre &tyre = inputs.tyre ? *inputs.tyre : *built;
-      const unsigned int P = green.n_points();
+      const unsigned int            P    = green.n_points();
       if (tyre.patch.points.size() != P)
         throw NumericalError("modal stage: the tyre has " +
                              std::to_string(tyre.patch.points.size()) +
@@ -69,18 +69,18 @@ namespace greentread
             std::abs(tyre.patch.points[p].y - green.points[p][1]) > 1e-9 ||
             std::abs(tyre.patch.points[p].radius - green.points[p][2]) > 1e-9)
           throw NumericalError("modal stage: contact point " + std::to_string(p) +
-                                 " is not where the Green's functions have it");
+                               " is not where the Green's functions have it");
 
       ModeSearch search;
-      search.cutoff = 2. * M_PI * inputs.cutoff_hz;
-      const RingModes modes =
-        tyre.harmonic ? harmonic_ring_modes(*tyre.harmonic, search.cutoff, comm, true) :
-                        ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
+      search.cutoff         = 2. * M_PI * inputs.cutoff_hz;
+      const RingModes modes = tyre.harmonic ?
+                                harmonic_ring_modes(*tyre.harmonic, search.cutoff, comm, true) :
+                                ring_modes(tyre.periodic_cell, tyre.patch, search, comm, true);
 
       // G_r from the static line (the direct solve at 0 Hz), its relaxation
       // from the others.
-      synthesis = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                    modes.shapes_imag, green, lines);
+      synthesis            = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                                   modes.shapes_imag, green, lines);
       synthesis.wavenumber = modes.wavenumber;
       for (std::size_t k = 0; k < modes.branches.size(); ++k)
         {
@@ -90,9 +90,8 @@ namespace greentread
       if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
         synthesis::write_modal_model(file, synthesis, record, key);
       const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - t0;
-      std::cout << "  " << synthesis.n_modes() << " ring modes from "
-                << modes.branches.size() << (tyre.harmonic ? " harmonics (" : " wavenumbers (")
-                << modes.n_solves
+      std::cout << "  " << synthesis.n_modes() << " ring modes from " << modes.branches.size()
+                << (tyre.harmonic ? " harmonics (" : " wavenumbers (") << modes.n_solves
                 << " sparse solves, largest relative residual "
                 << format_printf("%.2g", modes.max_residual) << "), coupled by the damping";
       if (modes.uncoupled > 0)

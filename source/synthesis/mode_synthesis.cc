@@ -57,7 +57,9 @@ namespace greentread
                 failure = e.what();
             }
         };
-        base::run_on_threads(n_threads, work, done, n_lines, nullptr, [] { return false; });
+        base::run_on_threads(n_threads, work, done, n_lines, nullptr, [] {
+          return false;
+        });
         if (!failure.empty())
           throw NumericalError(what + ": " + failure);
       }
@@ -76,8 +78,8 @@ namespace greentread
                  const Eigen::MatrixXd &shapes_imag,
                  const double           omega)
       {
-        const Eigen::Index m = shapes.rows();
-        Eigen::VectorXd    re1(m), im1(m), re2 = Eigen::VectorXd::Zero(m), im2 = re2;
+        const Eigen::Index         m = shapes.rows();
+        Eigen::VectorXd            re1(m), im1(m), re2 = Eigen::VectorXd::Zero(m), im2 = re2;
         const std::complex<double> s(0., omega);
         for (Eigen::Index k = 0; k < m; ++k)
           {
@@ -91,7 +93,8 @@ namespace greentread
             const double               wd = w * std::sqrt(1. - xi * xi);
             const std::complex<double> l(-xi * w, wd), twice(0., 2. * wd);
             const std::complex<double> d2 =
-              std::complex<double>(0., 1.) * (1. / (twice * (s - l)) + 1. / (twice * (s - std::conj(l))));
+              std::complex<double>(0., 1.) *
+              (1. / (twice * (s - l)) + 1. / (twice * (s - std::conj(l))));
             re2(k) = d2.real();
             im2(k) = d2.imag();
           }
@@ -159,11 +162,11 @@ namespace greentread
       // Chebyshev-Lobatto nodes x_q = cos(pi q / Q) on [0, w_max], x = 2 w / w_max - 1.
       const double omega_max = 2. * M_PI * df * (n_lines > 0 ? n_lines - 1 : 0);
       const double rho       = ellipse_parameter(2. * far_ratio - 1.);
-      const auto   Q = static_cast<unsigned int>(std::ceil(std::log(1e16) / std::log(rho)));
+      const auto   Q         = static_cast<unsigned int>(std::ceil(std::log(1e16) / std::log(rho)));
       std::vector<Eigen::Index> near, far;
       for (Eigen::Index k = 0; k < frequency_hz.size(); ++k)
-        (omega_max > 0. && mode_ellipse(2. * M_PI * frequency_hz(k), damping_ratio(k),
-                                        omega_max) >= rho ?
+        (omega_max > 0. &&
+             mode_ellipse(2. * M_PI * frequency_hz(k), damping_ratio(k), omega_max) >= rho ?
            far :
            near)
           .push_back(k);
@@ -184,15 +187,17 @@ namespace greentread
       const auto entries = [](const Eigen::VectorXd &v, const std::vector<Eigen::Index> &which) {
         return Eigen::VectorXd(v(which));
       };
-      const Eigen::VectorXd f_near = entries(frequency_hz, near), xi_near = entries(damping_ratio, near);
+      const Eigen::VectorXd f_near  = entries(frequency_hz, near),
+                            xi_near = entries(damping_ratio, near);
       const Eigen::MatrixXd A_near = rows(shapes, near), B_near = rows(shapes_imag, near);
       for_each_line(0, n_lines, n_threads, "the modes at every line",
                     [&](const unsigned int l, const unsigned int) {
                       g[l] = modal_part(f_near, xi_near, A_near, B_near, 2. * M_PI * l * df);
                     });
 
-      const Eigen::VectorXd f_far = entries(frequency_hz, far), xi_far = entries(damping_ratio, far);
-      const Eigen::MatrixXd A_far = rows(shapes, far), B_far = rows(shapes_imag, far);
+      const Eigen::VectorXd f_far         = entries(frequency_hz, far),
+                            xi_far        = entries(damping_ratio, far);
+      const Eigen::MatrixXd         A_far = rows(shapes, far), B_far = rows(shapes_imag, far);
       Eigen::VectorXd               node(Q + 1);
       std::vector<Eigen::MatrixXcd> at_node(Q + 1);
       for (unsigned int q = 0; q <= Q; ++q)
@@ -206,7 +211,7 @@ namespace greentread
       // the ends); a line on a node takes the node's value.
       for_each_line(0, n_lines, n_threads, "the modes above the lines",
                     [&](const unsigned int l, const unsigned int) {
-                      const double x = 2. * (2. * M_PI * l * df) / omega_max - 1.;
+                      const double    x = 2. * (2. * M_PI * l * df) / omega_max - 1.;
                       Eigen::VectorXd weight(Q + 1);
                       for (unsigned int q = 0; q <= Q; ++q)
                         {
@@ -215,8 +220,8 @@ namespace greentread
                               g[l] += at_node[q];
                               return;
                             }
-                          weight(q) = ((q % 2) ? -1. : 1.) * ((q == 0 || q == Q) ? 0.5 : 1.) /
-                                      (x - node(q));
+                          weight(q) =
+                            ((q % 2) ? -1. : 1.) * ((q == 0 || q == Q) ? 0.5 : 1.) / (x - node(q));
                         }
                       weight /= weight.sum();
                       for (unsigned int q = 0; q <= Q; ++q)
@@ -273,12 +278,12 @@ namespace greentread
 
 
     double
-    fit_residual_relaxation(const ModeSynthesis           &model,
+    fit_residual_relaxation(const ModeSynthesis                 &model,
                             const base::FrequencyResponseMatrix &direct,
-                            const ModalLines              *lines)
+                            const ModalLines                    *lines)
     {
-      const bool kept = lines != nullptr && lines->matches(direct);
-      const unsigned int P = direct.n_points();
+      const bool         kept = lines != nullptr && lines->matches(direct);
+      const unsigned int P    = direct.n_points();
       if (model.shapes.cols() != P || model.instantaneous.rows() != P)
         throw NumericalError("fit_residual_relaxation: the model has " +
                              std::to_string(model.shapes.cols()) +
@@ -288,23 +293,21 @@ namespace greentread
       // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
       const unsigned int  n_threads = line_threads(direct.n_lines);
       std::vector<double> numerator(n_threads, 0.), denominator(n_threads, 0.);
-      for_each_line(1, direct.n_lines, n_threads, "fit_residual_relaxation",
-                    [&](const unsigned int l, const unsigned int t) {
-                      const double               omega = 2. * M_PI * l * direct.df;
-                      const Eigen::MatrixXcd     modal =
-                        kept ? lines->g[l] : model.modes_at(omega);
-                      const std::complex<double> A(0., omega);
-                      for (unsigned int i = 0; i < P; ++i)
-                        for (unsigned int j = 0; j < P; ++j)
-                          {
-                            const std::complex<double> R =
-                              direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] -
-                              modal(i, j);
-                            numerator[t] -=
-                              std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
-                            denominator[t] += std::norm(A * R);
-                          }
-                    });
+      for_each_line(
+        1, direct.n_lines, n_threads, "fit_residual_relaxation",
+        [&](const unsigned int l, const unsigned int t) {
+          const double               omega = 2. * M_PI * l * direct.df;
+          const Eigen::MatrixXcd     modal = kept ? lines->g[l] : model.modes_at(omega);
+          const std::complex<double> A(0., omega);
+          for (unsigned int i = 0; i < P; ++i)
+            for (unsigned int j = 0; j < P; ++j)
+              {
+                const std::complex<double> R =
+                  direct.values[std::size_t(l) * P * P + std::size_t(i) * P + j] - modal(i, j);
+                numerator[t] -= std::real(std::conj(A * R) * (R - model.instantaneous(i, j)));
+                denominator[t] += std::norm(A * R);
+              }
+        });
       double sum_numerator = 0., sum_denominator = 0.;
       for (unsigned int t = 0; t < n_threads; ++t)
         {
@@ -352,12 +355,12 @@ namespace greentread
 
 
     ModeSynthesis
-    synthesise(const Eigen::VectorXd         &omega,
-               const Eigen::VectorXd         &damping_ratio,
-               const Eigen::MatrixXd         &shapes,
-               const Eigen::MatrixXd         &shapes_imag,
+    synthesise(const Eigen::VectorXd               &omega,
+               const Eigen::VectorXd               &damping_ratio,
+               const Eigen::MatrixXd               &shapes,
+               const Eigen::MatrixXd               &shapes_imag,
                const base::FrequencyResponseMatrix &direct,
-               ModalLines                    *lines)
+               ModalLines                          *lines)
     {
       ModeSynthesis model =
         synthesise(omega, damping_ratio, shapes, shapes_imag, static_line(direct), direct.points);
@@ -367,8 +370,8 @@ namespace greentread
           model.residual_relaxation = fit_residual_relaxation(model, direct);
           return model;
         }
-      lines->df = direct.df;
-      lines->g  = model.modes_at_lines(direct.df, direct.n_lines);
+      lines->df                 = direct.df;
+      lines->g                  = model.modes_at_lines(direct.df, direct.n_lines);
       model.residual_relaxation = fit_residual_relaxation(model, direct, lines);
       return model;
     }
@@ -376,11 +379,11 @@ namespace greentread
 
 
     SynthesisErrors
-    compare(const ModeSynthesis           &model,
+    compare(const ModeSynthesis                 &model,
             const base::FrequencyResponseMatrix &direct,
-            const ModalLines              *lines)
+            const ModalLines                    *lines)
     {
-      const bool kept = lines != nullptr && lines->matches(direct);
+      const bool         kept = lines != nullptr && lines->matches(direct);
       const unsigned int P = direct.n_points(), L = direct.n_lines;
       if (model.shapes.cols() != P)
         throw NumericalError("compare: the model has " + std::to_string(model.shapes.cols()) +
@@ -393,12 +396,12 @@ namespace greentread
         size = difference;
       std::vector<double> passivity(n_threads, 1.), passivity_omega(n_threads, 0.);
       for_each_line(0, L, n_threads, "compare", [&](const unsigned int l, const unsigned int t) {
-        const double           weight  = (l == 0 || l + 1 == L) ? 0.5 : 1.;
-        const double           omega   = 2. * M_PI * l * direct.df;
+        const double           weight = (l == 0 || l + 1 == L) ? 0.5 : 1.;
+        const double           omega  = 2. * M_PI * l * direct.df;
         const Eigen::MatrixXcd g_model =
           kept ? model.with_residual(omega, lines->g[l]) : model.at(omega);
-        const Eigen::Map<
-          const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+        const Eigen::Map<const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic,
+                                             Eigen::RowMajor>>
           g(direct.values.data() + std::size_t(l) * P * P, P, P);
         difference[t] += weight * (g - g_model).cwiseAbs();
         size[t] += weight * g.cwiseAbs();
@@ -431,8 +434,9 @@ namespace greentread
         for (unsigned int j = 0; j < P; ++j)
           {
             // A pair that is zero at every line: no error if the model is zero too.
-            const double e = size[0](i, j) > 0. ? difference[0](i, j) / size[0](i, j) :
-                             difference[0](i, j) > 0. ? std::numeric_limits<double>::infinity() : 0.;
+            const double e = size[0](i, j) > 0.       ? difference[0](i, j) / size[0](i, j) :
+                             difference[0](i, j) > 0. ? std::numeric_limits<double>::infinity() :
+                                                        0.;
             errors.pair_error[i * P + j] = e;
             if (e > errors.worst)
               {

@@ -16,16 +16,18 @@ namespace greentread
   namespace synthesis
   {
     modal::PatchModel
-    to_patch_model(const ModeSynthesis &synthesis, const Eigen::MatrixXd &errors, const double f_max)
+    to_patch_model(const ModeSynthesis   &synthesis,
+                   const Eigen::MatrixXd &errors,
+                   const double           f_max)
     {
-      modal::PatchModel         model;
-      const Eigen::Index P = synthesis.shapes.cols();
-      model.points         = synthesis.points;
+      modal::PatchModel  model;
+      const Eigen::Index P      = synthesis.shapes.cols();
+      model.points              = synthesis.points;
       model.residual_relaxation = synthesis.residual_relaxation;
       if (!(model.residual_relaxation > 0.))
         model.instantaneous = synthesis.instantaneous;
-      model.errors         = errors.size() ? errors : Eigen::MatrixXd::Zero(P, P);
-      model.f_max          = f_max;
+      model.errors           = errors.size() ? errors : Eigen::MatrixXd::Zero(P, P);
+      model.f_max            = f_max;
       model.identified_modes = synthesis.n_modes();
       std::vector<Eigen::Index> rows;
       for (unsigned int k = 0; k < synthesis.n_modes(); ++k)
@@ -37,11 +39,13 @@ namespace greentread
                                  format_short(synthesis.frequency_hz(k)) +
                                  " Hz and damping ratio " + format_short(xi) +
                                  "; a mode needs a frequency > 0 and a damping ratio >= 0");
-          const bool complex_shape = synthesis.shapes_imag.size() &&
-                                     synthesis.shapes_imag.row(k).cwiseAbs().maxCoeff() > 0.;
+          const bool complex_shape =
+            synthesis.shapes_imag.size() && synthesis.shapes_imag.row(k).cwiseAbs().maxCoeff() > 0.;
           if (complex_shape && !(xi < 1.))
-            throw NumericalError("mode " + std::to_string(k) + ": a complex shape with a damping "
-                                 "ratio of " + format_short(xi) + "; a complex shape needs < 1");
+            throw NumericalError("mode " + std::to_string(k) +
+                                 ": a complex shape with a damping "
+                                 "ratio of " +
+                                 format_short(xi) + "; a complex shape needs < 1");
           if (xi < 1.)
             {
               const double wd = w * std::sqrt(1. - xi * xi);
@@ -118,8 +122,8 @@ namespace greentread
     namespace
     {
       const std::vector<std::string> modal_datasets = {
-        "frequency_hz",        "damping_ratio", "wavenumber", "shapes",    "shapes_imag",
-        "instantaneous",       "residual_relaxation",       "points",     "dispersion"};
+        "frequency_hz",  "damping_ratio",       "wavenumber", "shapes",    "shapes_imag",
+        "instantaneous", "residual_relaxation", "points",     "dispersion"};
     } // namespace
 
 
@@ -187,39 +191,42 @@ namespace greentread
       std::vector<double> f, xi, k, shapes, imag, gr, relaxation, p, d;
       {
         dealii::HDF5::File h5(file, dealii::HDF5::File::FileAccessMode::open);
-        f      = h5.open_dataset("frequency_hz").read<std::vector<double>>();
-        xi     = h5.open_dataset("damping_ratio").read<std::vector<double>>();
-        k      = h5.open_dataset("wavenumber").read<std::vector<double>>();
-        shapes = h5.open_dataset("shapes").read<std::vector<double>>();
-        imag   = h5.open_dataset("shapes_imag").read<std::vector<double>>();
-        gr     = h5.open_dataset("instantaneous").read<std::vector<double>>();
+        f          = h5.open_dataset("frequency_hz").read<std::vector<double>>();
+        xi         = h5.open_dataset("damping_ratio").read<std::vector<double>>();
+        k          = h5.open_dataset("wavenumber").read<std::vector<double>>();
+        shapes     = h5.open_dataset("shapes").read<std::vector<double>>();
+        imag       = h5.open_dataset("shapes_imag").read<std::vector<double>>();
+        gr         = h5.open_dataset("instantaneous").read<std::vector<double>>();
         relaxation = h5.open_dataset("residual_relaxation").read<std::vector<double>>();
-        p      = h5.open_dataset("points").read<std::vector<double>>();
-        d      = h5.open_dataset("dispersion").read<std::vector<double>>();
+        p          = h5.open_dataset("points").read<std::vector<double>>();
+        d          = h5.open_dataset("dispersion").read<std::vector<double>>();
       }
       const std::size_t m = f.size(), n = p.size() / 3;
-      if (xi.size() != m || k.size() != m || shapes.size() != m * n || imag.size() != m * n || gr.size() != n * n ||
-          relaxation.size() != 1 || p.size() != 3 * n || d.size() % 4 != 0)
+      if (xi.size() != m || k.size() != m || shapes.size() != m * n || imag.size() != m * n ||
+          gr.size() != n * n || relaxation.size() != 1 || p.size() != 3 * n || d.size() % 4 != 0)
         throw InputError("modal model file '" + file +
                          "' has inconsistent dataset sizes; delete it to recompute it");
       for (const auto *values : {&f, &xi, &shapes, &imag, &gr, &relaxation, &p, &d})
-        if (!std::all_of(values->begin(), values->end(),
-                         [](const double x) { return std::isfinite(x); }))
+        if (!std::all_of(values->begin(), values->end(), [](const double x) {
+              return std::isfinite(x);
+            }))
           throw InputError("modal model file '" + file +
                            "' holds a value that is not a finite number; delete it to "
                            "recompute it");
       ModeSynthesis s;
-      s.frequency_hz  = Eigen::Map<const Eigen::VectorXd>(f.data(), m);
-      s.damping_ratio = Eigen::Map<const Eigen::VectorXd>(xi.data(), m);
+      s.frequency_hz        = Eigen::Map<const Eigen::VectorXd>(f.data(), m);
+      s.damping_ratio       = Eigen::Map<const Eigen::VectorXd>(xi.data(), m);
       s.residual_relaxation = relaxation[0];
       s.shapes =
         Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           shapes.data(), m, n);
-      if (std::any_of(imag.begin(), imag.end(), [](const double x) { return x != 0.; }))
+      if (std::any_of(imag.begin(), imag.end(), [](const double x) {
+            return x != 0.;
+          }))
         {
-          s.shapes_imag =
-            Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-              imag.data(), m, n);
+          s.shapes_imag = Eigen::Map<
+            const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            imag.data(), m, n);
           for (std::size_t i = 0; i < m; ++i)
             if (!(xi[i] < 1.) && s.shapes_imag.row(i).cwiseAbs().maxCoeff() > 0.)
               throw InputError("modal model file '" + file + "': mode " + std::to_string(i) +

@@ -8,7 +8,8 @@ namespace greentread
   namespace synthesis
   {
     ModeSynthesis
-    truncate(const ModeSynthesis &all, const double cutoff_hz,
+    truncate(const ModeSynthesis                 &all,
+             const double                         cutoff_hz,
              const base::FrequencyResponseMatrix &direct)
     {
       std::vector<Eigen::Index> keep;

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <memory>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <numeric>
 #include <thread>
@@ -32,19 +32,19 @@ namespace greentread
       bool
       eigen_decomposition(Eigen::MatrixXcd L, Eigen::VectorXcd &lambda, Eigen::MatrixXcd &vectors)
       {
-        const auto lock = base::lock_serial_blas();
-        const dealii::types::blas_int n = L.rows();
+        const auto                    lock  = base::lock_serial_blas();
+        const dealii::types::blas_int n     = L.rows();
         dealii::types::blas_int       lwork = -1, info = 0, one = 1;
         lambda.resize(n);
         vectors.resize(n, n);
-        std::complex<double>              query, unused;
-        std::vector<double>               rwork(2 * n);
-        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(),
-                     &n, &query, &lwork, rwork.data(), &info);
+        std::complex<double> query, unused;
+        std::vector<double>  rwork(2 * n);
+        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(), &n,
+                     &query, &lwork, rwork.data(), &info);
         lwork = static_cast<dealii::types::blas_int>(query.real());
         std::vector<std::complex<double>> work(std::max<dealii::types::blas_int>(lwork, 1));
-        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(),
-                     &n, work.data(), &lwork, rwork.data(), &info);
+        dealii::geev("N", "V", &n, L.data(), &n, lambda.data(), &unused, &one, vectors.data(), &n,
+                     work.data(), &lwork, rwork.data(), &info);
         return info == 0 && lambda.allFinite() && vectors.allFinite();
       }
 
@@ -55,18 +55,18 @@ namespace greentread
       bool
       eigen_decomposition(Eigen::MatrixXd L, Eigen::VectorXcd &lambda, Eigen::MatrixXcd &vectors)
       {
-        const auto lock = base::lock_serial_blas();
-        const dealii::types::blas_int n = L.rows();
+        const auto                    lock  = base::lock_serial_blas();
+        const dealii::types::blas_int n     = L.rows();
         dealii::types::blas_int       lwork = -1, info = 0, one = 1;
         Eigen::VectorXd               wr(n), wi(n);
         Eigen::MatrixXd               vr(n, n);
         double                        query = 0., unused = 0.;
-        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(),
-                     &n, &query, &lwork, &info);
+        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(), &n,
+                     &query, &lwork, &info);
         lwork = static_cast<dealii::types::blas_int>(query);
         std::vector<double> work(std::max<dealii::types::blas_int>(lwork, 1));
-        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(),
-                     &n, work.data(), &lwork, &info);
+        dealii::geev("N", "V", &n, L.data(), &n, wr.data(), wi.data(), &unused, &one, vr.data(), &n,
+                     work.data(), &lwork, &info);
         if (info != 0)
           return false;
         lambda.resize(n);
@@ -93,7 +93,9 @@ namespace greentread
       /// a(r, q): Bloch mode r seen by the unit load of point q,
       /// sum over q's entries (n, s, w) of w e^{i phi n} psi_r(s).
       Eigen::MatrixXcd
-      bloch_point_values(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch)
+      bloch_point_values(const BlochModes             &modes,
+                         const periodic::PeriodicCell &cell,
+                         const periodic::ContactPatch &patch)
       {
         const double     phi = 2. * M_PI * modes.wavenumber / cell.n_cells;
         Eigen::MatrixXcd a   = Eigen::MatrixXcd::Zero(modes.omega.size(), patch.points.size());
@@ -108,7 +110,9 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    point_shapes(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch)
+    point_shapes(const BlochModes             &modes,
+                 const periodic::PeriodicCell &cell,
+                 const periodic::ContactPatch &patch)
     {
       const unsigned int k = modes.wavenumber, N = cell.n_cells;
       return point_shapes(bloch_point_values(modes, cell, patch), N, k == 0 || 2 * k == N);
@@ -135,10 +139,10 @@ namespace greentread
 
 
     PointModes
-    coupled_point_modes(const BlochModes   &modes,
+    coupled_point_modes(const BlochModes             &modes,
                         const periodic::PeriodicCell &cell,
                         const periodic::ContactPatch &patch,
-                        const bool          couple)
+                        const bool                    couple)
     {
       const unsigned int k = modes.wavenumber, N = cell.n_cells;
       return coupled_point_modes(modes, bloch_point_values(modes, cell, patch), N,
@@ -181,9 +185,9 @@ namespace greentread
       // linearised with z = [W x; s x]: s z = [[0, W], [-W, -B]] z.
       // A real B (the harmonic route's) takes the real solver.
       const auto linearised = [&](const auto &damping) {
-        using Matrix = std::decay_t<decltype(damping)>;
-        Matrix L = Matrix::Zero(2 * m, 2 * m);
-        const auto omega = modes.omega.template cast<typename Matrix::Scalar>();
+        using Matrix                        = std::decay_t<decltype(damping)>;
+        Matrix     L                        = Matrix::Zero(2 * m, 2 * m);
+        const auto omega                    = modes.omega.template cast<typename Matrix::Scalar>();
         L.topRightCorner(m, m).diagonal()   = omega;
         L.bottomLeftCorner(m, m).diagonal() = -omega;
         L.bottomRightCorner(m, m)           = -damping;
@@ -191,9 +195,10 @@ namespace greentread
       };
       Eigen::VectorXcd lambda;
       Eigen::MatrixXcd z;
-      const bool       decomposed = B.imag().isZero(0.) ?
-                                      eigen_decomposition(linearised(Eigen::MatrixXd(B.real())), lambda, z) :
-                                      eigen_decomposition(linearised(B), lambda, z);
+      const bool       decomposed =
+        B.imag().isZero(0.) ?
+                eigen_decomposition(linearised(Eigen::MatrixXd(B.real())), lambda, z) :
+                eigen_decomposition(linearised(B), lambda, z);
       if (!decomposed)
         return diagonal();
       const Eigen::MatrixXcd x = modes.omega.cwiseInverse().asDiagonal() * z.topRows(m);
@@ -231,14 +236,14 @@ namespace greentread
               }
           if (d < 0 || best > 1e-6 * std::abs(lambda(u)))
             return diagonal();
-          taken[d]       = true;
+          taken[d]                   = true;
           const periodic::Complex l  = lambda(u);
-          const double  wd = l.imag();
+          const double            wd = l.imag();
           // The residue of (s^2 I + s B + W^2)^-1 at l is x y^H / mu.
-          const Eigen::VectorXcd q2 = 2. * l * x.col(u) + modes.modal_damping * x.col(u);
-          const periodic::Complex          mu = x.col(d).dot(q2);
-          const Eigen::VectorXcd psi1 = a.transpose() * x.col(u);
-          const Eigen::VectorXcd psi2 = (a.transpose() * x.col(d)).conjugate();
+          const Eigen::VectorXcd  q2   = 2. * l * x.col(u) + modes.modal_damping * x.col(u);
+          const periodic::Complex mu   = x.col(d).dot(q2);
+          const Eigen::VectorXcd  psi1 = a.transpose() * x.col(u);
+          const Eigen::VectorXcd  psi2 = (a.transpose() * x.col(d)).conjugate();
           out.omega.segment(per * i, per).setConstant(std::abs(l));
           out.damping_ratio.segment(per * i, per).setConstant(-l.real() / std::abs(l));
           // Shapes psi such that psi psi^T / (2 j w_d) is the residue at l (and
@@ -246,8 +251,9 @@ namespace greentread
           if (real)
             {
               // (1/N) psi1 psi2^T / mu, with psi2 = alpha psi1.
-              const double           size  = psi1.squaredNorm();
-              const periodic::Complex          alpha = size > 0. ? psi1.dot(psi2) / size : periodic::Complex(0.);
+              const double            size = psi1.squaredNorm();
+              const periodic::Complex alpha =
+                size > 0. ? psi1.dot(psi2) / size : periodic::Complex(0.);
               const Eigen::VectorXcd shape =
                 std::sqrt(periodic::Complex(0., 2. * wd) * alpha / (N * mu)) * psi1;
               out.shapes.row(i)      = shape.real().transpose();
@@ -256,9 +262,9 @@ namespace greentread
             }
           // k and N - k together: (1/N)(psi1 psi2^T + psi2 psi1^T) / mu
           // = (p p^T + q q^T) / (2 N mu), p = psi1 + psi2, q = (psi1 - psi2) / j.
-          const periodic::Complex          scale = std::sqrt(periodic::Complex(0., wd) / (N * mu));
-          const Eigen::VectorXcd p     = scale * (psi1 + psi2);
-          const Eigen::VectorXcd q     = scale * (psi1 - psi2) / periodic::Complex(0., 1.);
+          const periodic::Complex scale  = std::sqrt(periodic::Complex(0., wd) / (N * mu));
+          const Eigen::VectorXcd  p      = scale * (psi1 + psi2);
+          const Eigen::VectorXcd  q      = scale * (psi1 - psi2) / periodic::Complex(0., 1.);
           out.shapes.row(2 * i)          = p.real().transpose();
           out.shapes_imag.row(2 * i)     = p.imag().transpose();
           out.shapes.row(2 * i + 1)      = q.real().transpose();
@@ -305,10 +311,10 @@ namespace greentread
     RingModes
     ring_modes(const periodic::PeriodicCell &cell,
                const periodic::ContactPatch &patch,
-               const ModeSearch   &search,
-               const MPI_Comm      comm,
-               const bool          show_progress,
-               const bool          couple_damping)
+               const ModeSearch             &search,
+               const MPI_Comm                comm,
+               const bool                    show_progress,
+               const bool                    couple_damping)
     {
       return gather_ring_modes(
         cell.n_cells / 2 + 1, patch.points.size(),
@@ -324,13 +330,13 @@ namespace greentread
 
 
     RingModes
-    gather_ring_modes(const unsigned int         n_k,
-                      const unsigned int         P,
-                      const WavenumberModes     &modes_of,
-                      const std::string         &what,
-                      const MPI_Comm             comm,
-                      const bool                 show_progress,
-                      const bool                 couple_damping)
+    gather_ring_modes(const unsigned int     n_k,
+                      const unsigned int     P,
+                      const WavenumberModes &modes_of,
+                      const std::string     &what,
+                      const MPI_Comm         comm,
+                      const bool             show_progress,
+                      const bool             couple_damping)
     {
       const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -369,9 +375,9 @@ namespace greentread
             std::to_string(mine.size()) + " of " + std::to_string(n_k) + " " + what + ")",
           mine.size());
       base::run_on_threads(n_threads, work, done, mine.size(), progress.get(), [&]() {
-                                 std::lock_guard<std::mutex> lock(mutex);
-                                 return !failure.empty();
-                               });
+        std::lock_guard<std::mutex> lock(mutex);
+        return !failure.empty();
+      });
       throw_if_any_rank_failed(comm, failure.empty() ? RankFailure::none : RankFailure::numerical,
                                "ring modes: " + failure);
 
@@ -390,8 +396,8 @@ namespace greentread
       for (const auto &from : gathered)
         for (std::size_t at = 0; at < from.size();)
           {
-            const auto k = static_cast<unsigned int>(from[at++]);
-            const auto m = static_cast<Eigen::Index>(from[at++]);
+            const auto k       = static_cast<unsigned int>(from[at++]);
+            const auto m       = static_cast<Eigen::Index>(from[at++]);
             result.branches[k] = Eigen::Map<const Eigen::VectorXd>(from.data() + at, m);
             at += m;
             result.branch_damping[k] = Eigen::Map<const Eigen::VectorXd>(from.data() + at, m);

@@ -30,9 +30,9 @@ main(int argc, char **argv)
           return 1;
         }
       // The shared lines: every line of the sparser grid that the other has.
-      const double       df    = std::max(a.df, b.df);
-      const double       ratio = df / std::min(a.df, b.df);
-      const unsigned int step  = static_cast<unsigned int>(std::lround(ratio));
+      const double       df     = std::max(a.df, b.df);
+      const double       ratio  = df / std::min(a.df, b.df);
+      const unsigned int step   = static_cast<unsigned int>(std::lround(ratio));
       const unsigned int step_a = a.df < b.df ? step : 1, step_b = b.df < a.df ? step : 1;
       if (std::abs(ratio - step) > 1e-9)
         {

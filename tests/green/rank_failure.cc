@@ -41,8 +41,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm     comm = MPI_COMM_WORLD;
-  const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const unsigned int                       rank = dealii::Utilities::MPI::this_mpi_process(comm);
   if (dealii::Utilities::MPI::n_mpi_processes(comm) != 2)
     {
       std::cerr << "rank_failure: run it with mpirun -np 2\n";
@@ -54,26 +54,25 @@ main(int argc, char **argv)
     RankFailure on_rank[2];
     std::string expected;
   };
-  const Case cases[] = {
-    {"no failure", {RankFailure::none, RankFailure::none}, "none"},
-    {"a numerical failure on rank 1 only",
-     {RankFailure::none, RankFailure::numerical},
-     "numerical: rank 1 failed"},
-    {"an input error on rank 0 only",
-     {RankFailure::input, RankFailure::none},
-     "input: rank 0 failed"},
-    {"both ranks fail: the lowest rank's message",
-     {RankFailure::numerical, RankFailure::input},
-     "numerical: rank 0 failed"}};
-  unsigned int wrong = 0;
+  const Case   cases[] = {{"no failure", {RankFailure::none, RankFailure::none}, "none"},
+                          {"a numerical failure on rank 1 only",
+                           {RankFailure::none, RankFailure::numerical},
+                           "numerical: rank 1 failed"},
+                          {"an input error on rank 0 only",
+                           {RankFailure::input, RankFailure::none},
+                           "input: rank 0 failed"},
+                          {"both ranks fail: the lowest rank's message",
+                           {RankFailure::numerical, RankFailure::input},
+                           "numerical: rank 0 failed"}};
+  unsigned int wrong   = 0;
   for (const auto &c : cases)
     {
       const RankFailure mine = c.on_rank[rank];
-      const std::string got =
-        outcome(comm, mine, mine == RankFailure::none ? "" : "rank " + std::to_string(rank) + " failed");
+      const std::string got  = outcome(
+         comm, mine, mine == RankFailure::none ? "" : "rank " + std::to_string(rank) + " failed");
       const bool ok = got == c.expected;
-      std::cout << "rank " << rank << ", " << c.name << ": " << got << (ok ? "" : "  WRONG, expected " + c.expected)
-                << '\n';
+      std::cout << "rank " << rank << ", " << c.name << ": " << got
+                << (ok ? "" : "  WRONG, expected " + c.expected) << '\n';
       wrong += ok ? 0 : 1;
     }
   // Every rank must agree that all went well.

@@ -56,8 +56,8 @@ main(int argc, char **argv)
   const double bound = std::stod(argv[2]);
 
   const benchmark::SyntheticGreen green;
-  const auto                      truth = green.model(0, 0);
-  const auto                      frf   = green.frf(0, 0, 4., 1001); // as the example file
+  const auto                      truth    = green.model(0, 0);
+  const auto                      frf      = green.frf(0, 0, 4., 1001); // as the example file
   double                          worst    = 0.;
   unsigned int                    compared = 0;
   for (const auto &t : truth.terms())
@@ -80,9 +80,8 @@ main(int argc, char **argv)
               compared, identified.size(), worst, bound);
   if (compared < 10 || !(worst <= bound))
     {
-      std::cerr << "check_known_modes: " << (compared < 10 ? "too few modes compared" :
-                                                             "an identified pole is off")
-                << '\n';
+      std::cerr << "check_known_modes: "
+                << (compared < 10 ? "too few modes compared" : "an identified pole is off") << '\n';
       return 1;
     }
   return 0;

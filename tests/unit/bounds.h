@@ -9,13 +9,13 @@
 
 /// Asserts (measured) <= (bound), a figure that is not a number failing,
 /// and prints the figure beside its bound.
-#define CHECK_BOUND(measured, bound)                                                   \
-  do                                                                                   \
-    {                                                                                  \
-      const double check_bound_measured_ = (measured);                                 \
-      const double check_bound_bound_    = (bound);                                    \
-      BOOST_TEST_MESSAGE(#measured << " = " << check_bound_measured_ << " (bound "     \
-                                   << check_bound_bound_ << ")");                      \
-      BOOST_TEST(check_bound_measured_ <= check_bound_bound_);                         \
-    }                                                                                  \
+#define CHECK_BOUND(measured, bound)                                               \
+  do                                                                               \
+    {                                                                              \
+      const double check_bound_measured_ = (measured);                             \
+      const double check_bound_bound_    = (bound);                                \
+      BOOST_TEST_MESSAGE(#measured << " = " << check_bound_measured_ << " (bound " \
+                                   << check_bound_bound_ << ")");                  \
+      BOOST_TEST(check_bound_measured_ <= check_bound_bound_);                     \
+    }                                                                              \
   while (false)

@@ -38,8 +38,8 @@ namespace test
       geometry.mesh_size = 0.04;
       geometry.n_cells   = n_cells;
       if (!inflated)
-        materials.tread_loss = materials.belt_loss = materials.sidewall_loss =
-          materials.bead_loss = 0.05;
+        materials.tread_loss = materials.belt_loss = materials.sidewall_loss = materials.bead_loss =
+          0.05;
       cell  = std::make_unique<geometry::TyreCell>(geometry);
       model = std::make_unique<fe::ElasticModel>(cell->cell(), materials.materials());
       model->assemble();
@@ -47,17 +47,15 @@ namespace test
         {
           dealii::AffineConstraints<double> constraints;
           model->add_clamp(geometry::rim_seat, constraints);
-          model->add_rotational_periodicity(geometry::periodic_first,
-                                            geometry::periodic_second, cell->angle(),
-                                            constraints);
+          model->add_rotational_periodicity(geometry::periodic_first, geometry::periodic_second,
+                                            cell->angle(), constraints);
           constraints.close();
           const auto u =
             model->solve_static(constraints, model->pressure_load(geometry::inner_surface, 2e5));
           model->assemble_geometric_stiffness(u);
         }
-      periodic_cell = periodic::make_periodic_cell(*model, cell->angle(), n_cells,
-                                                   geometry::rim_seat, geometry::tread_surface,
-                                                   inflated);
+      periodic_cell = periodic::make_periodic_cell(
+        *model, cell->angle(), n_cells, geometry::rim_seat, geometry::tread_surface, inflated);
       patch = periodic::place_contact_points(periodic_cell, request);
     }
   };

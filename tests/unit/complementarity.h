@@ -30,7 +30,8 @@ namespace test
   {
     const Eigen::VectorXd w = M * z + q;
     const double          m = M.cwiseAbs().rowwise().sum().maxCoeff();
-    const double s = std::max({q.lpNorm<Eigen::Infinity>(), m * z.lpNorm<Eigen::Infinity>(), 1e-300});
+    const double          s =
+      std::max({q.lpNorm<Eigen::Infinity>(), m * z.lpNorm<Eigen::Infinity>(), 1e-300});
     Complementarity c;
     c.gap = w.minCoeff() / s;
     for (Eigen::Index i = 0; i < z.size(); ++i)

@@ -70,7 +70,7 @@ namespace test
   inline greentread::synthesis::ModeSynthesis
   synthetic_modes(const std::vector<std::array<double, 3>> &coarse)
   {
-    const unsigned int               n_c = coarse.size(), m = 12;
+    const unsigned int                   n_c = coarse.size(), m = 12;
     greentread::synthesis::ModeSynthesis s;
     s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 200., 3000.);
     s.damping_ratio = Eigen::VectorXd::Constant(m, 0.04);

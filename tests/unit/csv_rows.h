@@ -39,7 +39,8 @@ namespace test
           {
             const std::size_t comma = line.find(',', start);
             const std::string cell  = line.substr(start, comma - start);
-            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(cell));
+            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() :
+                                         std::stod(cell));
             if (comma == std::string::npos)
               break;
             start = comma + 1;

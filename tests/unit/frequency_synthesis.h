@@ -49,7 +49,7 @@ namespace test
                            const std::vector<Eigen::VectorXd>  &q,
                            const unsigned int                   replicas = 8)
   {
-    using C = std::complex<double>;
+    using C                   = std::complex<double>;
     const unsigned int n_p    = model.n_points();
     const unsigned int n_run  = q.size() - 1;
     const unsigned int N      = 8 * n_run;
@@ -58,10 +58,10 @@ namespace test
     const unsigned int n_term = model.n_terms();
 
     // D_r = sum_k Delta q_k e^{-sigma t_k} e^{-2 pi j r k / N}, per point.
-    Eigen::FFT<double>             fft;
-    Eigen::MatrixXcd               D = Eigen::MatrixXcd::Zero(n_p, N);
-    std::vector<double>            a(N, 0.);
-    std::vector<C>                 spectrum;
+    Eigen::FFT<double>  fft;
+    Eigen::MatrixXcd    D = Eigen::MatrixXcd::Zero(n_p, N);
+    std::vector<double> a(N, 0.);
+    std::vector<C>      spectrum;
     for (unsigned int p = 0; p < n_p; ++p)
       {
         for (unsigned int k = 1; k <= n_run; ++k)
@@ -73,9 +73,9 @@ namespace test
     // X_r = sum over m = r (mod N) of H(s_m) G_m(s_m) D_r: the scalar sums
     // alpha_rk = sum_m H / (s_m - lambda_k) (beta_rk with conj(lambda_k))
     // first, then the residues' products per class r.
-    const long                   M = static_cast<long>(replicas) * N / 2;
-    std::vector<C>               s_m, H_m;
-    std::vector<unsigned int>    r_m;
+    const long                M = static_cast<long>(replicas) * N / 2;
+    std::vector<C>            s_m, H_m;
+    std::vector<unsigned int> r_m;
     for (long m = -M; m <= M; ++m)
       {
         const C s(sigma, 2. * M_PI * m / T);
@@ -104,7 +104,7 @@ namespace test
             for (unsigned int t = 0; t < b; ++t)
               {
                 const unsigned int k = k0 + t;
-                psi.col(t) = model.shapes.row(k).transpose().cast<C>();
+                psi.col(t)           = model.shapes.row(k).transpose().cast<C>();
                 if (model.shapes_imag.size() != 0)
                   psi.col(t) += C(0., 1.) * model.shapes_imag.row(k).transpose().cast<C>();
                 if (model.real[k] && model.shapes_imag.size() != 0 &&
@@ -136,8 +136,9 @@ namespace test
           }
         for (unsigned int k = 0; k < n_term; ++k)
           {
-            const Eigen::MatrixXcd R  = model.real[k] ? Eigen::MatrixXcd(model.residues[k].real().cast<C>()) :
-                                                        model.residues[k];
+            const Eigen::MatrixXcd R  = model.real[k] ?
+                                          Eigen::MatrixXcd(model.residues[k].real().cast<C>()) :
+                                          model.residues[k];
             const Eigen::MatrixXcd RD = R * D;
             for (unsigned int r = 0; r < N; ++r)
               {
@@ -152,8 +153,9 @@ namespace test
     const Eigen::VectorXd        static_u = model.static_compliance() * q[0];
     std::vector<Eigen::VectorXd> u(n_run + 1);
     for (unsigned int n = 0; n <= n_run; ++n)
-      u[n] = model.instantaneous.size() != 0 ? Eigen::VectorXd(static_u + model.instantaneous * (q[n] - q[0])) :
-                                               static_u;
+      u[n] = model.instantaneous.size() != 0 ?
+               Eigen::VectorXd(static_u + model.instantaneous * (q[n] - q[0])) :
+               static_u;
     std::vector<C> line(N), w;
     for (unsigned int p = 0; p < n_p; ++p)
       {

@@ -24,12 +24,12 @@ namespace test
   struct RoadARoll
   {
     explicit RoadARoll(const std::vector<std::array<double, 3>> &points)
-      : texture(make_texture())
-      , road(texture, points, greentread::road::RoadSampling::envelope, "test")
-      , heights([this](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
-        road.heights(x, z, slope);
-      })
-      , tread(greentread::contact::tread_heights(points))
+        : texture(make_texture())
+        , road(texture, points, greentread::road::RoadSampling::envelope, "test")
+        , heights([this](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
+          road.heights(x, z, slope);
+        })
+        , tread(greentread::contact::tread_heights(points))
     {
       setup.speed       = 25.;
       setup.time_step   = 3.84e-4 / 25.;
@@ -49,36 +49,35 @@ namespace test
       return greentread::road::synthetic_texture(bands, levels, 3.84e-4, 2048, 96, 11);
     }
 
-    const greentread::road::Texture          texture;
-    const greentread::road::PatchRoad        road;
+    const greentread::road::Texture             texture;
+    const greentread::road::PatchRoad           road;
     const greentread::contact::PatchRoadHeights heights;
-    const Eigen::VectorXd                    tread;
-    greentread::contact::RollingSetup        setup;
+    const Eigen::VectorXd                       tread;
+    greentread::contact::RollingSetup           setup;
   };
 
   /// Both grids' force histories and summaries, from the first grid's static start.
   struct GridRolls
   {
-    std::array<std::vector<Eigen::VectorXd>, 2>              forces;
-    std::array<greentread::contact::RollingSummary, 2>       summary;
-    std::array<greentread::contact::StaticContact, 2>        start;
+    std::array<std::vector<Eigen::VectorXd>, 2>        forces;
+    std::array<greentread::contact::RollingSummary, 2> summary;
+    std::array<greentread::contact::StaticContact, 2>  start;
     /// The largest force over the run, and the largest difference between the grids.
     double peak = 0., worst = 0.;
   };
 
   inline GridRolls
-  roll_on_two_grids(const greentread::modal::PatchModel       &model,
-                    const greentread::contact::ContactGrid    &first,
-                    const greentread::contact::ContactGrid    &second)
+  roll_on_two_grids(const greentread::modal::PatchModel    &model,
+                    const greentread::contact::ContactGrid &first,
+                    const greentread::contact::ContactGrid &second)
   {
     using namespace greentread;
-    const RoadARoll       roll(first.points);
-    const Eigen::MatrixXd G0 = model.static_compliance();
-    GridRolls             r;
+    const RoadARoll             roll(first.points);
+    const Eigen::MatrixXd       G0 = model.static_compliance();
+    GridRolls                   r;
     const contact::ContactGrid *grids[2] = {&first, &second};
     for (unsigned int k = 0; k < 2; ++k)
-      r.start[k] =
-        contact::start_grid_contact(*grids[k], G0, roll.tread, roll.heights, roll.setup);
+      r.start[k] = contact::start_grid_contact(*grids[k], G0, roll.tread, roll.heights, roll.setup);
     for (unsigned int k = 0; k < 2; ++k)
       {
         auto convolution = contact::make_grid_convolution(
@@ -86,8 +85,7 @@ namespace test
                                           roll.setup.n_steps, 0, 1),
           *grids[k]);
         r.summary[k] = contact::roll_patch(*convolution, roll.tread, roll.heights, r.start[0],
-                                           roll.setup,
-                                           [&](const contact::RollingStep &step) {
+                                           roll.setup, [&](const contact::RollingStep &step) {
                                              r.forces[k].push_back(step.force);
                                            });
       }

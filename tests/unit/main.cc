@@ -8,10 +8,11 @@
 struct MpiFixture
 {
   MpiFixture()
-    : mpi(boost::unit_test::framework::master_test_suite().argc,
-          boost::unit_test::framework::master_test_suite().argv,
-          dealii::numbers::invalid_unsigned_int)
-  {}
+      : mpi(boost::unit_test::framework::master_test_suite().argc,
+            boost::unit_test::framework::master_test_suite().argv,
+            dealii::numbers::invalid_unsigned_int)
+  {
+  }
   dealii::Utilities::MPI::MPI_InitFinalize mpi;
 };
 

@@ -13,8 +13,8 @@
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/modal/patch_model.h>
-#include <greentread/road/texture.h>
 #include <greentread/road/patch_road.h>
+#include <greentread/road/texture.h>
 
 #include <Eigen/Core>
 
@@ -29,11 +29,11 @@ namespace test
 {
   struct RollingCase
   {
-    double speed_kmh = 90.;  ///< km/h
-    double load      = 600.; ///< static load [N]
-    double roughness = 1.;   ///< the texture's heights are multiplied by this
-    double dt_factor = 1.;   ///< dt in road samples
-    double distance  = 0.2;  ///< m
+    double speed_kmh = 90.;   ///< km/h
+    double load      = 600.;  ///< static load [N]
+    double roughness = 1.;    ///< the texture's heights are multiplied by this
+    double dt_factor = 1.;    ///< dt in road samples
+    double distance  = 0.2;   ///< m
     bool   direct    = false; ///< direct convolution instead of modal-recursive
     bool   flat      = false; ///< a flat road instead of the texture
 
@@ -50,10 +50,10 @@ namespace test
    * given) receives the static forces.
    */
   inline greentread::contact::RollingSummary
-  roll_on_texture(const greentread::modal::PatchModel                            &model,
-                  const Eigen::VectorXd                                          &tread,
-                  const greentread::road::Texture                                &texture,
-                  const RollingCase                                              &run,
+  roll_on_texture(const greentread::modal::PatchModel                                 &model,
+                  const Eigen::VectorXd                                               &tread,
+                  const greentread::road::Texture                                     &texture,
+                  const RollingCase                                                   &run,
                   const std::function<void(const greentread::contact::RollingStep &)> &observe,
                   Eigen::VectorXd *start = nullptr)
   {
@@ -61,7 +61,7 @@ namespace test
     road::Texture t = texture;
     for (auto &z : t.z)
       z = run.flat ? 0. : z * run.roughness;
-    const road::PatchRoad            road(t, model.points, road::RoadSampling::envelope, "test");
+    const road::PatchRoad           road(t, model.points, road::RoadSampling::envelope, "test");
     const contact::PatchRoadHeights heights = [&road](const double s, Eigen::VectorXd &z,
                                                       Eigen::VectorXd &slope) {
       road.heights(s, z, slope);
@@ -71,8 +71,8 @@ namespace test
     setup.time_step   = run.time_step(texture);
     setup.n_steps     = static_cast<unsigned int>(run.distance / (setup.speed * setup.time_step));
     setup.static_load = run.load;
-    setup.convolution = run.direct ? convolution::Method::direct :
-                                     convolution::Method::modal_recursive;
+    setup.convolution =
+      run.direct ? convolution::Method::direct : convolution::Method::modal_recursive;
     const auto eq = contact::start_contact(model.static_compliance(), tread, heights, setup);
     if (start)
       *start = eq.q;
@@ -108,27 +108,30 @@ namespace test
    * every point on or above the road, and every loaded point on it.
    */
   inline RunCheck
-  check_run(const greentread::modal::PatchModel &model,
-            const double                         dt,
-            const std::function<void(const std::function<void(const greentread::contact::RollingStep &)> &,
-                                     Eigen::VectorXd &start_force)> &roll)
+  check_run(
+    const greentread::modal::PatchModel                     &model,
+    const double                                             dt,
+    const std::function<void(const std::function<void(const greentread::contact::RollingStep &)> &,
+                             Eigen::VectorXd &start_force)> &roll)
   {
     RunCheck                     c;
     std::vector<Eigen::VectorXd> q(1), d(1);
-    roll([&](const greentread::contact::RollingStep &s) {
-      const double largest = std::max(s.force.maxCoeff(), 1e-300);
-      c.negative_force     = std::min(c.negative_force, s.force.minCoeff() / largest);
-      if (s.report.lcp_matrix)
-        {
-          const Complementarity lcp =
-            complementarity(*s.report.lcp_matrix, s.report.lcp_q, s.report.lcp_z);
-          c.lcp_gap             = std::min(c.lcp_gap, lcp.gap);
-          c.lcp_complementarity = std::max({c.lcp_complementarity, lcp.natural, lcp.product});
-        }
-      c.projected = std::max(c.projected, s.report.lcp_projected);
-      q.push_back(s.report.lcp_z);
-      d.push_back(s.d);
-    }, q[0]);
+    roll(
+      [&](const greentread::contact::RollingStep &s) {
+        const double largest = std::max(s.force.maxCoeff(), 1e-300);
+        c.negative_force     = std::min(c.negative_force, s.force.minCoeff() / largest);
+        if (s.report.lcp_matrix)
+          {
+            const Complementarity lcp =
+              complementarity(*s.report.lcp_matrix, s.report.lcp_q, s.report.lcp_z);
+            c.lcp_gap             = std::min(c.lcp_gap, lcp.gap);
+            c.lcp_complementarity = std::max({c.lcp_complementarity, lcp.natural, lcp.product});
+          }
+        c.projected = std::max(c.projected, s.report.lcp_projected);
+        q.push_back(s.report.lcp_z);
+        d.push_back(s.d);
+      },
+      q[0]);
     const auto u     = synthesise_displacements(model, dt, q);
     double     scale = 0.;
     for (std::size_t n = 1; n < u.size(); ++n)
@@ -187,24 +190,22 @@ namespace test
       {
         greentread::contact::RollingSummary s;
         const RunCheck                      checked = check_run(
-          model, c.run.time_step(texture),
-          [&](const std::function<void(const greentread::contact::RollingStep &)> &observe,
-              Eigen::VectorXd &start) {
+                               model, c.run.time_step(texture),
+                               [&](const std::function<void(const greentread::contact::RollingStep &)> &observe,
+              Eigen::VectorXd                                                     &start) {
             s = roll_on_texture(model, tread, texture, c.run, observe, &start);
           });
         const double mean = s.impulse / (s.steps * c.run.time_step(texture));
-        BOOST_TEST_MESSAGE(c.name << ": " << s.steps << " steps, points in contact "
-                                  << 100. * s.min_contact_fraction << "% to "
-                                  << 100. * s.max_contact_fraction << "%, mean force " << mean
-                                  << " N (static " << c.run.load << " N), failed steps "
-                                  << s.failed_steps << "; LCP measured here: gap down to "
-                                  << checked.lcp_gap << ", complementarity "
-                                  << checked.lcp_complementarity << ", projection "
-                                  << checked.projected << "; step force down to "
-                                  << checked.negative_force
-                                  << " of the largest; synthesised displacement: penetration "
-                                  << checked.penetration << ", loaded points off the road "
-                                  << checked.gap_in_contact << " of the displacement change");
+        BOOST_TEST_MESSAGE(
+          c.name << ": " << s.steps << " steps, points in contact " << 100. * s.min_contact_fraction
+                 << "% to " << 100. * s.max_contact_fraction << "%, mean force " << mean
+                 << " N (static " << c.run.load << " N), failed steps " << s.failed_steps
+                 << "; LCP measured here: gap down to " << checked.lcp_gap << ", complementarity "
+                 << checked.lcp_complementarity << ", projection " << checked.projected
+                 << "; step force down to " << checked.negative_force
+                 << " of the largest; synthesised displacement: penetration " << checked.penetration
+                 << ", loaded points off the road " << checked.gap_in_contact
+                 << " of the displacement change");
         BOOST_TEST(s.failed_steps == 0u, "first failure: " << s.first_failure);
         BOOST_TEST(checked.lcp_gap >= -2e-10);
         BOOST_TEST(checked.lcp_complementarity <= 2e-10);

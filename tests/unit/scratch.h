@@ -15,7 +15,7 @@ namespace test
   inline std::filesystem::path
   scratch_directory(const std::string &name)
   {
-    namespace fs  = std::filesystem;
+    namespace fs = std::filesystem;
     const fs::path dir =
       fs::path(GREENTREAD_SCRATCH_DIR) / (name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);

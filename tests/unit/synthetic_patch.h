@@ -28,8 +28,8 @@ namespace test
   inline greentread::modal::PatchModel
   synthetic_patch(const double zeta = 0.05, const bool local = true)
   {
-    const unsigned int nx = 4, ny = 3, n = nx * ny;
-    const double       dx = 6e-3, dy = 7e-3;
+    const unsigned int            nx = 4, ny = 3, n = nx * ny;
+    const double                  dx = 6e-3, dy = 7e-3;
     greentread::modal::PatchModel m;
     for (unsigned int i = 0; i < nx; ++i)
       for (unsigned int j = 0; j < ny; ++j)
@@ -56,8 +56,8 @@ namespace test
         for (unsigned int p = 0; p < n; ++p)
           for (unsigned int q = 0; q < n; ++q)
             {
-              const double r = std::hypot((m.points[p][0] - m.points[q][0]) / dx,
-                                          (m.points[p][1] - m.points[q][1]) / dy);
+              const double r        = std::hypot((m.points[p][0] - m.points[q][0]) / dx,
+                                                 (m.points[p][1] - m.points[q][1]) / dy);
               m.instantaneous(p, q) = r < 1e-9 ? 5e-6 : (r < 1.01 ? 1e-6 : 0.);
             }
       }

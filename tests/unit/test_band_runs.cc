@@ -61,21 +61,21 @@ BOOST_AUTO_TEST_CASE(the_record_for_a_target_is_the_shortest)
   const auto   bands = analysis::third_octave_bands(250., 1000.);
   for (const double target : {0.5, 1., 2.})
     {
-      const std::size_t N = analysis::samples_for_error(dt, bands, 8, target, 100, 10000000);
-      const auto        met = analysis::predicted_standard_errors(N, dt, bands, 8);
+      const std::size_t N     = analysis::samples_for_error(dt, bands, 8, target, 100, 10000000);
+      const auto        met   = analysis::predicted_standard_errors(N, dt, bands, 8);
       double            worst = 0.;
       for (const double e : met)
         worst = std::max(worst, e);
       BOOST_TEST(worst <= target);
       // One sample less misses it somewhere (bisection on a prediction that
       // does not rise with the record).
-      const auto short_of = analysis::predicted_standard_errors(N - 1, dt, bands, 8);
+      const auto short_of    = analysis::predicted_standard_errors(N - 1, dt, bands, 8);
       double     worst_short = 0.;
       for (const double e : short_of)
         worst_short = std::max(worst_short, e);
       BOOST_TEST(worst_short > target);
-      BOOST_TEST_MESSAGE("target " << target << " dB from 250 Hz to 1 kHz at dt = 76.8 us: "
-                                   << N << " samples, " << N * dt << " s, " << N * dt * 25.
+      BOOST_TEST_MESSAGE("target " << target << " dB from 250 Hz to 1 kHz at dt = 76.8 us: " << N
+                                   << " samples, " << N * dt << " s, " << N * dt * 25.
                                    << " m at 90 km/h");
     }
   // Out of reach within the limit: the limit plus one.
@@ -85,8 +85,8 @@ BOOST_AUTO_TEST_CASE(the_record_for_a_target_is_the_shortest)
 BOOST_AUTO_TEST_CASE(the_plan_adds_a_low_rate_run_only_where_it_is_needed)
 {
   analysis::SpectraParameters spectra; // 1 dB from 250 Hz, 76.8 us up to 1 kHz
-  const double                V  = 25.;
-  const double                dt = 0.384e-3 / V;
+  const double                V    = 25.;
+  const double                dt   = 0.384e-3 / V;
   const auto                  plan = analysis::plan_band_runs(spectra, V, dt, 2., 5000.);
   BOOST_TEST_REQUIRE(plan.size() == 2u);
   BOOST_TEST(plan[0].name.empty());
@@ -103,9 +103,8 @@ BOOST_AUTO_TEST_CASE(the_plan_adds_a_low_rate_run_only_where_it_is_needed)
     plan[1].steps, plan[1].time_step, analysis::third_octave_bands(250., 1000.), 8);
   for (const double e : errors)
     BOOST_TEST(e <= 1.);
-  BOOST_TEST_MESSAGE("90 km/h, 1 dB from 250 Hz: the low-rate run rolls " << plan[1].distance
-                                                                          << " m, " << plan[1].steps
-                                                                          << " steps");
+  BOOST_TEST_MESSAGE("90 km/h, 1 dB from 250 Hz: the low-rate run rolls "
+                     << plan[1].distance << " m, " << plan[1].steps << " steps");
 
   // A distance that already meets the target: one run.
   const auto long_enough = analysis::plan_band_runs(spectra, V, dt, plan[1].distance, 5000.);
@@ -119,8 +118,8 @@ BOOST_AUTO_TEST_CASE(the_plan_adds_a_low_rate_run_only_where_it_is_needed)
   BOOST_TEST(analysis::plan_band_runs(spectra, V, dt, 2., 5000.).size() == 1u);
   // Out of reach within the longest distance: flagged, at that distance.
   spectra.low_band_time_step = 76.8e-6;
-  spectra.longest_distance     = 3.;
-  const auto capped            = analysis::plan_band_runs(spectra, V, dt, 2., 5000.);
+  spectra.longest_distance   = 3.;
+  const auto capped          = analysis::plan_band_runs(spectra, V, dt, 2., 5000.);
   BOOST_TEST_REQUIRE(capped.size() == 2u);
   BOOST_TEST(capped[1].target_out_of_reach);
   BOOST_TEST(capped[1].distance == 3., boost::test_tools::tolerance(1e-3));
@@ -156,7 +155,7 @@ BOOST_AUTO_TEST_CASE(multi_rate_agrees_with_one_rate_within_the_error_bars)
   // from 0.5 s of a third at the full rate. Each band's two levels agree
   // within 3 combined standard errors, and the merged spectrum carries each
   // band's own step and duration.
-  const double dt = 5e-5;
+  const double dt      = 5e-5;
   const auto   process = [&](const unsigned seed, const std::size_t N) {
     std::mt19937                      random(seed);
     std::normal_distribution<double>  normal(0., 1.);
@@ -177,25 +176,26 @@ BOOST_AUTO_TEST_CASE(multi_rate_agrees_with_one_rate_within_the_error_bars)
       x[n] = back[n].real();
     return x;
   };
-  const auto one_rate = analysis::welch_band_spectrum(process(1, 80000), dt, 1., 100., 1600., 8);
-  const auto fine     = analysis::welch_band_spectrum(process(2, 10000), dt, 1., 100., 1600., 8);
+  const auto one_rate    = analysis::welch_band_spectrum(process(1, 80000), dt, 1., 100., 1600., 8);
+  const auto fine        = analysis::welch_band_spectrum(process(2, 10000), dt, 1., 100., 1600., 8);
   const auto long_record = process(3, 80000);
   std::vector<double> coarse;
   for (std::size_t n = 0; n < long_record.size(); n += 5)
     coarse.push_back(long_record[n]);
-  const auto low = analysis::welch_band_spectrum(coarse, 5. * dt, 1., 100., 1000., 8);
+  const auto        low = analysis::welch_band_spectrum(coarse, 5. * dt, 1., 100., 1000., 8);
   analysis::BandRun low_run;
-  low_run.name   = "low-rate";
-  low_run.f_high = 1000.;
+  low_run.name      = "low-rate";
+  low_run.f_high    = 1000.;
   const auto merged = analysis::merge_band_spectra(fine, low, low_run);
   BOOST_TEST_REQUIRE(merged.bands.size() == one_rate.bands.size());
   for (std::size_t b = 0; b < merged.bands.size(); ++b)
     {
       const bool   from_low = merged.bands[b].nominal <= 1000.;
-      const double se = std::hypot(merged.standard_error[b], one_rate.standard_error[b]);
+      const double se       = std::hypot(merged.standard_error[b], one_rate.standard_error[b]);
       BOOST_TEST_MESSAGE(merged.bands[b].nominal << " Hz: multi-rate " << merged.level[b] << " +- "
-                         << merged.standard_error[b] << " dB, one rate " << one_rate.level[b]
-                         << " +- " << one_rate.standard_error[b] << " dB");
+                                                 << merged.standard_error[b] << " dB, one rate "
+                                                 << one_rate.level[b] << " +- "
+                                                 << one_rate.standard_error[b] << " dB");
       BOOST_TEST(std::abs(merged.level[b] - one_rate.level[b]) <= 3. * se,
                  merged.bands[b].nominal << " Hz");
       BOOST_TEST(merged.time_step[b] == (from_low ? 5. * dt : dt));
@@ -211,11 +211,12 @@ BOOST_AUTO_TEST_CASE(multi_rate_agrees_with_one_rate_within_the_error_bars)
   low_run.f_high = 1000.;
   BOOST_TEST(analysis::low_rate_disagreement(fine, low, low_run).empty(),
              analysis::low_rate_disagreement(fine, low, low_run));
-  auto ringing = low;
-  const auto at_800 = std::find_if(ringing.bands.begin(), ringing.bands.end(),
-                                   [](const analysis::FrequencyBand &band) {
+  auto       ringing = low;
+  const auto at_800  = std::find_if(ringing.bands.begin(), ringing.bands.end(),
+                                    [](const analysis::FrequencyBand &band) {
                                      return band.nominal == 800.;
-                                   }) - ringing.bands.begin();
+                                   }) -
+                      ringing.bands.begin();
   ringing.level[at_800] += 10.;
   const std::string named = analysis::low_rate_disagreement(fine, ringing, low_run);
   BOOST_TEST_MESSAGE("a low-rate band 10 dB off: " << named);
@@ -245,8 +246,8 @@ BOOST_AUTO_TEST_CASE(a_run_extends_until_its_observed_errors_meet_the_target)
   // The rule on signals sampled at the low-rate step, from the record the
   // Gaussian prediction plans (as the program does): extended until the
   // bands from 250 Hz to 1 kHz meet 1 dB.
-  const double h     = 76.8e-6;
-  const auto   bands = analysis::third_octave_bands(250., 1000.);
+  const double       h     = 76.8e-6;
+  const auto         bands = analysis::third_octave_bands(250., 1000.);
   const unsigned int gaussian_record =
     analysis::samples_for_error(h, bands, 8, 1., 100, 10000000); // the closed form
   analysis::BandRun run;
@@ -254,13 +255,13 @@ BOOST_AUTO_TEST_CASE(a_run_extends_until_its_observed_errors_meet_the_target)
   run.f_low         = 100.;
   run.f_high        = 1000.;
   run.longest_steps = 400000;
-  std::mt19937                     random(11);
-  std::normal_distribution<double> normal(0., 1.);
+  std::mt19937                          random(11);
+  std::normal_distribution<double>      normal(0., 1.);
   std::exponential_distribution<double> on_off(1. / 0.05); // 50 ms on and off, on average
   for (const bool gated : {false, true})
     {
       std::vector<double> x(run.longest_steps);
-      bool                on = true;
+      bool                on        = true;
       double              switch_at = on_off(random);
       for (std::size_t n = 0; n < x.size(); ++n)
         {

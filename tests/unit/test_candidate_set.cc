@@ -99,8 +99,8 @@ BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
   const auto                 coarse = test::coarse_points(10, 12, false);
   const Eigen::MatrixXd      G      = coarse_compliance(coarse);
   const contact::ContactGrid dense(coarse, 2, tread_layer), free(coarse, 2, tread_layer, true);
-  const Eigen::MatrixXd      W = dense.compliance(G);
-  const unsigned int         n = free.n_points();
+  const Eigen::MatrixXd      W             = dense.compliance(G);
+  const unsigned int         n             = free.n_points();
   const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     free.apply(G, x, y);
   };
@@ -109,14 +109,15 @@ BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
                                            Eigen::MatrixXd                 &out) {
     free.block(G, rows, columns, out);
   };
-  const Eigen::VectorXd d  = 3e-5 * random_vector(n, 1) - Eigen::VectorXd::Constant(n, 2e-5);
-  const Eigen::VectorXd d2 = d + 2e-6 * random_vector(n, 2);
+  const Eigen::VectorXd       d  = 3e-5 * random_vector(n, 1) - Eigen::VectorXd::Constant(n, 2e-5);
+  const Eigen::VectorXd       d2 = d + 2e-6 * random_vector(n, 2);
   contact::ProjectedCgOptions options;
   options.operator_norm = contact::operator_norm(product, n);
   unsigned int cold_set = 0, warm_set = 0;
-  const auto   cold  = contact::solve_lcp_candidate_set(product, block, -d, {}, options, &cold_set);
-  const auto   warm  = contact::solve_lcp_candidate_set(product, block, -d2, cold.z, options, &warm_set);
-  const auto   whole = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
+  const auto   cold = contact::solve_lcp_candidate_set(product, block, -d, {}, options, &cold_set);
+  const auto   warm =
+    contact::solve_lcp_candidate_set(product, block, -d2, cold.z, options, &warm_set);
+  const auto        whole = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
   std::vector<bool> none;
   const auto        pivoting = contact::solve_lcp(W, -d2, none);
   unsigned int      n_active = 0, n_demand = 0;
@@ -162,8 +163,7 @@ BOOST_AUTO_TEST_CASE(a_point_pulled_into_the_road_joins_the_set)
     y = W * x;
   };
   unsigned int set = 0;
-  const auto   r   = contact::solve_lcp_candidate_set(product, dense_block(W),
-                                                  q, {}, {}, &set);
+  const auto   r   = contact::solve_lcp_candidate_set(product, dense_block(W), q, {}, {}, &set);
   BOOST_TEST(r.converged);
   BOOST_TEST(set == 2u);
   BOOST_TEST(std::abs(r.z[0] - 19. / 15.) < 1e-9);
@@ -173,14 +173,14 @@ BOOST_AUTO_TEST_CASE(a_point_pulled_into_the_road_joins_the_set)
 
 BOOST_AUTO_TEST_CASE(edge_cases)
 {
-  const Eigen::MatrixXd            W = 2. * Eigen::MatrixXd::Identity(6, 6);
+  const Eigen::MatrixXd            W       = 2. * Eigen::MatrixXd::Identity(6, 6);
   const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     y = W * x;
   };
   // No point below the road: no candidate, one product to check it, z = 0.
   unsigned int set  = 99;
   const auto   none = contact::solve_lcp_candidate_set(product, dense_block(W),
-                                                     Eigen::VectorXd::Ones(6), {}, {}, &set);
+                                                       Eigen::VectorXd::Ones(6), {}, {}, &set);
   BOOST_TEST(none.converged);
   BOOST_TEST(set == 0u);
   BOOST_TEST(none.iterations == 1u);
@@ -203,14 +203,14 @@ BOOST_AUTO_TEST_CASE(edge_cases)
   // Not positive definite on the set: reported, not a wrong answer.
   Eigen::VectorXd diagonal(3);
   diagonal << 1., -1., 1.;
-  const Eigen::MatrixXd indefinite = diagonal.asDiagonal();
-  const contact::SymmetricOperator bad = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+  const Eigen::MatrixXd            indefinite = diagonal.asDiagonal();
+  const contact::SymmetricOperator bad        = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     y = indefinite * x;
   };
   contact::ProjectedCgOptions options;
   options.operator_norm = 1.;
-  const auto failed = contact::solve_lcp_candidate_set(bad, dense_block(indefinite),
-                                                       diagonal, {}, options);
+  const auto failed =
+    contact::solve_lcp_candidate_set(bad, dense_block(indefinite), diagonal, {}, options);
   BOOST_TEST(!failed.converged);
   BOOST_TEST(failed.message.find("not positive") != std::string::npos);
 }
@@ -223,13 +223,14 @@ BOOST_AUTO_TEST_CASE(rolling_on_the_candidate_set_is_rolling_on_the_whole_grid)
   // not the default 1e-6), so their forces may differ by about that times
   // the compliance's condition; measured 1.3e-10 of the peak, bound 3 times
   // that.
-  const auto                      coarse = test::coarse_points(4, 3, false);
-  const unsigned int              n_c    = coarse.size();
-  const synthesis::ModeSynthesis  s      = test::synthetic_modes(coarse);
-  const modal::PatchModel model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+  const auto                     coarse = test::coarse_points(4, 3, false);
+  const unsigned int             n_c    = coarse.size();
+  const synthesis::ModeSynthesis s      = test::synthetic_modes(coarse);
+  const modal::PatchModel        model =
+    synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
   const contact::ContactGrid candidates(coarse, 4, tread_layer, true, true, 1e-10),
     whole(coarse, 4, tread_layer, true, false, 1e-10);
-  const test::GridRolls r = test::roll_on_two_grids(model, whole, candidates);
+  const test::GridRolls r       = test::roll_on_two_grids(model, whole, candidates);
   const auto           &summary = r.summary;
   const double          peak = r.peak, worst = r.worst;
   BOOST_TEST_MESSAGE("rolling on " << whole.n_points() << " points, candidate set against the "

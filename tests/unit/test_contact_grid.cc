@@ -10,9 +10,9 @@
 #include <greentread/contact/lcp.h>
 #include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/road/texture.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <Eigen/Dense>
 
@@ -104,21 +104,23 @@ BOOST_AUTO_TEST_CASE(coarse_means_are_the_green_functions_response)
   const Eigen::MatrixXd G      = coarse_compliance(coarse);
   for (const unsigned int s : {2u, 3u})
     {
-      const contact::ContactGrid grid(coarse, s, tread_layer);
-      const Eigen::MatrixXd      W = grid.compliance(G);
-      std::mt19937               rng(s);
+      const contact::ContactGrid             grid(coarse, s, tread_layer);
+      const Eigen::MatrixXd                  W = grid.compliance(G);
+      std::mt19937                           rng(s);
       std::uniform_real_distribution<double> u(0., 1.);
-      Eigen::VectorXd f(grid.n_points());
+      Eigen::VectorXd                        f(grid.n_points());
       for (auto &x : f)
         x = u(rng);
-      const Eigen::VectorXd mean_u = grid.gather(W * f) / (s * s);
+      const Eigen::VectorXd mean_u   = grid.gather(W * f) / (s * s);
       const Eigen::VectorXd coarse_u = G * grid.gather(f);
-      BOOST_TEST((mean_u - coarse_u).cwiseAbs().maxCoeff() < 1e-13 * coarse_u.cwiseAbs().maxCoeff());
+      BOOST_TEST((mean_u - coarse_u).cwiseAbs().maxCoeff() <
+                 1e-13 * coarse_u.cwiseAbs().maxCoeff());
       BOOST_TEST((W - W.transpose()).cwiseAbs().maxCoeff() == 0.);
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> local(grid.local), all(W);
-      BOOST_TEST_MESSAGE("s = " << s << ": local term's eigenvalues " << local.eigenvalues().minCoeff()
-                                << " to " << local.eigenvalues().maxCoeff()
-                                << "; compliance's smallest " << all.eigenvalues().minCoeff());
+      BOOST_TEST_MESSAGE("s = " << s << ": local term's eigenvalues "
+                                << local.eigenvalues().minCoeff() << " to "
+                                << local.eigenvalues().maxCoeff() << "; compliance's smallest "
+                                << all.eigenvalues().minCoeff());
       BOOST_TEST(local.eigenvalues().minCoeff() > -1e-12 * local.eigenvalues().maxCoeff());
       BOOST_TEST(all.eigenvalues().minCoeff() > 0.);
     }
@@ -141,7 +143,8 @@ BOOST_AUTO_TEST_CASE(split_against_the_layer_on_the_fine_grid)
       // Lc in the coarse points' (shuffled) order.
       Eigen::MatrixXd Lc(36, 36);
       const auto      lattice_index = [&](const std::array<double, 3> &p) {
-        const unsigned int ix = std::lround(p[0] / 6e-3 + 2.5), iy = std::lround(p[1] / (0.08 / 12) + 2.5);
+        const unsigned int ix = std::lround(p[0] / 6e-3 + 2.5),
+                           iy = std::lround(p[1] / (0.08 / 12) + 2.5);
         return ix * 6 + iy;
       };
       for (unsigned int a = 0; a < 36; ++a)
@@ -150,13 +153,15 @@ BOOST_AUTO_TEST_CASE(split_against_the_layer_on_the_fine_grid)
       const Eigen::MatrixXd split = grid.compliance(Lc);
       const Eigen::MatrixXd direct =
         contact::layer_patch_compliance(tread_layer, grid.dx, grid.dy, grid.nx, grid.ny, margin);
-      const double driving = ((split.diagonal() - direct.diagonal()).array() / direct.diagonal().array())
-                               .abs()
-                               .maxCoeff();
+      const double driving =
+        ((split.diagonal() - direct.diagonal()).array() / direct.diagonal().array())
+          .abs()
+          .maxCoeff();
       const Eigen::VectorXd uniform = Eigen::VectorXd::Ones(grid.n_points());
       const double          energy_uniform =
         uniform.dot(split * uniform) / uniform.dot(direct * uniform) - 1.;
-      BOOST_TEST_MESSAGE("s = " << s << ": split against the layer on the fine grid, driving points "
+      BOOST_TEST_MESSAGE("s = " << s
+                                << ": split against the layer on the fine grid, driving points "
                                 << driving << ", uniform force's energy " << energy_uniform);
       // A uniform force has no variation within the cells: exact but for
       // the two layer series' own periods (whole numbers of their
@@ -175,13 +180,14 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
   // 2 x 2 grid by the grid's convolution, against the same model written
   // out on every contact point (shapes repeated over each cell's points,
   // G_r replaced by the grid's compliance of G_r) with the plain recursion.
-  const auto                 coarse = coarse_points(4, 3);
-  const unsigned int         n_c    = coarse.size();
+  const auto                     coarse = coarse_points(4, 3);
+  const unsigned int             n_c    = coarse.size();
   const synthesis::ModeSynthesis s      = test::synthetic_modes(coarse);
-  const modal::PatchModel coarse_model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+  const modal::PatchModel        coarse_model =
+    synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid grid(coarse, 2, tread_layer);
-  synthesis::ModeSynthesis       f = s;
+  synthesis::ModeSynthesis   f = s;
   f.shapes.resize(s.shapes.rows(), grid.n_points());
   for (unsigned int p = 0; p < grid.n_points(); ++p)
     f.shapes.col(p) = s.shapes.col(grid.coarse_of[p]);
@@ -203,13 +209,17 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
   std::vector<Eigen::VectorXd> reference, split;
   auto plain = contact::make_patch_convolution(setup.convolution, fine_model, setup.time_step,
                                                setup.n_steps, 0, 1);
-  contact::roll_patch(*plain, tread, heights, start, setup,
-                      [&](const contact::RollingStep &step) { reference.push_back(step.force); });
+  contact::roll_patch(*plain, tread, heights, start, setup, [&](const contact::RollingStep &step) {
+    reference.push_back(step.force);
+  });
   auto gridded = contact::make_grid_convolution(
-    contact::make_patch_convolution(setup.convolution, coarse_model, setup.time_step, setup.n_steps, 0, 1),
+    contact::make_patch_convolution(setup.convolution, coarse_model, setup.time_step, setup.n_steps,
+                                    0, 1),
     grid);
   const auto summary = contact::roll_patch(*gridded, tread, heights, start, setup,
-                                           [&](const contact::RollingStep &step) { split.push_back(step.force); });
+                                           [&](const contact::RollingStep &step) {
+                                             split.push_back(step.force);
+                                           });
   BOOST_TEST(summary.failed_steps == 0u);
   double peak = 0., worst = 0.;
   for (std::size_t k = 0; k < reference.size(); ++k)
@@ -230,12 +240,12 @@ BOOST_AUTO_TEST_CASE(warm_started_lcp_of_a_fine_grid_against_siconos)
   // The LCP of a 480-point grid (the coarse compliance of 10 x 12 cells, 2 x
   // 2 contact points each) for a rough demand, solved cold, then warm from a
   // nearby demand with the matrix norm given once, against Siconos' Lemke.
-  const auto                 coarse = coarse_points(10, 12);
-  const contact::ContactGrid grid(coarse, 2, tread_layer);
-  const Eigen::MatrixXd      W = grid.compliance(coarse_compliance(coarse));
-  std::mt19937               rng(1);
+  const auto                       coarse = coarse_points(10, 12);
+  const contact::ContactGrid       grid(coarse, 2, tread_layer);
+  const Eigen::MatrixXd            W = grid.compliance(coarse_compliance(coarse));
+  std::mt19937                     rng(1);
   std::normal_distribution<double> z(0., 1.);
-  Eigen::VectorXd            d(grid.n_points());
+  Eigen::VectorXd                  d(grid.n_points());
   for (auto &x : d)
     x = 3e-5 * z(rng) - 2e-5;
   const double      m = contact::lcp_matrix_norm(W);
@@ -246,17 +256,17 @@ BOOST_AUTO_TEST_CASE(warm_started_lcp_of_a_fine_grid_against_siconos)
   for (auto &x : d2)
     x += 2e-6 * z(rng);
   contact::LcpOptions options;
-  options.matrix_norm = m;
-  const auto warm     = contact::solve_lcp(W, -d2, active, options);
+  options.matrix_norm    = m;
+  const auto        warm = contact::solve_lcp(W, -d2, active, options);
   std::vector<bool> none;
-  const auto        plain = contact::solve_lcp(W, -d2, none);
+  const auto        plain     = contact::solve_lcp(W, -d2, none);
   const auto        reference = test::siconos_lemke(W, -d2);
   unsigned int      n_active  = 0;
   for (unsigned int i = 0; i < grid.n_points(); ++i)
     n_active += warm.z[i] > 0.;
   BOOST_TEST_MESSAGE("480 points, " << n_active << " in contact: cold " << cold.iterations
-                                    << " iterations, warm " << warm.iterations
-                                    << ", from nothing " << plain.iterations);
+                                    << " iterations, warm " << warm.iterations << ", from nothing "
+                                    << plain.iterations);
   BOOST_TEST(warm.converged);
   BOOST_TEST(n_active > 20u);
   BOOST_TEST(warm.iterations <= plain.iterations);

@@ -57,8 +57,12 @@ namespace
   std::unique_ptr<convolution::DirectConvolution>
   direct(const sdof::Oscillator &osc, double dt, unsigned int n, double threshold = 0.)
   {
-    const auto g  = [&osc](double t) { return osc.green(t); };
-    const auto dg = [&osc](double t) { return osc.green_derivative(t); };
+    const auto g = [&osc](double t) {
+      return osc.green(t);
+    };
+    const auto dg = [&osc](double t) {
+      return osc.green_derivative(t);
+    };
     return std::make_unique<convolution::DirectConvolution>(
       g, dg, dt, convolution::truncation_length(g, dt, threshold, n), n,
       osc.natural_frequency() * (1. + osc.damping_ratio()));
@@ -74,13 +78,13 @@ BOOST_AUTO_TEST_CASE(direct_equals_modal_recursive)
   for (const double xi : {0., 0.02, 1., 2.})
     for (const double dt : {1e-6, 1e-4, 1e-3})
       {
-        const sdof::Oscillator osc(test::oscillator_parameters(xi));
-        const unsigned int     n     = 3000;
-        const auto             loads = random_loads(n, 7);
-        auto                   d     = direct(osc, dt, n);
+        const sdof::Oscillator                 osc(test::oscillator_parameters(xi));
+        const unsigned int                     n     = 3000;
+        const auto                             loads = random_loads(n, 7);
+        auto                                   d     = direct(osc, dt, n);
         convolution::ModalRecursiveConvolution m(osc.modal_model(), dt);
-        const auto a = run(*d, loads), b = run(m, loads);
-        double     u_max = 0., v_max = 0., du = 0., dv = 0.;
+        const auto                             a = run(*d, loads), b = run(m, loads);
+        double                                 u_max = 0., v_max = 0., du = 0., dv = 0.;
         for (unsigned int i = 0; i < n; ++i)
           {
             u_max = std::max(u_max, std::abs(b[i].u));
@@ -102,10 +106,10 @@ BOOST_AUTO_TEST_CASE(modal_recursive_against_odeint)
   // impulses as velocity jumps: the recursion's weights are exact.
   for (const double xi : {0.02, 1., 2.})
     {
-      const sdof::Oscillator osc(test::oscillator_parameters(xi));
-      const double           dt    = 2e-4;
-      const unsigned int     n     = 400;
-      const auto             loads = random_loads(n, 11);
+      const sdof::Oscillator                 osc(test::oscillator_parameters(xi));
+      const double                           dt    = 2e-4;
+      const unsigned int                     n     = 400;
+      const auto                             loads = random_loads(n, 11);
       convolution::ModalRecursiveConvolution m(osc.modal_model(), dt);
       const auto                             r = run(m, loads);
       double                                 u = 0., v = 0., err_u = 0., err_v = 0., u_max = 0.;
@@ -115,10 +119,13 @@ BOOST_AUTO_TEST_CASE(modal_recursive_against_odeint)
           const double    t0 = i * dt;
           v += q.impulse_start / osc.mass();
           const auto x = test::integrate(
-            osc, [&](double t) { return q.start + (q.end - q.start) * (t - t0) / dt; }, u, v, t0,
-            t0 + dt);
-          u = x[0];
-          v = x[1] + q.impulse_end / osc.mass();
+            osc,
+            [&](double t) {
+              return q.start + (q.end - q.start) * (t - t0) / dt;
+            },
+            u, v, t0, t0 + dt);
+          u     = x[0];
+          v     = x[1] + q.impulse_end / osc.mass();
           err_u = std::max(err_u, std::abs(u - r[i].u));
           err_v = std::max(err_v, std::abs(v - r[i].v));
           u_max = std::max(u_max, std::abs(u));
@@ -135,14 +142,14 @@ BOOST_AUTO_TEST_CASE(modal_paper_within_quadrature_error)
 {
   // Eq. (15) with two Gauss points per step is 4th order in omega dt: at
   // omega dt = 0.063 it must agree with the exact recursion to about 1e-6.
-  const sdof::Oscillator osc(test::oscillator_parameters(0.02));
-  const double           dt    = 1e-4;
-  const unsigned int     n     = 2000;
-  const auto             loads = random_loads(n, 3);
+  const sdof::Oscillator                 osc(test::oscillator_parameters(0.02));
+  const double                           dt    = 1e-4;
+  const unsigned int                     n     = 2000;
+  const auto                             loads = random_loads(n, 3);
   convolution::ModalRecursiveConvolution m(osc.modal_model(), dt);
   convolution::ModalPaperConvolution     p(osc.modal_model(), dt);
-  const auto a = run(m, loads), b = run(p, loads);
-  double     du = 0., u_max = 0.;
+  const auto                             a = run(m, loads), b = run(p, loads);
+  double                                 du = 0., u_max = 0.;
   for (unsigned int i = 0; i < n; ++i)
     {
       du    = std::max(du, std::abs(a[i].u - b[i].u));
@@ -181,10 +188,12 @@ BOOST_AUTO_TEST_CASE(truncation_by_the_paper_rule)
 {
   // Envelope exp(-xi w0 t) falls to 1% at t = ln(100) / (xi w0) = 0.364 s.
   const sdof::Oscillator osc(test::oscillator_parameters(0.02));
-  const auto             g  = [&osc](double t) { return osc.green(t); };
-  const double           dt = 1e-4;
-  const unsigned int     ng = convolution::truncation_length(g, dt, 0.01, 100000);
-  double                 largest = 0.;
+  const auto             g = [&osc](double t) {
+    return osc.green(t);
+  };
+  const double       dt      = 1e-4;
+  const unsigned int ng      = convolution::truncation_length(g, dt, 0.01, 100000);
+  double             largest = 0.;
   for (unsigned int m = 0; m < 100000; ++m)
     largest = std::max(largest, std::abs(g(m * dt)));
   BOOST_TEST(std::abs(g((ng - 1) * dt)) >= 0.01 * largest);

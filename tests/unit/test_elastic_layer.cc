@@ -46,8 +46,8 @@ namespace
     using namespace dealii;
     Triangulation<2> tria;
     const double     width = 2. * M_PI / k;
-    GridGenerator::subdivided_hyper_rectangle(tria, {24, 12}, Point<2>(0., 0.),
-                                              Point<2>(width, 1.), true);
+    GridGenerator::subdivided_hyper_rectangle(tria, {24, 12}, Point<2>(0., 0.), Point<2>(width, 1.),
+                                              true);
     const FESystem<2> fe(FE_Q<2>(3), 2);
     DoFHandler<2>     dof(tria);
     dof.distribute_dofs(fe);
@@ -62,16 +62,16 @@ namespace
     SparseMatrix<double> K(pattern);
     Vector<double>       f(dof.n_dofs()), u(dof.n_dofs());
 
-    const double                     mu = E / (2. * (1. + nu)), lambda = 2. * mu * nu / (1. - 2. * nu);
-    const QGauss<2>                  quadrature(5);
-    const QGauss<1>                  face_quadrature(5);
-    FEValues<2>                      values(fe, quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<2>                  face(fe, face_quadrature,
+    const double    mu = E / (2. * (1. + nu)), lambda = 2. * mu * nu / (1. - 2. * nu);
+    const QGauss<2> quadrature(5);
+    const QGauss<1> face_quadrature(5);
+    FEValues<2>     values(fe, quadrature, update_gradients | update_JxW_values);
+    FEFaceValues<2> face(fe, face_quadrature,
                          update_values | update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector disp(0);
-    const unsigned int               n = fe.n_dofs_per_cell();
-    FullMatrix<double>               Kc(n, n);
-    Vector<double>                   fc(n);
+    const FEValuesExtractors::Vector     disp(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   Kc(n, n);
+    Vector<double>                       fc(n);
     std::vector<types::global_dof_index> ids(n);
     for (const auto &cell : dof.active_cell_iterators())
       {
@@ -82,8 +82,9 @@ namespace
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               Kc(i, j) += (lambda * values[disp].divergence(i, q) * values[disp].divergence(j, q) +
-                           2. * mu * scalar_product(values[disp].symmetric_gradient(i, q),
-                                                    values[disp].symmetric_gradient(j, q))) *
+                           2. * mu *
+                             scalar_product(values[disp].symmetric_gradient(i, q),
+                                            values[disp].symmetric_gradient(j, q))) *
                           values.JxW(q);
         for (const auto fi : cell->face_indices())
           if (cell->face(fi)->at_boundary() && cell->face(fi)->boundary_id() == 3)
@@ -126,7 +127,11 @@ namespace
   /// field averaged by composite Gauss quadrature (its panels' edges on the
   /// loaded rectangle's, where the field's derivatives are singular).
   double
-  love_mean(const double E, const double nu, const double a, const double b, const double X,
+  love_mean(const double E,
+            const double nu,
+            const double a,
+            const double b,
+            const double X,
             const double Y)
   {
     const dealii::QGauss<1> gauss(8);
@@ -155,11 +160,11 @@ BOOST_AUTO_TEST_CASE(limits_of_the_layer_compliance)
   for (const double nu : {0.0, 0.3, 0.49, 0.4999})
     {
       const contact::ElasticLayer layer{7e6, nu, 0.008};
-      const double                k      = 30. / layer.thickness;
-      const double                half   = 2. * (1. - nu * nu) / (layer.youngs_modulus * k);
-      const double                thick  = contact::layer_compliance(layer, k);
-      const double                mu     = 7e6 / (2. * (1. + nu));
-      const double                column = 0.008 / (2. * mu * nu / (1. - 2. * nu) + 2. * mu);
+      const double                k         = 30. / layer.thickness;
+      const double                half      = 2. * (1. - nu * nu) / (layer.youngs_modulus * k);
+      const double                thick     = contact::layer_compliance(layer, k);
+      const double                mu        = 7e6 / (2. * (1. + nu));
+      const double                column    = 0.008 / (2. * mu * nu / (1. - 2. * nu) + 2. * mu);
       const double                long_wave = contact::layer_compliance(layer, 1e-4 / 0.008);
       BOOST_TEST_MESSAGE("nu = " << nu << ": kh = 30 " << thick / half - 1.
                                  << " from the half-space; kh = 1e-4 " << long_wave / column - 1.
@@ -168,7 +173,8 @@ BOOST_AUTO_TEST_CASE(limits_of_the_layer_compliance)
       // The next term is (kh)^2 / 3 (mu-dominated) over the column's; it
       // grows as the rubber nears incompressibility.
       BOOST_TEST(std::abs(long_wave / column - 1.) < (nu > 0.49 ? 2e-3 : 1e-6));
-      BOOST_TEST(contact::layer_compliance(layer, 0.) == column, boost::test_tools::tolerance(1e-14));
+      BOOST_TEST(contact::layer_compliance(layer, 0.) == column,
+                 boost::test_tools::tolerance(1e-14));
     }
   BOOST_CHECK_THROW(contact::layer_compliance({7e6, 0.5, 0.008}, 1.), InputError);
   BOOST_CHECK_THROW(contact::layer_compliance({7e6, 0.3, 0.}, 1.), InputError);
@@ -185,17 +191,17 @@ BOOST_AUTO_TEST_CASE(layer_compliance_against_finite_elements)
       {
         const double fe    = fe_layer_compliance(1., nu, k);
         const double exact = contact::layer_compliance({1., nu, 1.}, k);
-        BOOST_TEST_MESSAGE("nu = " << nu << ", kh = " << k << ": FE " << fe << ", layer "
-                                   << exact << ", difference " << fe / exact - 1.);
+        BOOST_TEST_MESSAGE("nu = " << nu << ", kh = " << k << ": FE " << fe << ", layer " << exact
+                                   << ", difference " << fe / exact - 1.);
         BOOST_TEST(std::abs(fe / exact - 1.) < 1.2e-5); // measured at most 4e-6
       }
 }
 
 BOOST_AUTO_TEST_CASE(table_against_the_direct_solve)
 {
-  const contact::ElasticLayer         layer{7e6, 0.49, 0.008};
-  const contact::LayerComplianceTable table(layer);
-  std::mt19937                        rng(3);
+  const contact::ElasticLayer            layer{7e6, 0.49, 0.008};
+  const contact::LayerComplianceTable    table(layer);
+  std::mt19937                           rng(3);
   std::uniform_real_distribution<double> u(std::log(1e-2), std::log(1e5));
   double                                 worst = 0.;
   for (unsigned int i = 0; i < 500; ++i)
@@ -205,7 +211,8 @@ BOOST_AUTO_TEST_CASE(table_against_the_direct_solve)
     }
   BOOST_TEST_MESSAGE("table against the 4 x 4 solve, 500 wavenumbers: worst " << worst);
   BOOST_TEST(worst < 1e-6);
-  BOOST_TEST(table(0.) == contact::layer_compliance(layer, 0.), boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(table(0.) == contact::layer_compliance(layer, 0.),
+             boost::test_tools::tolerance(1e-14));
 }
 
 BOOST_AUTO_TEST_CASE(rectangle_lattice_against_love)
@@ -218,7 +225,7 @@ BOOST_AUTO_TEST_CASE(rectangle_lattice_against_love)
   const auto   half_space = [&](const double k) {
     return k == 0. ? std::numeric_limits<double>::infinity() : 2. * (1. - nu * nu) / (E * k);
   };
-  const Eigen::MatrixXd T  = contact::rectangle_lattice_compliance(half_space, a, b, 3, 3, 200, 200);
+  const Eigen::MatrixXd T = contact::rectangle_lattice_compliance(half_space, a, b, 3, 3, 200, 200);
   const double          L0 = love_mean(E, nu, a, b, 0., 0.);
   for (const auto &[m, n] : std::vector<std::pair<int, int>>{{1, 0}, {0, 1}, {1, 1}, {3, 2}})
     {
@@ -235,7 +242,7 @@ BOOST_AUTO_TEST_CASE(rectangle_lattice_against_love)
 BOOST_AUTO_TEST_CASE(patch_compliance_is_symmetric_positive_definite)
 {
   const contact::ElasticLayer layer{7e6, 0.49, 0.008};
-  const Eigen::MatrixXd       L = contact::layer_patch_compliance(layer, 1.5e-3, 1.6667e-3, 8, 6, 0.032);
+  const Eigen::MatrixXd L = contact::layer_patch_compliance(layer, 1.5e-3, 1.6667e-3, 8, 6, 0.032);
   // Symmetric by construction (L(p, q) = T(abs(dx), abs(dy))), so only its
   // definiteness is asserted.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(L);

@@ -41,8 +41,13 @@ namespace
   /// A sector of a thick cylinder, radius a..b, angle 0..angle, height 0..L:
   /// boundary ids 2 inner, 4 at theta = 0, 5 at theta = angle, 6 at z = 0.
   void
-  cylinder_sector(Triangulation<3> &tria, double a, double b, double angle, double L,
-                  unsigned int n_r, unsigned int n_z)
+  cylinder_sector(Triangulation<3> &tria,
+                  double            a,
+                  double            b,
+                  double            angle,
+                  double            L,
+                  unsigned int      n_r,
+                  unsigned int      n_z)
   {
     GridGenerator::subdivided_hyper_rectangle(tria, {n_r, 1u, n_z}, Point<3>(a, 0., 0.),
                                               Point<3>(b, angle, L), true);
@@ -69,7 +74,7 @@ BOOST_AUTO_TEST_CASE(thick_cylinder_under_pressure_with_rotational_periodicity)
   // One cell of an open cylinder (free ends: sigma_z = 0) under internal
   // pressure, closed into a ring by rotational periodicity: Lame's solution,
   // u_r = [(1 - nu) A r + (1 + nu) B / r] / E, hoop stress A + B / r^2.
-  const double a = 0.98, b = 1.02, E = 1e8, nu = 0.3, p = 2e5, angle = 2. * M_PI / 64.;
+  const double     a = 0.98, b = 1.02, E = 1e8, nu = 0.3, p = 2e5, angle = 2. * M_PI / 64.;
   Triangulation<3> tria;
   cylinder_sector(tria, a, b, angle, 0.1, 2, 2);
   fe::ElasticModel model(tria, {{0, isotropic(E, nu, 1000.)}});
@@ -101,16 +106,15 @@ BOOST_AUTO_TEST_CASE(thick_cylinder_under_pressure_with_rotational_periodicity)
     {
       const double r = std::hypot(node.position[0], node.position[1]);
       const double c = node.position[0] / r, s = node.position[1] / r;
-      const double u_r = c * u[node.dofs[0]] + s * u[node.dofs[1]];
-      const double u_t = -s * u[node.dofs[0]] + c * u[node.dofs[1]];
+      const double u_r   = c * u[node.dofs[0]] + s * u[node.dofs[1]];
+      const double u_t   = -s * u[node.dofs[0]] + c * u[node.dofs[1]];
       const double exact = ((1. - nu) * A * r + (1. + nu) * B / r) / E;
-      error      = std::max(error, std::abs(u_r - exact));
-      largest    = std::max(largest, exact);
-      tangential = std::max(tangential, std::abs(u_t));
+      error              = std::max(error, std::abs(u_r - exact));
+      largest            = std::max(largest, exact);
+      tangential         = std::max(tangential, std::abs(u_t));
     }
-  BOOST_TEST_MESSAGE("cylinder: max |u_r - Lame| / u_r = " << error / largest
-                                                          << ", max |u_theta| / u_r = "
-                                                          << tangential / largest);
+  BOOST_TEST_MESSAGE("cylinder: max |u_r - Lame| / u_r = "
+                     << error / largest << ", max |u_theta| / u_r = " << tangential / largest);
   BOOST_TEST(error < 7e-7 * largest); // measured 2.4e-7
   BOOST_TEST(tangential < 1e-6 * largest);
   // The thin-wall formulas, u_r = p R^2 / (E t) and hoop stress p R / t,
@@ -130,10 +134,9 @@ BOOST_AUTO_TEST_CASE(thick_cylinder_under_pressure_with_rotational_periodicity)
     }
   BOOST_TEST_REQUIRE(n_mid > 0u);
   u_mid /= n_mid;
-  BOOST_TEST_MESSAGE("thin wall: u_r at mid-wall " << u_mid / (p * R * R / (E * t))
-                                                   << " of p R^2 / (E t), largest von Mises "
-                                                   << model.max_von_mises(u) / (p * R / t)
-                                                   << " of p R / t");
+  BOOST_TEST_MESSAGE("thin wall: u_r at mid-wall "
+                     << u_mid / (p * R * R / (E * t)) << " of p R^2 / (E t), largest von Mises "
+                     << model.max_von_mises(u) / (p * R / t) << " of p R / t");
   BOOST_TEST(std::abs(u_mid / (p * R * R / (E * t)) - 1.) < 0.04);
   BOOST_TEST(std::abs(model.max_von_mises(u) / (p * R / t) - 1.) < 0.06);
 }
@@ -144,8 +147,8 @@ BOOST_AUTO_TEST_CASE(no_locking_in_pure_bending_with_quadratic_elements)
   // displacement prescribed at x = 0 and the traction -M z / I at x = L:
   // u_z(L) = kappa (L^2 - nu h^2 / 4) / 2 at (L, -h/2, 0). Quadratic elements
   // hold it exactly (the solution is quadratic); trilinear elements lock.
-  const double L = 1., h = 0.05, E = 7e6, nu = 0.49, M = 1.;
-  const double I = h * h * h * h / 12., kappa = M / (E * I);
+  const double     L = 1., h = 0.05, E = 7e6, nu = 0.49, M = 1.;
+  const double     I = h * h * h * h / 12., kappa = M / (E * I);
   Triangulation<3> tria;
   GridGenerator::subdivided_hyper_rectangle(tria, {20u, 1u, 2u}, Point<3>(0., -h / 2., -h / 2.),
                                             Point<3>(L, h / 2., h / 2.), true);
@@ -170,10 +173,9 @@ BOOST_AUTO_TEST_CASE(no_locking_in_pure_bending_with_quadratic_elements)
               constraints.set_inhomogeneity(node.dofs[d], exact(node.position)[d]);
             }
       constraints.close();
-      const auto u = model.solve_static(
-        constraints, model.traction_load(1, [&](const Point<3> &p) {
-          return Tensor<1, 3>({-M * p[2] / I, 0., 0.});
-        }));
+      const auto u = model.solve_static(constraints, model.traction_load(1, [&](const Point<3> &p) {
+        return Tensor<1, 3>({-M * p[2] / I, 0., 0.});
+      }));
       // A node both discretisations have: (L, -h/2, 0).
       for (const auto &node : nodes)
         if (std::abs(node.position[0] - L) < 1e-12 && std::abs(node.position[1] + h / 2.) < 1e-12 &&
@@ -181,10 +183,9 @@ BOOST_AUTO_TEST_CASE(no_locking_in_pure_bending_with_quadratic_elements)
           deflection[degree] = u[node.dofs[2]];
     }
   const double reference = exact(Point<3>(L, -h / 2., 0.))[2];
-  BOOST_TEST_MESSAGE("pure bending, nu = 0.49: u_z(L) / exact = " << deflection[2] / reference
-                                                                  << " (quadratic), "
-                                                                  << deflection[1] / reference
-                                                                  << " (trilinear)");
+  BOOST_TEST_MESSAGE("pure bending, nu = 0.49: u_z(L) / exact = "
+                     << deflection[2] / reference << " (quadratic), " << deflection[1] / reference
+                     << " (trilinear)");
   BOOST_TEST(std::abs(deflection[2] / reference - 1.) < 0.01);
   BOOST_TEST(deflection[1] / reference < 0.8); // locked: 43% too stiff on this mesh
 }
@@ -193,9 +194,9 @@ BOOST_AUTO_TEST_CASE(geometric_stiffness_of_a_beam_under_tension)
 {
   // Simply supported beam under axial tension T: w_n = (n pi / L)
   // sqrt((T + EI (n pi / L)^2) / (rho A)). Kp from the uniform prestress T / A.
-  const double L = 1., h = 0.02, E = 1e9, nu = 0.3, rho = 1000.;
-  const double A = h * h, I = h * h * h * h / 12.;
-  const double T = E * I * M_PI * M_PI / (L * L); // doubles the first w^2
+  const double     L = 1., h = 0.02, E = 1e9, nu = 0.3, rho = 1000.;
+  const double     A = h * h, I = h * h * h * h / 12.;
+  const double     T = E * I * M_PI * M_PI / (L * L); // doubles the first w^2
   Triangulation<3> tria;
   GridGenerator::subdivided_hyper_rectangle(tria, {24u, 1u, 1u}, Point<3>(0., -h / 2., -h / 2.),
                                             Point<3>(L, h / 2., h / 2.), true);
@@ -228,10 +229,10 @@ BOOST_AUTO_TEST_CASE(geometric_stiffness_of_a_beam_under_tension)
   stiffness.reinit(model.stiffness().get_sparsity_pattern());
   stiffness.copy_from(model.stiffness());
   stiffness.add(1., model.geometric_stiffness());
-  const auto tensioned = fe::eigenvalues_near(model.dof_handler(), stiffness, model.mass(),
-                                              constraints, 6, 0.);
-  const auto plain = fe::eigenvalues_near(model.dof_handler(), model.stiffness(), model.mass(),
-                                          constraints, 2, 0.);
+  const auto tensioned =
+    fe::eigenvalues_near(model.dof_handler(), stiffness, model.mass(), constraints, 6, 0.);
+  const auto plain =
+    fe::eigenvalues_near(model.dof_handler(), model.stiffness(), model.mass(), constraints, 2, 0.);
   for (unsigned int n = 1; n <= 3; ++n)
     {
       const double k     = n * M_PI / L;
@@ -242,7 +243,8 @@ BOOST_AUTO_TEST_CASE(geometric_stiffness_of_a_beam_under_tension)
           BOOST_TEST_CONTEXT("n = " << n)
           BOOST_TEST(std::abs(w / exact - 1.) < 0.01);
         }
-      BOOST_TEST_MESSAGE("n = " << n << ": w / formula = " << std::sqrt(tensioned[2 * n - 2]) / exact);
+      BOOST_TEST_MESSAGE("n = " << n
+                                << ": w / formula = " << std::sqrt(tensioned[2 * n - 2]) / exact);
     }
   // Without the prestress the first frequency is 1/sqrt(2) as high.
   BOOST_TEST(std::abs(std::sqrt(plain[0] / tensioned[0]) - 1. / std::sqrt(2.)) < 0.01);
@@ -252,10 +254,10 @@ BOOST_AUTO_TEST_CASE(tyre_cell_masses_rigid_motions_and_ring_modes)
 {
   geometry::GeometryParameters p;
   p.geo_file = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
-  const geometry::TyreCell     cell(p);
-  fe::MaterialParameters       mp;
-  const auto                   materials = mp.materials();
-  fe::ElasticModel             model(cell.cell(), materials);
+  const geometry::TyreCell cell(p);
+  fe::MaterialParameters   mp;
+  const auto               materials = mp.materials();
+  fe::ElasticModel         model(cell.cell(), materials);
   model.assemble();
   // Pappus: each layer's mass, rho times angle times the integral of r.
   for (const auto &[id, mass] : model.masses())
@@ -305,8 +307,8 @@ BOOST_AUTO_TEST_CASE(crown_drop_removes_the_circular_segment)
   geometry::GeometryParameters p;
   p.geo_file = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
   const fe::MaterialParameters mp;
-  const auto                   materials = mp.materials();
-  const auto tread_mass = [&](const geometry::TyreCell &cell) {
+  const auto                   materials  = mp.materials();
+  const auto                   tread_mass = [&](const geometry::TyreCell &cell) {
     fe::ElasticModel model(cell.cell(), materials);
     model.assemble();
     return model.masses().at(fe::tread_id);
@@ -320,7 +322,9 @@ BOOST_AUTO_TEST_CASE(crown_drop_removes_the_circular_segment)
     if (std::hypot(v[0], v[1]) > R_out - 1e-9)
       z_t = std::max(z_t, std::abs(v[2]));
   const double d = 0.004, R_c = (z_t * z_t + d * d) / (2. * d);
-  const auto   arc = [&](const double z) { return R_out - R_c + std::sqrt(R_c * R_c - z * z); };
+  const auto   arc = [&](const double z) {
+    return R_out - R_c + std::sqrt(R_c * R_c - z * z);
+  };
   p.other_constants = "Crown drop=0.004";
   const geometry::TyreCell curved(p);
   const double             lost = tread_mass(flat) - tread_mass(curved);
@@ -340,11 +344,15 @@ BOOST_AUTO_TEST_CASE(crown_drop_removes_the_circular_segment)
   // Pappus over the lost region, (R_out^2 - r^2) / 2 integrated in z: on
   // the arc (Simpson, 2000 intervals) and on the polygon (Simpson per piece,
   // exact for its quadratic integrand).
-  const auto integrand = [&](const double r) { return (R_out * R_out - r * r) / 2.; };
-  double     on_arc = 0.;
+  const auto integrand = [&](const double r) {
+    return (R_out * R_out - r * r) / 2.;
+  };
+  double on_arc = 0.;
   for (unsigned int i = 0, n = 2000; i <= n; ++i)
-    on_arc += (i == 0 || i == n ? 1. : i % 2 ? 4. : 2.) * integrand(arc(-z_t + 2. * z_t * i / n)) *
-              2. * z_t / n / 3.;
+    on_arc += (i == 0 || i == n ? 1. :
+               i % 2            ? 4. :
+                                  2.) *
+              integrand(arc(-z_t + 2. * z_t * i / n)) * 2. * z_t / n / 3.;
   double on_polygon = 0.;
   for (auto it = surface.begin(); std::next(it) != surface.end(); ++it)
     {
@@ -355,9 +363,10 @@ BOOST_AUTO_TEST_CASE(crown_drop_removes_the_circular_segment)
                      integrand(next->second));
     }
   const double rho_alpha = materials.at(fe::tread_id).density * flat.angle();
-  BOOST_TEST_MESSAGE("crown drop 4 mm on R_out = " << R_out << " m, z_t = " << z_t << " m, "
-                     << surface.size() << " surface vertices (largest distance from the arc "
-                     << off_arc << " m): tread mass lost " << lost << " kg (" << 100. * lost / tread_mass(flat)
+  BOOST_TEST_MESSAGE("crown drop 4 mm on R_out = "
+                     << R_out << " m, z_t = " << z_t << " m, " << surface.size()
+                     << " surface vertices (largest distance from the arc " << off_arc
+                     << " m): tread mass lost " << lost << " kg (" << 100. * lost / tread_mass(flat)
                      << "% of the tread), Pappus over the polygon " << rho_alpha * on_polygon
                      << " kg, over the arc " << rho_alpha * on_arc << " kg");
   BOOST_TEST(surface.size() >= 10u);
@@ -376,11 +385,11 @@ BOOST_AUTO_TEST_CASE(a_cells_constants_do_not_carry_over_to_the_next_cell)
   // refinement=2' (the crown's elements half the size: more cells), then
   // the default section again, which must be the first one's mesh.
   geometry::GeometryParameters p;
-  p.geo_file  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
-  p.mesh_size = 0.04;
-  p.n_cells   = 16;
-  const unsigned int plain = geometry::TyreCell(p).cell().n_active_cells();
-  p.other_constants        = "Crown refinement=2";
+  p.geo_file                = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
+  p.mesh_size               = 0.04;
+  p.n_cells                 = 16;
+  const unsigned int plain  = geometry::TyreCell(p).cell().n_active_cells();
+  p.other_constants         = "Crown refinement=2";
   const unsigned int graded = geometry::TyreCell(p).cell().n_active_cells();
   p.other_constants         = "";
   const unsigned int again  = geometry::TyreCell(p).cell().n_active_cells();

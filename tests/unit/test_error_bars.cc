@@ -59,7 +59,7 @@ namespace
     static const modal::PatchModel model = test::synthetic_patch(0.05);
     const contact::ContactGrid     grid(model.points, subdivisions, contact::ElasticLayer{},
                                         subdivisions > 2, true);
-    const road::PatchRoad road(texture, grid.points, road::RoadSampling::envelope, "test");
+    const road::PatchRoad          road(texture, grid.points, road::RoadSampling::envelope, "test");
     const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z,
                                                   Eigen::VectorXd &slope) {
       road.heights(x, z, slope);
@@ -73,17 +73,17 @@ namespace
     const auto start =
       contact::start_grid_contact(grid, model.static_compliance(), tread, heights, setup);
     const auto convolution = contact::make_grid_convolution(
-      contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps,
-                                      0, 1),
+      contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0,
+                                      1),
       grid);
     // The stress over the Green's-function rectangle of point 4 (i_x = 1,
     // i_y = 1, beside the centre): the force on its contact points.
     Eigen::VectorXd reporting = Eigen::VectorXd::Zero(grid.n_points());
     for (unsigned int p = 0; p < grid.n_points(); ++p)
       reporting[p] = grid.coarse_of[p] == 4 ? 1. : 0.;
-    std::vector<double>   stress, force;
-    const auto summary = contact::roll_patch(*convolution, tread, heights, start, setup,
-                                             [&](const contact::RollingStep &step) {
+    std::vector<double> stress, force;
+    const auto          summary = contact::roll_patch(*convolution, tread, heights, start, setup,
+                                                      [&](const contact::RollingStep &step) {
                                                stress.push_back(reporting.dot(step.force));
                                                force.push_back(step.force.sum());
                                              });
@@ -94,8 +94,9 @@ namespace
 
   /// The rms over the bands of factor |a - b| [dB].
   double
-  rms_difference(const analysis::BandSpectrum &a, const analysis::BandSpectrum &b,
-                 const double factor)
+  rms_difference(const analysis::BandSpectrum &a,
+                 const analysis::BandSpectrum &b,
+                 const double                  factor)
   {
     double sum = 0.;
     for (std::size_t k = 0; k < a.level.size(); ++k)
@@ -108,12 +109,14 @@ namespace
   /// |L_run - L_refined|: @p levels holds the run, the other level and the
   /// refined run.
   void
-  check_against_refined(const std::string &what, const std::array<std::pair<analysis::BandSpectrum, analysis::BandSpectrum>, 3> &levels,
-                        const double factor)
+  check_against_refined(
+    const std::string                                                              &what,
+    const std::array<std::pair<analysis::BandSpectrum, analysis::BandSpectrum>, 3> &levels,
+    const double                                                                    factor)
   {
     for (const auto &[quantity, member] :
-         {std::pair<std::string, analysis::BandSpectrum std::pair<analysis::BandSpectrum,
-                                                                  analysis::BandSpectrum>::*>{
+         {std::pair<std::string, analysis::BandSpectrum
+                                   std::pair<analysis::BandSpectrum, analysis::BandSpectrum>::*>{
             "stress", &std::pair<analysis::BandSpectrum, analysis::BandSpectrum>::first},
           {"force", &std::pair<analysis::BandSpectrum, analysis::BandSpectrum>::second}})
       {
@@ -136,8 +139,8 @@ BOOST_AUTO_TEST_CASE(richardson_estimates_and_their_combination)
   BOOST_TEST(analysis::richardson_factor(2., 2.) == 1. / 3., boost::test_tools::tolerance(1e-15));
   BOOST_TEST(analysis::richardson_factor(5., 2.) == 1. / 24., boost::test_tools::tolerance(1e-15));
   BOOST_CHECK_THROW(analysis::richardson_factor(1., 2.), NumericalError);
-  const auto fine   = spectrum_of({63., 63., 63., 63., 63., 63., 63.}, 0.4);
-  const auto coarse = spectrum_of({72., 72., 72., 72., 72., 72., 72.}, 0.4);
+  const auto             fine   = spectrum_of({63., 63., 63., 63., 63., 63., 63.}, 0.4);
+  const auto             coarse = spectrum_of({72., 72., 72., 72., 72., 72., 72.}, 0.4);
   analysis::BandSpectrum target = fine;
   analysis::EstimateRun  e;
   e.what   = analysis::Discretisation::contact_grid;
@@ -174,7 +177,7 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
 {
   // Road-A at 90 km/h: the run at one road sample per step over 2 m, the
   // low-rate run at 76.8 us for the bands to 1 kHz.
-  const double               V = 25., dt = 3.84e-4 / V;
+  const double                   V = 25., dt = 3.84e-4 / V;
   std::vector<analysis::BandRun> plan(2);
   plan[0].time_step = dt;
   plan[0].distance  = 2.;
@@ -189,7 +192,9 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
   const analysis::ErrorBarParameters parameters;
   const auto estimates = analysis::plan_estimate_runs(plan, parameters, 250., V, 8);
   BOOST_TEST_REQUIRE(estimates.size() == 8u);
-  const auto band = [](const double f) { return analysis::third_octave_bands(f, f)[0]; };
+  const auto band = [](const double f) {
+    return analysis::third_octave_bands(f, f)[0];
+  };
   for (const auto &e : estimates)
     {
       const analysis::FrequencyBand lowest = band(e.f_low);
@@ -215,8 +220,8 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
       const bool step = e.what == analysis::Discretisation::time_step;
       BOOST_TEST(e.run.time_step == (step ? 0.5 : 1.) * plan[e.of].time_step,
                  boost::test_tools::tolerance(1e-12));
-      BOOST_TEST(e.run.name == (e.of == 1 ? "low-rate_" : "") + std::string(step ? "finer_" : "coarser_") +
-                                 label(e.what));
+      BOOST_TEST(e.run.name == (e.of == 1 ? "low-rate_" : "") +
+                                 std::string(step ? "finer_" : "coarser_") + label(e.what));
       // The section's mesh size doubled: 1 / (2^p - 1) at its order.
       if (e.what == analysis::Discretisation::ring_section)
         BOOST_TEST(e.factor == 1. / (std::pow(2., analysis::ring_section_order) - 1.),
@@ -260,10 +265,10 @@ BOOST_AUTO_TEST_CASE(the_contact_grids_estimate_against_a_refined_grid)
   // Subdivisions 4 (the run), 2 (its coarser level) and 8 (the refined
   // run) at one road sample per step.
   const double duration = 4. / 57.9;
-  check_against_refined("contact grid",
-                        {{roll_levels(4, 1., duration), roll_levels(2, 1., duration),
-                          roll_levels(8, 1., duration)}},
-                        analysis::richardson_factor(2., analysis::contact_grid_order));
+  check_against_refined(
+    "contact grid",
+    {{roll_levels(4, 1., duration), roll_levels(2, 1., duration), roll_levels(8, 1., duration)}},
+    analysis::richardson_factor(2., analysis::contact_grid_order));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

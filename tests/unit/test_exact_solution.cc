@@ -15,8 +15,8 @@ namespace
   check_invariants(const sdof::Oscillator &osc, const road::RoadTrack &track, double end)
   {
     const sdof::ExactSolution exact(osc, track, end);
-    const double              tol = 1e-13;
-    unsigned int              changes = 0;
+    const double              tol      = 1e-13;
+    unsigned int              changes  = 0;
     bool                      previous = exact.in_contact(0.);
     for (unsigned int i = 0; i <= 200000; ++i)
       {
@@ -49,8 +49,12 @@ BOOST_AUTO_TEST_CASE(flight_between_events_solves_the_ode)
   double t0 = 0.05;
   while (exact.in_contact(t0))
     t0 += 1e-7;
-  const auto ref = test::integrate(osc, [&](double) { return -osc.mass() * osc.gravity(); },
-                                   exact.displacement(t0), exact.velocity(t0), t0, t0 + 0.04);
+  const auto ref = test::integrate(
+    osc,
+    [&](double) {
+      return -osc.mass() * osc.gravity();
+    },
+    exact.displacement(t0), exact.velocity(t0), t0, t0 + 0.04);
   BOOST_TEST(std::abs(exact.displacement(t0 + 0.04) - ref[0]) < 1e-12);
   BOOST_TEST(std::abs(exact.velocity(t0 + 0.04) - ref[1]) < 1e-9);
 }
@@ -66,9 +70,9 @@ BOOST_AUTO_TEST_CASE(events_of_the_default_problem)
   BOOST_TEST(exact.n_impacts() == 3u);
   BOOST_TEST(exact.impulse(0., 1e-6) >= 0.314159 * osc.mass());
   // Lift-off: F(t) = A0 [(K - M w^2) sin wt + C w cos wt] + M g = 0, w = 2 pi V0 / lambda.
-  const double w = 2. * M_PI * 10.;
-  const double R = 5e-3 * std::hypot(4e5 - w * w, osc.damping() * w);
-  const double phase = std::atan2(osc.damping() * w, 4e5 - w * w);
+  const double w      = 2. * M_PI * 10.;
+  const double R      = 5e-3 * std::hypot(4e5 - w * w, osc.damping() * w);
+  const double phase  = std::atan2(osc.damping() * w, 4e5 - w * w);
   const double t_lift = (M_PI + std::asin(osc.mass() * osc.gravity() / R) - phase) / w;
   BOOST_TEST(exact.in_contact(t_lift - 1e-9));
   BOOST_TEST(!exact.in_contact(t_lift + 1e-9));

@@ -25,26 +25,32 @@ namespace
           {
             using Gauss   = boost::math::quadrature::gauss<Real, 40>;
             const Real re = Gauss::integrate(
-              [&](const Real &s) { return pow(s, m) * exp(x * s) * cos(y * s); }, Real(0), Real(1));
+              [&](const Real &s) {
+                return pow(s, m) * exp(x * s) * cos(y * s);
+              },
+              Real(0), Real(1));
             const Real im = Gauss::integrate(
-              [&](const Real &s) { return pow(s, m) * exp(x * s) * sin(y * s); }, Real(0), Real(1));
+              [&](const Real &s) {
+                return pow(s, m) * exp(x * s) * sin(y * s);
+              },
+              Real(0), Real(1));
             psi[m] = {static_cast<double>(re), static_cast<double>(im)};
           }
         return psi;
       }
     // e^z and 1/z in 50 digits, complex arithmetic by hand.
-    const Real er = exp(x) * cos(y), ei = exp(x) * sin(y);
-    const Real d  = x * x + y * y;
-    const Real ir = x / d, ii = -y / d;
+    const Real                          er = exp(x) * cos(y), ei = exp(x) * sin(y);
+    const Real                          d  = x * x + y * y;
+    const Real                          ir = x / d, ii = -y / d;
     std::array<std::complex<double>, 4> psi;
-    Real pr = (er - 1) * ir - ei * ii, pi = (er - 1) * ii + ei * ir;
+    Real                                pr = (er - 1) * ir - ei * ii, pi = (er - 1) * ii + ei * ir;
     psi[0] = {static_cast<double>(pr), static_cast<double>(pi)};
     for (int m = 1; m < 4; ++m)
       {
         const Real ar = er - m * pr, ai = ei - m * pi;
         const Real nr = ar * ir - ai * ii, ni = ar * ii + ai * ir;
-        pr = nr;
-        pi = ni;
+        pr     = nr;
+        pi     = ni;
         psi[m] = {static_cast<double>(pr), static_cast<double>(pi)};
       }
     return psi;
@@ -58,9 +64,9 @@ BOOST_AUTO_TEST_CASE(against_fifty_digit_closed_form)
   // Tiny steps (where (e^z-1-z)/z^2 cancels), the series/recurrence switch at
   // |z| = 1, oscillatory and strongly damped poles, and a huge stiff step.
   const std::complex<double> points[] = {
-    {1e-12, 0.},  {-1e-9, 3e-9}, {-6.3e-6, 6.3e-4}, {-0.0126, 0.632}, {-0.3, 0.},
-    {0., 0.99},   {0., 1.01},     {-0.999, 0.01},    {-1.001, 0.},     {-2.5, 4.},
-    {0., 20.},    {-50., 0.},     {-1e3, 2e3},       {-1e5, 0.},       {-7.07e-3, -0.7}};
+    {1e-12, 0.}, {-1e-9, 3e-9}, {-6.3e-6, 6.3e-4}, {-0.0126, 0.632}, {-0.3, 0.},
+    {0., 0.99},  {0., 1.01},    {-0.999, 0.01},    {-1.001, 0.},     {-2.5, 4.},
+    {0., 20.},   {-50., 0.},    {-1e3, 2e3},       {-1e5, 0.},       {-7.07e-3, -0.7}};
   for (const auto z : points)
     {
       const auto psi = greentread::convolution::exponential_moments(z);

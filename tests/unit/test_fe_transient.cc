@@ -57,7 +57,7 @@ BOOST_AUTO_TEST_CASE(structure_converges_at_second_order_with_proportional_dampi
   BOOST_TEST_MESSAGE(study.describe());
   BOOST_TEST(study.static_mismatch() < 1e-10);
   const reference::PathModel modes = study.mode_model(4000.);
-  std::vector<double>       error;
+  std::vector<double>        error;
   for (const double dt : {4e-5, 2e-5, 1e-5})
     {
       error.push_back(study.driven_difference({&modes}, dt, 2e-3)[0]);
@@ -79,11 +79,10 @@ BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_converges_with_coupled_mod
   // coupling). Measured now: 2.2e-4 and 8.2e-5.
   const reference::TransientCase study(coarse_case(false));
   BOOST_TEST(study.static_mismatch() < 1e-10);
-  const reference::PathModel modes = study.mode_model(4000.);
-  const double              coarse = study.driven_difference({&modes}, 2e-5, 2e-3)[0];
-  const double              fine   = study.driven_difference({&modes}, 1e-5, 2e-3)[0];
-  BOOST_TEST_MESSAGE("per-layer damping: " << coarse << " at dt = 20 us, " << fine
-                                           << " at 10 us");
+  const reference::PathModel modes  = study.mode_model(4000.);
+  const double               coarse = study.driven_difference({&modes}, 2e-5, 2e-3)[0];
+  const double               fine   = study.driven_difference({&modes}, 1e-5, 2e-3)[0];
+  BOOST_TEST_MESSAGE("per-layer damping: " << coarse << " at dt = 20 us, " << fine << " at 10 us");
   BOOST_TEST(coarse < 5e-4);
   BOOST_TEST(fine < 0.5 * coarse);
 }
@@ -91,12 +90,12 @@ BOOST_AUTO_TEST_CASE(structure_with_the_tyres_damping_converges_with_coupled_mod
 BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_step)
 {
   reference::TransientCaseSetup setup = coarse_case(false);
-  setup.distance                     = 0.1;
+  setup.distance                      = 0.1;
   const reference::TransientCase study(setup);
   const reference::PathModel     low  = study.mode_model(4000.);
   const reference::PathModel     high = study.mode_model(32000.);
-  const double                  dt   = study.road_time_step();
-  const auto mean = [](const std::vector<double> &f) {
+  const double                   dt   = study.road_time_step();
+  const auto                     mean = [](const std::vector<double> &f) {
     return std::accumulate(f.begin(), f.end(), 0.) / f.size();
   };
   for (const std::string road : {"sinusoid", "road-A"})
@@ -107,14 +106,13 @@ BOOST_AUTO_TEST_CASE(rolling_contact_converges_as_the_cutoff_reaches_the_time_st
       BOOST_TEST_REQUIRE(reference.failed_steps + coarse.failed_steps + fine.failed_steps == 0u);
       const auto d_low  = reference::compare(coarse, reference, dt);
       const auto d_high = reference::compare(fine, reference, dt);
-      BOOST_TEST_MESSAGE(road << ": modes to 4 kHz: force " << d_low.force << " of the peak, "
-                              << d_low.force_band << " dB, stress " << d_low.stress_band
-                              << " dB; to 32 kHz: " << d_high.force << ", " << d_high.force_band
-                              << " dB, " << d_high.stress_band << " dB; step compliance "
-                              << reference.step_compliance << " (reference), "
-                              << coarse.step_compliance << ", " << fine.step_compliance
-                              << " m/N; mean force " << mean(fine.force) << " N against "
-                              << mean(reference.force) << " N");
+      BOOST_TEST_MESSAGE(
+        road << ": modes to 4 kHz: force " << d_low.force << " of the peak, " << d_low.force_band
+             << " dB, stress " << d_low.stress_band << " dB; to 32 kHz: " << d_high.force << ", "
+             << d_high.force_band << " dB, " << d_high.stress_band << " dB; step compliance "
+             << reference.step_compliance << " (reference), " << coarse.step_compliance << ", "
+             << fine.step_compliance << " m/N; mean force " << mean(fine.force) << " N against "
+             << mean(reference.force) << " N");
       BOOST_TEST(d_high.force_band < 1.);
       BOOST_TEST(d_high.stress_band < 1.);
       BOOST_TEST(d_high.force < 0.25);
@@ -144,9 +142,9 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
   // own beta; before the modes were coupled the fitted beta_r absorbed part
   // of the coupling's error and happened to land nearer, 2.7%).
   reference::TransientCaseSetup setup = coarse_case(false);
-  setup.distance                     = 0.1;
-  setup.surface_mass_inward          = true;
-  setup.max_frequency                = 5000.;
+  setup.distance                      = 0.1;
+  setup.surface_mass_inward           = true;
+  setup.max_frequency                 = 5000.;
   const reference::TransientCase study(setup);
   const reference::PathModel     modes = study.mode_model(16000.);
   BOOST_TEST_MESSAGE("residual relaxation " << modes.model.residual_relaxation << " s");
@@ -161,7 +159,7 @@ BOOST_AUTO_TEST_CASE(massless_contact_nodes_make_the_contact_converge_as_dt_fall
           const auto reference = study.reference(road, dt);
           const auto fast      = study.fast(road, dt, modes, convolution::Method::modal_recursive);
           BOOST_TEST_REQUIRE(reference.failed_steps + fast.failed_steps == 0u);
-          const auto d = reference::compare(fast, reference, dt);
+          const auto   d        = reference::compare(fast, reference, dt);
           const double mismatch = std::abs(fast.step_compliance / reference.step_compliance - 1.);
           rms.push_back(d.force_rms);
           BOOST_TEST_MESSAGE(road << ", dt = " << 1e6 * dt << " us, mass moved inward: step "

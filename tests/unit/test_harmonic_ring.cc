@@ -49,17 +49,22 @@ namespace
   /// The coarse tyre's section, inflated as the 3D cell is.
   struct HarmonicTyre
   {
-    test::CoarseTyre      tyre;
-    fe::HarmonicSection   section;
+    test::CoarseTyre       tyre;
+    fe::HarmonicSection    section;
     periodic::HarmonicRing ring;
 
-    HarmonicTyre(const unsigned int n_cells, const double tolerance, const bool inflated = true,
-                 const double length = 0.018)
-      : tyre(n_cells, patch_request(length), inflated)
-      , section(tyre.cell->section(), tyre.materials.materials(), 2)
-      , ring((inflated ? section.inflate(2e5) : void(), section), tyre.patch, tolerance,
-             2. * M_PI * 1000.)
-    {}
+    HarmonicTyre(const unsigned int n_cells,
+                 const double       tolerance,
+                 const bool         inflated = true,
+                 const double       length   = 0.018)
+        : tyre(n_cells, patch_request(length), inflated)
+        , section(tyre.cell->section(), tyre.materials.materials(), 2)
+        , ring((inflated ? section.inflate(2e5) : void(), section),
+               tyre.patch,
+               tolerance,
+               2. * M_PI * 1000.)
+    {
+    }
   };
 } // namespace
 
@@ -74,17 +79,16 @@ BOOST_AUTO_TEST_SUITE(harmonic_ring)
 // must lie below the theory's by less than twice (n h / R)^2 / 12.
 BOOST_AUTO_TEST_CASE(thin_ring_frequencies)
 {
-  const double          R = 0.1, h = 0.002, b = 0.004, E = 2e9, rho = 1000.;
+  const double             R = 0.1, h = 0.002, b = 0.004, E = 2e9, rho = 1000.;
   dealii::Triangulation<2> section;
-  dealii::GridGenerator::subdivided_hyper_rectangle(section, {2, 4},
-                                                    dealii::Point<2>(R - h / 2, -b / 2),
-                                                    dealii::Point<2>(R + h / 2, b / 2));
+  dealii::GridGenerator::subdivided_hyper_rectangle(
+    section, {2, 4}, dealii::Point<2>(R - h / 2, -b / 2), dealii::Point<2>(R + h / 2, b / 2));
   fe::Material ring;
   ring.density   = rho;
   ring.stiffness = fe::isotropic_stiffness(E, 0.);
   std::map<unsigned int, fe::Material> materials{{0u, ring}};
-  const fe::HarmonicSection harmonic(section, materials, 2);
-  const double              scale = std::sqrt(E * b * h * h * h / 12. / (rho * b * h * R * R * R * R));
+  const fe::HarmonicSection            harmonic(section, materials, 2);
+  const double scale = std::sqrt(E * b * h * h * h / 12. / (rho * b * h * R * R * R * R));
   for (const unsigned int n : {2u, 3u, 4u, 6u})
     {
       const double analytic = scale * n * (n * n - 1.) / std::sqrt(n * n + 1.);
@@ -93,8 +97,8 @@ BOOST_AUTO_TEST_CASE(thin_ring_frequencies)
       const double error  = 1. - modes.omega(0) / analytic;
       const double theory = std::pow(n * h / R, 2) / 12.;
       std::cout << "thin ring, harmonic " << n << ": " << modes.omega(0) / (2. * M_PI)
-                << " Hz against " << analytic / (2. * M_PI) << " Hz, relative difference "
-                << error << " (theory's own terms " << theory << ")\n";
+                << " Hz against " << analytic / (2. * M_PI) << " Hz, relative difference " << error
+                << " (theory's own terms " << theory << ")\n";
       // Measured: 1.23 (n = 2) to 1.62 (n = 6) times (n h / R)^2 / 12, rising
       // towards Timoshenko's 1.7.
       BOOST_CHECK_GT(error, 0.);
@@ -111,7 +115,7 @@ BOOST_AUTO_TEST_CASE(thin_ring_frequencies)
 BOOST_AUTO_TEST_CASE(inflation_matches_the_3d_cell)
 {
   test::CoarseTyre tyre(64, patch_request(), false);
-  const auto u = fe::solve_inflation(*tyre.model, tyre.cell->angle(), 2e5);
+  const auto       u       = fe::solve_inflation(*tyre.model, tyre.cell->angle(), 2e5);
   const double cell_growth = fe::tread_growth(*tyre.model, u, tyre.geometry.outer_radius()).first;
   fe::HarmonicSection section(tyre.cell->section(), tyre.materials.materials(), 2);
   section.inflate(2e5);
@@ -133,8 +137,8 @@ BOOST_AUTO_TEST_CASE(inflation_of_the_default_section_matches_the_3d_cell)
   const geometry::TyreCell     cell(geometry);
   fe::ElasticModel             model(cell.cell(), materials.materials());
   model.assemble();
-  const auto   u           = fe::solve_inflation(model, cell.angle(), 2e5);
-  const double cell_growth = fe::tread_growth(model, u, geometry.outer_radius()).first;
+  const auto          u           = fe::solve_inflation(model, cell.angle(), 2e5);
+  const double        cell_growth = fe::tread_growth(model, u, geometry.outer_radius()).first;
   fe::HarmonicSection section(cell.section(), materials.materials(), 2);
   section.inflate(2e5);
   const double difference = std::abs(section.tread_growth() / cell_growth - 1.);
@@ -154,22 +158,24 @@ BOOST_AUTO_TEST_CASE(inflation_of_the_default_section_matches_the_3d_cell)
 // difference stopped at 4e-4, the quadrature's own error on this 4 cm mesh.)
 BOOST_AUTO_TEST_CASE(converges_to_bloch_as_the_ring_is_refined)
 {
-  const double       omega = 2. * M_PI * 300.;
-  const double       length = 0.09; // 3 cm rectangles
-  HarmonicTyre       reference(64, 1e-6, true, length);
+  const double                  omega  = 2. * M_PI * 300.;
+  const double                  length = 0.09; // 3 cm rectangles
+  HarmonicTyre                  reference(64, 1e-6, true, length);
   periodic::HarmonicGreenSolver harmonic(reference.ring);
   periodic::SolveDiagnostics    diagnostics;
-  const Eigen::MatrixXcd g0 = harmonic.solve(0., diagnostics);
-  const Eigen::MatrixXcd g1 = harmonic.solve(omega, diagnostics);
+  const Eigen::MatrixXcd        g0 = harmonic.solve(0., diagnostics);
+  const Eigen::MatrixXcd        g1 = harmonic.solve(omega, diagnostics);
   std::cout << reference.ring.describe();
   std::vector<double> differences;
   for (const unsigned int N : {64u, 128u, 256u, 512u, 1024u, 2048u})
     {
       const test::CoarseTyre tyre(N, patch_request(length));
-      auto bloch = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
+      auto                   bloch =
+        periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
       const double d = std::max(relative_difference(bloch->solve(0., diagnostics), g0),
                                 relative_difference(bloch->solve(omega, diagnostics), g1));
-      std::cout << "bloch, N = " << N << ": largest difference from the harmonic ring " << d << '\n';
+      std::cout << "bloch, N = " << N << ": largest difference from the harmonic ring " << d
+                << '\n';
       differences.push_back(d);
     }
   // Measured: 0.115, 0.0168, 0.0041, 0.0013, 2.0e-4, 2.1e-5; orders 2.8, 2.0,
@@ -191,15 +197,15 @@ BOOST_AUTO_TEST_CASE(converges_to_bloch_as_the_ring_is_refined)
 // from a tight one's by less than the bound printed.
 BOOST_AUTO_TEST_CASE(tail_bound_holds)
 {
-  HarmonicTyre loose(64, 1e-2), tight(64, 1e-5);
+  HarmonicTyre                  loose(64, 1e-2), tight(64, 1e-5);
   periodic::SolveDiagnostics    diagnostics;
   periodic::HarmonicGreenSolver a(loose.ring), b(tight.ring);
   const Eigen::MatrixXcd        ga = a.solve(0., diagnostics), gb = b.solve(0., diagnostics);
-  const double smallest = gb.diagonal().real().minCoeff();
-  const double tail     = (gb - ga).cwiseAbs().maxCoeff() / smallest;
+  const double                  smallest = gb.diagonal().real().minCoeff();
+  const double                  tail     = (gb - ga).cwiseAbs().maxCoeff() / smallest;
   std::cout << "tolerance 1e-2: " << loose.ring.n_harmonics << " harmonics, bound "
-            << loose.ring.tail_bound << ", actual tail " << tail << " (tolerance 1e-5: "
-            << tight.ring.n_harmonics << " harmonics)\n";
+            << loose.ring.tail_bound << ", actual tail " << tail
+            << " (tolerance 1e-5: " << tight.ring.n_harmonics << " harmonics)\n";
   // Measured: a tail of 0.0039 under a bound of 0.0100.
   BOOST_CHECK_LT(tail, loose.ring.tail_bound);
   BOOST_CHECK_LE(loose.ring.tail_bound, 1e-2);
@@ -219,7 +225,7 @@ BOOST_AUTO_TEST_CASE(modal_synthesis_matches_the_direct_sums)
 {
   for (const bool inflated : {false, true})
     {
-      HarmonicTyre tyre(64, 1e-5, inflated);
+      HarmonicTyre                  tyre(64, 1e-5, inflated);
       periodic::HarmonicGreenSolver direct(tyre.ring);
       periodic::SolveDiagnostics    diagnostics;
       const Eigen::MatrixXd         g0 = direct.solve(0., diagnostics).real();
@@ -231,7 +237,7 @@ BOOST_AUTO_TEST_CASE(modal_synthesis_matches_the_direct_sums)
           std::vector<std::array<double, 3>> points(g0.rows());
           const auto model = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
                                                    modes.shapes_imag, g0, points);
-          double worst = 0.;
+          double     worst = 0.;
           for (const double f : {60., 120., 180., 400.})
             worst = std::max(worst, relative_difference(model.at(2. * M_PI * f),
                                                         direct.solve(2. * M_PI * f, diagnostics)));
@@ -297,14 +303,14 @@ BOOST_AUTO_TEST_CASE(nine_lines_catch_a_wrong_synthesis)
   // Each case: the modes as the synthesis receives them.
   struct Case
   {
-    const char           *name;
+    const char          *name;
     synthesis::RingModes modes;
   };
   std::vector<Case> cases(5, Case{"", modes});
   cases[0].name = "correct";
   cases[1].name = "one mode left out";
   {
-    auto &m = cases[1].modes;
+    auto                     &m = cases[1].modes;
     std::vector<Eigen::Index> keep;
     for (Eigen::Index k = 0; k < m.omega.size(); ++k)
       if (k != strongest)
@@ -326,11 +332,12 @@ BOOST_AUTO_TEST_CASE(nine_lines_catch_a_wrong_synthesis)
   std::vector<std::array<double, 2>> worst;
   for (const auto &c : cases)
     {
-      const auto model = synthesis::synthesise(c.modes.omega, c.modes.damping_ratio,
-                                               c.modes.shapes, c.modes.shapes_imag, nine);
-      worst.push_back({{synthesis::compare(model, nine).worst, synthesis::compare(model, many).worst}});
-      std::cout << c.name << ": largest E on 9 lines " << 100. * worst.back()[0] << "%, on 33 lines "
-                << 100. * worst.back()[1] << "%\n";
+      const auto model = synthesis::synthesise(c.modes.omega, c.modes.damping_ratio, c.modes.shapes,
+                                               c.modes.shapes_imag, nine);
+      worst.push_back(
+        {{synthesis::compare(model, nine).worst, synthesis::compare(model, many).worst}});
+      std::cout << c.name << ": largest E on 9 lines " << 100. * worst.back()[0]
+                << "%, on 33 lines " << 100. * worst.back()[1] << "%\n";
     }
   BOOST_CHECK_LT(worst[0][0], 0.03);
   for (unsigned int c = 1; c < cases.size(); ++c)
@@ -350,16 +357,16 @@ BOOST_AUTO_TEST_CASE(nine_lines_catch_a_wrong_synthesis)
 // modes outside them are all exercised) and with one slice.
 BOOST_AUTO_TEST_CASE(sliced_mode_search_matches_a_dense_solve)
 {
-  HarmonicTyre        tyre(64, 1e-3);
-  const double        cutoff = 2. * M_PI * 6000.;
-  const Eigen::MatrixXd M    = Eigen::MatrixXd(tyre.section.mass());
-  double              worst  = 0., worst_residual = 0.;
-  unsigned int        total  = 0;
+  HarmonicTyre          tyre(64, 1e-3);
+  const double          cutoff = 2. * M_PI * 6000.;
+  const Eigen::MatrixXd M      = Eigen::MatrixXd(tyre.section.mass());
+  double                worst = 0., worst_residual = 0.;
+  unsigned int          total = 0;
   for (const unsigned int n : {0u, 1u, 5u, 20u})
     {
       const Eigen::MatrixXd K = Eigen::MatrixXd(tyre.section.stiffness(n));
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(K, M, Eigen::EigenvaluesOnly);
-      std::vector<double> reference;
+      std::vector<double>                                       reference;
       for (Eigen::Index r = 0; r < dense.eigenvalues().size(); ++r)
         if (dense.eigenvalues()(r) <= cutoff * cutoff)
           reference.push_back(std::sqrt(dense.eigenvalues()(r)));
@@ -400,11 +407,11 @@ BOOST_AUTO_TEST_CASE(a_mode_the_first_search_misses_is_found_again)
   request.load = periodic::PointLoad::tributary_area;
   const periodic::InflatedTyre tyre(geometry, fe::MaterialParameters(), fe::InflationParameters(),
                                     request, periodic::HarmonicOptions{1e-3, 2. * M_PI * 4000.});
-  const double       cutoff = 2. * M_PI * 10000.;
-  const unsigned int n      = 359;
-  const unsigned int count  = synthesis::count_harmonic_modes(*tyre.section, n, cutoff);
-  const auto         modes  = synthesis::harmonic_modes(*tyre.section, n, cutoff);
-  const auto         sliced = synthesis::harmonic_modes(*tyre.section, n, cutoff, 2);
+  const double                 cutoff = 2. * M_PI * 10000.;
+  const unsigned int           n      = 359;
+  const unsigned int           count  = synthesis::count_harmonic_modes(*tyre.section, n, cutoff);
+  const auto                   modes  = synthesis::harmonic_modes(*tyre.section, n, cutoff);
+  const auto                   sliced = synthesis::harmonic_modes(*tyre.section, n, cutoff, 2);
   std::cout << "harmonic " << n << " below 10 kHz: " << count << " modes by the inertia, "
             << modes.omega.size() << " found, largest residual " << modes.max_residual << '\n';
   BOOST_REQUIRE_EQUAL(std::size_t(modes.omega.size()), std::size_t(count));

@@ -27,10 +27,11 @@ namespace test
   }
 
   inline greentread::contact::ContactParameters
-  contact_parameters(double dt,
-                     double end_time = 0.2,
-                     greentread::contact::ContactLaw law = greentread::contact::ContactLaw::kinematic,
-                     double kc = 1e7)
+  contact_parameters(
+    double                          dt,
+    double                          end_time = 0.2,
+    greentread::contact::ContactLaw law      = greentread::contact::ContactLaw::kinematic,
+    double                          kc       = 1e7)
   {
     greentread::contact::ContactParameters p;
     p.law               = law;
@@ -60,7 +61,7 @@ namespace test
       dy[1] = (force(t) - osc.damping() * y[1] - osc.stiffness() * y[0]) / osc.mass();
     };
     namespace odeint = boost::numeric::odeint;
-    auto stepper = odeint::make_controlled(1e-14, 1e-14, odeint::runge_kutta_dopri5<State>());
+    auto stepper     = odeint::make_controlled(1e-14, 1e-14, odeint::runge_kutta_dopri5<State>());
     odeint::integrate_adaptive(stepper, rhs, x, t0, t1, (t1 - t0) / 1000.);
     return x;
   }

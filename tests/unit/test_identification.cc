@@ -23,7 +23,7 @@ namespace
   void
   add_mode(ModalModel &model, double f, double xi, double A)
   {
-    const double w = 2. * M_PI * f;
+    const double               w = 2. * M_PI * f;
     const std::complex<double> lambda(-xi * w, w * std::sqrt(1. - xi * xi));
     model.add_pair(lambda, A / std::complex<double>(0., 2. * lambda.imag()));
   }
@@ -79,10 +79,9 @@ BOOST_AUTO_TEST_CASE(single_mode_recovered_to_round_off)
       double     pe, re;
       match(truth, id.model, pe, re);
       BOOST_TEST_MESSAGE("N_max " << max_modes << ": N_m = " << id.n_modes << ", pole error " << pe
-                                  << ", residue error " << re << ", E = " << id.error
-                                  << ", cond " << id.condition << ", rank " << id.rank
-                                  << ", physical " << id.poles.physical << ", spurious "
-                                  << id.poles.spurious);
+                                  << ", residue error " << re << ", E = " << id.error << ", cond "
+                                  << id.condition << ", rank " << id.rank << ", physical "
+                                  << id.poles.physical << ", spurious " << id.poles.spurious);
       BOOST_TEST(id.n_modes == 1u);
       BOOST_TEST(pe < 2e-14);
       BOOST_TEST(re < 5e-13);
@@ -91,7 +90,7 @@ BOOST_AUTO_TEST_CASE(single_mode_recovered_to_round_off)
 
 BOOST_AUTO_TEST_CASE(ten_modes_two_within_one_percent)
 {
-  ModalModel truth;
+  ModalModel   truth;
   const double f[10]  = {150., 400., 403., 800., 1200., 1650., 2100., 2600., 3100., 3500.};
   const double xi[10] = {0.02, 0.01, 0.012, 0.03, 0.02, 0.015, 0.02, 0.025, 0.02, 0.03};
   for (unsigned int k = 0; k < 10; ++k)
@@ -100,8 +99,8 @@ BOOST_AUTO_TEST_CASE(ten_modes_two_within_one_percent)
   const auto id  = modal::identify(frf, parameters(60));
   double     pe, re;
   match(truth, id.model, pe, re);
-  BOOST_TEST_MESSAGE("ten modes: N_m = " << id.n_modes << ", pole error " << pe << ", residue error "
-                                         << re << ", E = " << id.error);
+  BOOST_TEST_MESSAGE("ten modes: N_m = " << id.n_modes << ", pole error " << pe
+                                         << ", residue error " << re << ", E = " << id.error);
   BOOST_TEST(id.n_modes == 10u);
   BOOST_TEST(pe < 1e-10);
   BOOST_TEST(re < 1e-9);
@@ -145,9 +144,9 @@ BOOST_AUTO_TEST_CASE(real_pole)
       const auto id   = modal::identify(modal::sample(truth, 4., 1001), p);
       double     pe, re;
       match(truth, id.model, pe, re);
-      BOOST_TEST_MESSAGE(modal::to_string(model) << ": N_m = " << id.n_modes << ", pole error "
-                                                 << pe << ", residue error " << re
-                                                 << ", E = " << id.error);
+      BOOST_TEST_MESSAGE(modal::to_string(model)
+                         << ": N_m = " << id.n_modes << ", pole error " << pe << ", residue error "
+                         << re << ", E = " << id.error);
       unsigned int real_poles = 0;
       for (const auto &t : id.model.terms())
         real_poles += t.kind == modal::ModalTerm::Kind::real_pole;
@@ -181,27 +180,27 @@ BOOST_AUTO_TEST_CASE(modes_above_f_max)
   double     error[2];
   for (const bool upper : {false, true})
     for (const bool refine : {false, true})
-    {
-      auto p           = parameters(60);
-      p.upper_residual = upper;
-      p.polish_poles   = refine;
-      const auto id    = modal::identify(frf, p);
-      double     pe, re;
-      match(in_band, id.model, pe, re);
-      BOOST_TEST_MESSAGE("upper residual " << upper << (refine ? ", refined" : ", LSCE alone")
-                                           << ": N_m = " << id.n_modes << ", pole error " << pe
-                                           << ", E = " << id.error << ", U = "
-                                           << id.upper_residual);
-      if (refine)
-        error[upper] = id.error;
-      BOOST_TEST_CONTEXT("upper residual " << upper << ", refined " << refine)
       {
-        BOOST_TEST(pe < (refine ? 2.2e-4 : 3e-14));
-        BOOST_TEST(id.error < 0.05);
-        for (const auto &t : id.model.terms())
-          BOOST_TEST(std::abs(t.lambda.imag()) / (2. * M_PI) < 4000.);
+        auto p           = parameters(60);
+        p.upper_residual = upper;
+        p.polish_poles   = refine;
+        const auto id    = modal::identify(frf, p);
+        double     pe, re;
+        match(in_band, id.model, pe, re);
+        BOOST_TEST_MESSAGE("upper residual " << upper << (refine ? ", refined" : ", LSCE alone")
+                                             << ": N_m = " << id.n_modes << ", pole error " << pe
+                                             << ", E = " << id.error
+                                             << ", U = " << id.upper_residual);
+        if (refine)
+          error[upper] = id.error;
+        BOOST_TEST_CONTEXT("upper residual " << upper << ", refined " << refine)
+        {
+          BOOST_TEST(pe < (refine ? 2.2e-4 : 3e-14));
+          BOOST_TEST(id.error < 0.05);
+          for (const auto &t : id.model.terms())
+            BOOST_TEST(std::abs(t.lambda.imag()) / (2. * M_PI) < 4000.);
+        }
       }
-    }
   BOOST_TEST(error[1] < 0.5 * error[0]);
 }
 
@@ -209,12 +208,12 @@ BOOST_AUTO_TEST_CASE(noise_at_40_dB)
 {
   // Complex Gaussian noise at 1% of the rms of |g| (SNR 40 dB): the errors
   // stay bounded and are reported.
-  ModalModel truth;
+  ModalModel   truth;
   const double f[5] = {300., 900., 1500., 2200., 3300.};
   for (unsigned int k = 0; k < 5; ++k)
     add_mode(truth, f[k], 0.02, 1e3 * (k + 1));
-  auto         frf = modal::sample(truth, 4., 1001);
-  double       rms = 0.;
+  auto   frf = modal::sample(truth, 4., 1001);
+  double rms = 0.;
   for (const auto &v : frf.values)
     rms += std::norm(v);
   rms = std::sqrt(rms / frf.values.size());
@@ -257,7 +256,7 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
   double     rms   = 0.;
   for (const auto &v : clean.values)
     rms += std::norm(v);
-  rms = std::sqrt(rms / clean.values.size());
+  rms          = std::sqrt(rms / clean.values.size());
   double worst = 0., worst_unrefined = 0., worst_pole = 0.;
   for (unsigned int draw = 0; draw < 10; ++draw)
     {
@@ -270,7 +269,7 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
       refined.polish_poles = true;
       const auto   plain   = modal::identify(noisy, parameters(60));
       const auto   id      = modal::identify(noisy, refined);
-      const double against   = modal::modal_error(clean, id.model);
+      const double against = modal::modal_error(clean, id.model);
       double       pe, re;
       match(truth, id.model, pe, re);
       worst           = std::max(worst, against);
@@ -278,10 +277,9 @@ BOOST_AUTO_TEST_CASE(close_modes_at_40_dB_against_the_clean_truth)
       worst_unrefined = std::max(worst_unrefined, modal::modal_error(clean, plain.model));
       BOOST_TEST_MESSAGE("close modes, 40 dB, draw "
                          << draw << ": N_m = " << id.n_modes << ", E against the noisy data "
-                         << id.error << ", against the clean truth " << against
-                         << " (LSCE alone " << modal::modal_error(clean, plain.model)
-                         << "), pole error " << pe << ", refinement "
-                         << id.polish.iterations << " iterations");
+                         << id.error << ", against the clean truth " << against << " (LSCE alone "
+                         << modal::modal_error(clean, plain.model) << "), pole error " << pe
+                         << ", refinement " << id.polish.iterations << " iterations");
     }
   BOOST_TEST(worst < 0.025);
   BOOST_TEST(worst_pole < 0.0035);
@@ -297,9 +295,9 @@ BOOST_AUTO_TEST_CASE(pure_noise_is_reported_as_a_poor_fit)
   for (unsigned int k = 0; k < 1001; ++k)
     frf.values.emplace_back(noise(random), noise(random));
   const auto id = modal::identify(frf, parameters(60));
-  BOOST_TEST_MESSAGE("pure noise: N_m = " << id.n_modes << ", E = " << id.error << ", physical poles "
-                                          << id.poles.physical << ", spurious "
-                                          << id.poles.spurious);
+  BOOST_TEST_MESSAGE("pure noise: N_m = " << id.n_modes << ", E = " << id.error
+                                          << ", physical poles " << id.poles.physical
+                                          << ", spurious " << id.poles.spurious);
   BOOST_TEST(std::isfinite(id.error));
   BOOST_TEST(id.error > 0.5);
 }
@@ -336,10 +334,9 @@ BOOST_AUTO_TEST_CASE(impulse_response_of_a_mode)
   const double period = 0.25;
   for (const unsigned int n : {100u, 500u, 1500u})
     {
-      const auto  &term = truth.terms()[0];
-      const double exact =
-        2. * std::real(term.residue * std::exp(term.lambda * (n * g.dt)) /
-                       (1. - std::exp(term.lambda * period)));
+      const auto  &term  = truth.terms()[0];
+      const double exact = 2. * std::real(term.residue * std::exp(term.lambda * (n * g.dt)) /
+                                          (1. - std::exp(term.lambda * period)));
       CHECK_BOUND(std::abs(g.values[n] - exact) / std::abs(term.residue), 1.2e-6);
     }
 }
@@ -403,7 +400,7 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
       const double w          = 2. * M_PI * k * 10.;
       green.values[4 * k]     = g00.frequency_response(w);
       green.values[4 * k + 1] = green.values[4 * k + 2] = g01.frequency_response(w);
-      green.values[4 * k + 3] = g11.frequency_response(w);
+      green.values[4 * k + 3]                           = g11.frequency_response(w);
     }
   const auto dir = test::scratch_directory("identification-h5");
   std::filesystem::create_directories(dir);
@@ -419,9 +416,9 @@ BOOST_AUTO_TEST_CASE(green_file_round_trip_and_reciprocity)
     BOOST_REQUIRE(back.values[n] == green.values[n]);
 
   const std::vector<std::pair<unsigned int, unsigned int>> pairs = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
-  std::size_t reused = 0;
-  auto        p      = parameters(20);
-  const auto  ids    = modal::identify_pairs(back, pairs, p, reused, false);
+  std::size_t                                              reused = 0;
+  auto                                                     p      = parameters(20);
+  const auto ids = modal::identify_pairs(back, pairs, p, reused, false);
   BOOST_TEST(reused == 1u);
   double pe, re;
   match(g01, ids[2].model, pe, re);
@@ -448,13 +445,12 @@ BOOST_AUTO_TEST_CASE(round_trip_through_the_1_dof_scene)
       sdof::OscillatorParameters op;
       op.damping_ratio = xi;
       const sdof::Oscillator osc(op);
-      const auto             id =
-        modal::identify(sdof::frequency_response(osc, 1000., 1.), parameters(20));
-      const road::Sinusoid               road(5e-3, 1e-2);
-      contact::ContactParameters         cp;
+      const auto id = modal::identify(sdof::frequency_response(osc, 1000., 1.), parameters(20));
+      const road::Sinusoid       road(5e-3, 1e-2);
+      contact::ContactParameters cp;
       cp.time_step = 1e-5;
       convolution::ConvolutionParameters conv;
-      const auto exact      = sdof::simulate(op, road, cp, conv);
+      const auto                         exact = sdof::simulate(op, road, cp, conv);
       const auto identified = sdof::simulate(op, road, cp, conv, false, &id.model);
       double     du         = 0.;
       for (std::size_t n = 0; n < exact.run.u.size(); ++n)

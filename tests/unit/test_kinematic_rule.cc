@@ -28,11 +28,10 @@ BOOST_AUTO_TEST_CASE(branches_follow_the_impact_time)
     double          tau_over_dt;
     KinematicBranch expected;
   };
-  for (const Case c : {Case{0.05, KinematicBranch::impact_late},
-                       Case{0.2, KinematicBranch::impact_late},
-                       Case{0.5, KinematicBranch::riding},
-                       Case{0.8, KinematicBranch::impact_early},
-                       Case{0.99, KinematicBranch::impact_early}})
+  for (const Case c :
+       {Case{0.05, KinematicBranch::impact_late}, Case{0.2, KinematicBranch::impact_late},
+        Case{0.5, KinematicBranch::riding}, Case{0.8, KinematicBranch::impact_early},
+        Case{0.99, KinematicBranch::impact_early}})
     {
       const double du   = dv * c.tau_over_dt * dt;
       const auto   step = contact::solve_kinematic_step(psi, du, dv);
@@ -58,7 +57,7 @@ BOOST_AUTO_TEST_CASE(riding_with_a_constant_force)
   const sdof::Oscillator                       osc(test::oscillator_parameters());
   const double                                 dt = 1e-6;
   const convolution::ModalRecursiveConvolution conv(osc.modal_model(), dt);
-  const double                                 a    = 20.;
+  const double                                 a = 20.;
   const auto step = contact::solve_kinematic_step(conv.influence(), a * dt * dt / 2., a * dt);
   BOOST_TEST((step.branch == KinematicBranch::riding));
   BOOST_TEST(step.load.start == osc.mass() * a, boost::test_tools::tolerance(1e-3));

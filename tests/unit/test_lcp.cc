@@ -10,8 +10,8 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "siconos_reference.h"
 #include "complementarity.h"
+#include "siconos_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -200,8 +200,9 @@ BOOST_AUTO_TEST_CASE(random_p_matrices_against_siconos_lemke)
             worst_gap     = std::min(worst_gap, c.gap);
             worst_natural = std::max(worst_natural, std::max(c.natural, c.product));
             // w is M z + q to round-off (the solver sums the active columns).
-            const double w_scale = M.cwiseAbs().rowwise().sum().maxCoeff() *
-                                     r.z.lpNorm<Eigen::Infinity>() + q.lpNorm<Eigen::Infinity>();
+            const double w_scale =
+              M.cwiseAbs().rowwise().sum().maxCoeff() * r.z.lpNorm<Eigen::Infinity>() +
+              q.lpNorm<Eigen::Infinity>();
             BOOST_TEST((r.w - (M * r.z + q)).lpNorm<Eigen::Infinity>() <= 1e-14 * w_scale);
             BOOST_TEST(r.residual <= 1e-12);
 
@@ -246,10 +247,9 @@ BOOST_AUTO_TEST_CASE(random_p_matrices_against_siconos_lemke)
                          << total_size << " indices active; max |z - z_siconos| " << max_difference
                          << " (warm " << max_warm_difference << "), max residual " << max_residual
                          << "; measured here: gap down to " << worst_gap
-                         << ", complementarity up to " << worst_natural
-                         << "; iterations max " << max_iterations << ", mean "
-                         << double(total_iterations) / instances << ", warm max "
-                         << max_warm_iterations);
+                         << ", complementarity up to " << worst_natural << "; iterations max "
+                         << max_iterations << ", mean " << double(total_iterations) / instances
+                         << ", warm max " << max_warm_iterations);
       // Our use: block exchanges alone, a few of them.
       if (family != Family::nonsymmetric_definite)
         BOOST_TEST(max_iterations <= 10u);

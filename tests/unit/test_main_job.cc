@@ -11,9 +11,9 @@
 #include <greentread/config.h>
 #include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_stage.h>
-#include <greentread/synthesis/mode_stage.h>
-#include <greentread/scenes/tyre_road_contact_scene.h>
 #include <greentread/scenes/scene.h>
+#include <greentread/scenes/tyre_road_contact_scene.h>
+#include <greentread/synthesis/mode_stage.h>
 
 #include <filesystem>
 
@@ -45,9 +45,8 @@ BOOST_AUTO_TEST_CASE(built_in_defaults_are_prm_tyre_road_contact)
       BOOST_TEST_REQUIRE(from_file.count(path) == 1u, path);
       if (path == "Output directory")
         continue; // output/ by default, output/tyre_road_contact for the .prm
-      BOOST_TEST(from_file[path] == value,
-                 path << ": the .prm has '" << from_file[path] << "', the default is '" << value
-                      << "'");
+      BOOST_TEST(from_file[path] == value, path << ": the .prm has '" << from_file[path]
+                                                << "', the default is '" << value << "'");
       ++compared;
     }
   BOOST_TEST_MESSAGE(compared << " parameters: the default equals the main job's .prm");
@@ -61,8 +60,8 @@ BOOST_AUTO_TEST_CASE(stage_keys_change_with_what_the_stages_depend_on_only)
   // reused: a parameter of the stage changes them; the git revision, the
   // .geo file's path, the output directory and the later stages' parameters
   // do not.
-  namespace fs      = std::filesystem;
-  const std::string geo = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
+  namespace fs           = std::filesystem;
+  const std::string geo  = GREENTREAD_SOURCE_DIR "/geometry/tyre_165_65_r13.geo";
   const fs::path    copy = test::scratch_directory("main-job-key") / "greentread_key_test.geo";
   fs::copy_file(geo, copy, fs::copy_options::overwrite_existing);
 

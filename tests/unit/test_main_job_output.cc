@@ -1,8 +1,8 @@
 // The main job's scene (tyre-road-contact) as a user runs it: the program
 // itself, on the main job's tyre (tests/tyre_road_contact/default_mesh.prm: the default
 // mesh and 10 x 12 points, Green's functions every 50 Hz), reusing the
-// stages tyre_road_contact/default_mesh saved. Each check compares the output files with what physics
-// says, not with an earlier run:
+// stages tyre_road_contact/default_mesh saved. Each check compares the output files with what
+// physics says, not with an earlier run:
 // - a sinusoidal road of wavelength lambda at speed V puts the stress
 //   spectrum's highest band at V / lambda;
 // - where contact is sustained (3000 N, small heights) the contact is
@@ -84,7 +84,9 @@ namespace
   fs::path    last_directory;
 
   Run
-  run_scene(const std::string &name, const std::string &road, const double speed_kmh,
+  run_scene(const std::string                           &name,
+            const std::string                           &road,
+            const double                                 speed_kmh,
             const std::vector<std::string>              &settings,
             const std::function<void(const fs::path &)> &prepare = {})
   {
@@ -93,17 +95,19 @@ namespace
       fs::copy_file(fs::path(GREENTREAD_DEFAULT_MESH_OUTPUT) / file, dir / file);
     if (prepare)
       prepare(dir);
-    std::string command = std::string("\"") + GREENTREAD_PROGRAM + "\" \"" + GREENTREAD_SOURCE_DIR +
-                          "/tests/tyre_road_contact/default_mesh.prm\" --set \"Output directory=" + dir.string() +
-                          "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
-                          "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=" + road +
-                          "\" --set \"Rolling/Speeds (kph)=" + std::to_string(speed_kmh) + "\"";
+    std::string command =
+      std::string("\"") + GREENTREAD_PROGRAM + "\" \"" + GREENTREAD_SOURCE_DIR +
+      "/tests/tyre_road_contact/default_mesh.prm\" --set \"Output directory=" + dir.string() +
+      "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
+      "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=" + road +
+      "\" --set \"Rolling/Speeds (kph)=" + std::to_string(speed_kmh) + "\"";
     for (const auto &s : settings)
       command += " --set \"" + s + "\"";
     command += " > \"" + (dir / "screen.txt").string() + "\" 2>&1";
-    const int status = std::system(command.c_str());
+    const int         status = std::system(command.c_str());
     std::ifstream     screen(dir / "screen.txt");
-    const std::string text((std::istreambuf_iterator<char>(screen)), std::istreambuf_iterator<char>());
+    const std::string text((std::istreambuf_iterator<char>(screen)),
+                           std::istreambuf_iterator<char>());
     BOOST_TEST_REQUIRE(status == 0, name << ": the program failed:\n" << text);
     screen_text    = text;
     last_directory = dir;
@@ -126,8 +130,7 @@ namespace
       r.mean_force += row[2];
     r.mean_force /= history.size();
     BOOST_TEST_MESSAGE(name << ": highest band " << r.spectrum.top_band() << " Hz, centroid "
-                            << r.spectrum.centroid() << " Hz, mean force " << r.mean_force
-                            << " N");
+                            << r.spectrum.centroid() << " Hz, mean force " << r.mean_force << " N");
     return r;
   }
 
@@ -146,15 +149,15 @@ BOOST_AUTO_TEST_CASE(a_sinusoidal_road_peaks_at_speed_over_wavelength)
 {
   // 0.2 mm under 600 N: the patch's edges leave the road and harmonics
   // appear, but the highest band is the road's frequency V / lambda.
-  for (const auto &[lambda, V] : std::vector<std::pair<double, double>>{{0.05, 90.}, {0.02, 90.}, {0.05, 50.}})
+  for (const auto &[lambda, V] :
+       std::vector<std::pair<double, double>>{{0.05, 90.}, {0.02, 90.}, {0.05, 50.}})
     BOOST_TEST_CONTEXT("lambda = " << lambda << " m, V = " << V << " km/h")
     {
       const double f   = V / 3.6 / lambda;
-      const auto   run = run_scene("sinusoid-" + std::to_string(int(1e3 * lambda)) + "-" +
-                                   std::to_string(int(V)),
-                                 "sinusoid", V,
-                                 {"Road/Sinusoid/Amplitude=0.0002",
-                                  "Road/Sinusoid/Wavelength=" + std::to_string(lambda)});
+      const auto   run = run_scene(
+          "sinusoid-" + std::to_string(int(1e3 * lambda)) + "-" + std::to_string(int(V)), "sinusoid",
+          V,
+          {"Road/Sinusoid/Amplitude=0.0002", "Road/Sinusoid/Wavelength=" + std::to_string(lambda)});
       BOOST_TEST(std::abs(run.spectrum.top_band() / band_of(f) - 1.) < 1e-9,
                  "road frequency " << f << " Hz");
     }
@@ -168,18 +171,19 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
   const double six = 20. * std::log10(2.);
   {
     // A 20 um sinusoid of 4 cm at 90 km/h: its band, 630 Hz.
-    const std::vector<std::string> sinus = {"Rolling/Static load=3000",
-                                            "Road/Sinusoid/Amplitude=0.00002",
-                                            "Road/Sinusoid/Wavelength=0.04"};
-    auto doubled = sinus;
+    const std::vector<std::string> sinus   = {"Rolling/Static load=3000",
+                                              "Road/Sinusoid/Amplitude=0.00002",
+                                              "Road/Sinusoid/Wavelength=0.04"};
+    auto                           doubled = sinus;
     doubled.push_back("Road texture/Height scale=2");
-    const auto a    = run_scene("sinusoid-1", "sinusoid", 90., sinus);
-    const auto b    = run_scene("sinusoid-2", "sinusoid", 90., doubled);
-    const auto peak = std::max_element(a.spectrum.level.begin(), a.spectrum.level.end()) -
-                      a.spectrum.level.begin();
+    const auto a = run_scene("sinusoid-1", "sinusoid", 90., sinus);
+    const auto b = run_scene("sinusoid-2", "sinusoid", 90., doubled);
+    const auto peak =
+      std::max_element(a.spectrum.level.begin(), a.spectrum.level.end()) - a.spectrum.level.begin();
     BOOST_TEST(a.spectrum.top_band() == band_of(25. / 0.04), boost::test_tools::tolerance(1e-9));
-    BOOST_TEST_MESSAGE("sinusoid, twice the heights: " << b.spectrum.level[peak] - a.spectrum.level[peak]
-                                                       << " dB more in its band");
+    BOOST_TEST_MESSAGE("sinusoid, twice the heights: "
+                       << b.spectrum.level[peak] - a.spectrum.level[peak]
+                       << " dB more in its band");
     BOOST_TEST(std::abs(b.spectrum.level[peak] - a.spectrum.level[peak] - six) < 0.1);
     BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
   }
@@ -189,22 +193,23 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
     // road's realisation of 3750 samples: there the contact is not
     // sustained enough): every band from 160 Hz to 5 kHz within 0.5 dB of
     // +6.02 dB, and on average within 0.2 dB.
-    const auto a = run_scene("road-A-fortieth", "road-A", 90.,
-                             {"Rolling/Static load=3000", "Road texture/Height scale=0.025"});
-    const auto b = run_scene("road-A-twentieth", "road-A", 90.,
-                             {"Rolling/Static load=3000", "Road texture/Height scale=0.05"});
-    double mean = 0.;
-    int    n    = 0;
+    const auto a    = run_scene("road-A-fortieth", "road-A", 90.,
+                                {"Rolling/Static load=3000", "Road texture/Height scale=0.025"});
+    const auto b    = run_scene("road-A-twentieth", "road-A", 90.,
+                                {"Rolling/Static load=3000", "Road texture/Height scale=0.05"});
+    double     mean = 0.;
+    int        n    = 0;
     for (std::size_t k = 0; k < a.spectrum.level.size(); ++k)
       if (a.spectrum.centre[k] > 150.)
         {
           const double d = b.spectrum.level[k] - a.spectrum.level[k];
-          BOOST_TEST(std::abs(d - six) < 0.5, "band " << a.spectrum.centre[k] << " Hz: " << d << " dB");
+          BOOST_TEST(std::abs(d - six) < 0.5,
+                     "band " << a.spectrum.centre[k] << " Hz: " << d << " dB");
           mean += d;
           ++n;
         }
     BOOST_TEST_MESSAGE("road-A in sustained contact, twice the heights: " << mean / n
-                                                                           << " dB more on average");
+                                                                          << " dB more on average");
     BOOST_TEST(std::abs(mean / n - six) < 0.2);
     BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
   }
@@ -216,23 +221,24 @@ BOOST_AUTO_TEST_CASE(a_finer_contact_grid_carries_the_load_and_stays_linear)
   // Green's-function rectangle (480 points, the tread's layer below them):
   // the road's band, +6.02 dB for twice the heights, the mean force the
   // load, and the total force's spectrum written beside the stress's.
-  const std::vector<std::string> sinus = {"Rolling/Static load=3000",
-                                          "Road/Sinusoid/Amplitude=0.00002",
-                                          "Road/Sinusoid/Wavelength=0.04",
-                                          "Contact grid/Subdivisions=2"};
+  const std::vector<std::string> sinus = {
+    "Rolling/Static load=3000", "Road/Sinusoid/Amplitude=0.00002", "Road/Sinusoid/Wavelength=0.04",
+    "Contact grid/Subdivisions=2"};
   auto doubled = sinus;
   doubled.push_back("Road texture/Height scale=2");
-  const auto a    = run_scene("grid-2-sinusoid-1", "sinusoid", 90., sinus);
-  BOOST_TEST(screen_text.find("Contact grid: 20 x 24 = 480 points") != std::string::npos, screen_text);
+  const auto a = run_scene("grid-2-sinusoid-1", "sinusoid", 90., sinus);
+  BOOST_TEST(screen_text.find("Contact grid: 20 x 24 = 480 points") != std::string::npos,
+             screen_text);
   const auto force = read_csv(last_directory / "spectrum_force_sinusoid_90kmh.csv");
   BOOST_TEST(force.size() == a.spectrum.level.size());
-  const auto b    = run_scene("grid-2-sinusoid-2", "sinusoid", 90., doubled);
-  const auto peak = std::max_element(a.spectrum.level.begin(), a.spectrum.level.end()) -
-                    a.spectrum.level.begin();
+  const auto b = run_scene("grid-2-sinusoid-2", "sinusoid", 90., doubled);
+  const auto peak =
+    std::max_element(a.spectrum.level.begin(), a.spectrum.level.end()) - a.spectrum.level.begin();
   BOOST_TEST(a.spectrum.top_band() == band_of(25. / 0.04), boost::test_tools::tolerance(1e-9));
   BOOST_TEST_MESSAGE("480 contact points, sinusoid, twice the heights: "
                      << b.spectrum.level[peak] - a.spectrum.level[peak] << " dB more in its band");
-  BOOST_TEST(std::abs(b.spectrum.level[peak] - a.spectrum.level[peak] - 20. * std::log10(2.)) < 0.1);
+  BOOST_TEST(std::abs(b.spectrum.level[peak] - a.spectrum.level[peak] - 20. * std::log10(2.)) <
+             0.1);
   BOOST_TEST(std::abs(a.mean_force / 3000. - 1.) < 5e-3);
 }
 
@@ -272,10 +278,9 @@ BOOST_AUTO_TEST_CASE(the_patch_fit_to_the_tyre_stays_within_its_bounds)
   std::sort(E.begin(), E.end());
   const double median = E[E.size() / 2], p90 = E[E.size() * 9 / 10], worst = E.back();
   const double worst_driving = *std::max_element(driving.begin(), driving.end());
-  BOOST_TEST_MESSAGE("main job's tyre (lines every 50 Hz), patch fit: E median " << median << ", 90th percentile " << p90
-                                                          << ", worst " << worst
-                                                          << ", worst driving point "
-                                                          << worst_driving);
+  BOOST_TEST_MESSAGE("main job's tyre (lines every 50 Hz), patch fit: E median "
+                     << median << ", 90th percentile " << p90 << ", worst " << worst
+                     << ", worst driving point " << worst_driving);
   BOOST_TEST(median <= 0.25);
   BOOST_TEST(p90 <= 0.46);
   BOOST_TEST(worst <= 0.6);
@@ -290,22 +295,23 @@ BOOST_AUTO_TEST_CASE(a_corrupt_saved_stage_with_a_matching_key_is_computed_again
   // rewritten, and the next run reuses the new one.
   const auto poison = [](const fs::path &file, const std::string &dataset) {
     dealii::HDF5::File h5(file.string(), dealii::HDF5::File::FileAccessMode::open);
-    auto               data = h5.open_dataset(dataset);
+    auto               data   = h5.open_dataset(dataset);
     auto               values = data.read<std::vector<std::complex<double>>>();
     values[values.size() / 2] = std::numeric_limits<double>::quiet_NaN();
     data.write(values);
   };
-  for (const auto &[file, dataset] :
-       std::vector<std::pair<std::string, std::string>>{{"patch_model.h5", "residues"},
-                                                        {"green_functions.h5", "green"}})
+  for (const auto &[file, dataset] : std::vector<std::pair<std::string, std::string>>{
+         {"patch_model.h5", "residues"}, {"green_functions.h5", "green"}})
     BOOST_TEST_CONTEXT(file)
     {
-      run_scene("corrupt-" + dataset, "road-A", 90., {},
-                [&](const fs::path &dir) { poison(dir / file, dataset); });
+      run_scene("corrupt-" + dataset, "road-A", 90., {}, [&](const fs::path &dir) {
+        poison(dir / file, dataset);
+      });
       BOOST_TEST(screen_text.find(file + ", although its key matches") != std::string::npos,
                  screen_text);
       BOOST_TEST(screen_text.find(file + ": same") == std::string::npos, screen_text);
-      const std::string stage = dataset == "green" ? "Stages geometry -> fe -> periodic" : "Stage modal";
+      const std::string stage =
+        dataset == "green" ? "Stages geometry -> fe -> periodic" : "Stage modal";
       BOOST_TEST(screen_text.find(stage) != std::string::npos, screen_text);
     }
 }
@@ -335,8 +341,9 @@ BOOST_AUTO_TEST_CASE(passivity_of_the_tyre_patch_model)
   std::ifstream warned(fs::path(GREENTREAD_DEFAULT_MESH_OUTPUT) / "passivity.txt");
   double        warned_value = 0., warned_frequency = 0.;
   BOOST_TEST_REQUIRE(bool(warned >> warned_value >> warned_frequency));
-  const unsigned int n = model.n_points(), lines = static_cast<unsigned int>(std::lround(model.f_max / 50.));
-  double             worst = 0., worst_frequency = 0.;
+  const unsigned int n     = model.n_points(),
+                     lines = static_cast<unsigned int>(std::lround(model.f_max / 50.));
+  double worst = 0., worst_frequency = 0.;
   for (unsigned int line = 1; line <= lines; ++line)
     {
       const double    omega = 2. * M_PI * 50. * line;
@@ -344,7 +351,8 @@ BOOST_AUTO_TEST_CASE(passivity_of_the_tyre_patch_model)
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = 0; j < n; ++j)
           A(i, j) = -model.frequency_response(i, j, omega).imag();
-      BOOST_TEST_REQUIRE((A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff());
+      BOOST_TEST_REQUIRE((A - A.transpose()).cwiseAbs().maxCoeff() <=
+                         1e-12 * A.cwiseAbs().maxCoeff());
       const Eigen::VectorXd e = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
       if (e.minCoeff() / e.cwiseAbs().maxCoeff() < worst)
         {
@@ -354,10 +362,11 @@ BOOST_AUTO_TEST_CASE(passivity_of_the_tyre_patch_model)
     }
   const Eigen::VectorXd r =
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(model.instantaneous).eigenvalues();
-  BOOST_TEST_MESSAGE("main job's tyre (lines every 50 Hz), patch model: smallest eigenvalue of -Im G over the lines "
-                     << worst << " of the largest at " << worst_frequency << " Hz (the program's warning: "
-                     << warned_value << " at " << warned_frequency << " Hz); G_r's eigenvalues from "
-                     << r.minCoeff() << " to " << r.maxCoeff() << " m/N");
+  BOOST_TEST_MESSAGE(
+    "main job's tyre (lines every 50 Hz), patch model: smallest eigenvalue of -Im G over the lines "
+    << worst << " of the largest at " << worst_frequency
+    << " Hz (the program's warning: " << warned_value << " at " << warned_frequency
+    << " Hz); G_r's eigenvalues from " << r.minCoeff() << " to " << r.maxCoeff() << " m/N");
   BOOST_TEST(r.minCoeff() > 0.);
   BOOST_TEST(worst < -1e-9); // not passive, and warned about
   // The warning prints 3 significant digits.

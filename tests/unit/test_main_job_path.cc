@@ -107,7 +107,8 @@ namespace
       "\" --set \"Geometry/Geometry file=" + GREENTREAD_SOURCE_DIR +
       "/geometry/tyre_165_65_r13.geo\" --set \"Road texture/Roads=sinusoid\" --set "
       "\"Road/Sinusoid/Amplitude=0.000005\" --set \"Road/Sinusoid/Wavelength=0.04\" --set "
-      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set \"Rolling/Distance=1.1\" "
+      "\"Rolling/Speeds (kph)=90\" --set \"Rolling/Static load=3000\" --set "
+      "\"Rolling/Distance=1.1\" "
       "--set \"Spectra/Extend runs=false\" " +
       settings + " > \"" + (run.dir / "screen.txt").string() + "\" 2>&1";
     const int     status = std::system(command.c_str());
@@ -115,7 +116,7 @@ namespace
     run.screen.assign(std::istreambuf_iterator<char>(screen), std::istreambuf_iterator<char>());
     BOOST_TEST_REQUIRE(status == 0, run.screen);
     for (std::size_t at = run.screen.find("Reusing"); at != std::string::npos;
-         at = run.screen.find("Reusing", at + 1))
+         at             = run.screen.find("Reusing", at + 1))
       ++run.reused;
     return run;
   }
@@ -126,37 +127,37 @@ BOOST_AUTO_TEST_SUITE(main_job_path)
 BOOST_AUTO_TEST_CASE(the_sinusoid_peaks_at_speed_over_wavelength_and_the_load_is_carried)
 {
   const auto [centre, level] = stress_bands(stages);
-  const double top = centre[std::max_element(level.begin(), level.end()) - level.begin()];
-  const double f   = speed_kmh / 3.6 / wavelength;
+  const double top           = centre[std::max_element(level.begin(), level.end()) - level.begin()];
+  const double f             = speed_kmh / 3.6 / wavelength;
   BOOST_TEST_MESSAGE("main job's path: highest stress band " << top << " Hz, road " << f << " Hz");
   BOOST_TEST(top == band_of(f), boost::test_tools::tolerance(1e-9));
 
   // The mean of the total force over the record against the static load.
-  const auto   force = csv_column(stages / "history_sinusoid_90kmh.csv", 2);
-  double       mean  = 0.;
+  const auto force = csv_column(stages / "history_sinusoid_90kmh.csv", 2);
+  double     mean  = 0.;
   for (const double q : force)
     mean += q;
   mean /= force.size();
-  BOOST_TEST_MESSAGE("mean total force " << mean << " N against the static " << static_load << " N: "
-                                         << mean / static_load - 1.);
+  BOOST_TEST_MESSAGE("mean total force " << mean << " N against the static " << static_load
+                                         << " N: " << mean / static_load - 1.);
   BOOST_TEST(std::abs(mean / static_load - 1.) < 1e-3); // measured -3.5e-4
 }
 
 BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustained)
 {
   // The program again, on a copy of the saved stages, with the heights doubled.
-  const Run run = run_on_saved_stages("doubled", stages,
-                                      "--set \"Spectra/Standard error target=2\" --set \"Error "
-                                      "bars/Estimates=\" --set \"Road texture/Height scale=2\"");
+  const Run       run = run_on_saved_stages("doubled", stages,
+                                            "--set \"Spectra/Standard error target=2\" --set \"Error "
+                                                  "bars/Estimates=\" --set \"Road texture/Height scale=2\"");
   const fs::path &dir = run.dir;
   BOOST_TEST(run.reused == 2u, run.screen); // the Green's functions and the modes
   BOOST_TEST(run.screen.find("did not converge: 0,") != std::string::npos, run.screen);
 
-  const auto [centre, once]  = stress_bands(stages);
-  const auto [same, twice]   = stress_bands(dir);
-  const auto   peak          = std::max_element(once.begin(), once.end()) - once.begin();
-  const double six           = 20. * std::log10(2.);
-  const double difference    = twice[peak] - once[peak];
+  const auto [centre, once] = stress_bands(stages);
+  const auto [same, twice]  = stress_bands(dir);
+  const auto   peak         = std::max_element(once.begin(), once.end()) - once.begin();
+  const double six          = 20. * std::log10(2.);
+  const double difference   = twice[peak] - once[peak];
   BOOST_TEST_MESSAGE("twice the heights: " << difference << " dB more in the " << centre[peak]
                                            << " Hz band (+" << six << " dB for a linear contact)");
   // Measured +6.11 dB at 5 and 10 um. The contact's edge moves with the
@@ -211,7 +212,8 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
   // job saved in coarser_section/ (which must be reused: they are what a
   // run of that section computes).
   const Run fine_run = run_on_saved_stages(
-    "ring-section", stages, "--set \"Spectra/Low bands up to=0\" --set \"Error bars/Estimates=ring section\"");
+    "ring-section", stages,
+    "--set \"Spectra/Low bands up to=0\" --set \"Error bars/Estimates=ring section\"");
   const Run coarse_run = run_on_saved_stages("coarser-section", stages / "coarser_section",
                                              "--set \"Spectra/Low bands up to=0\" --set \"Error "
                                              "bars/Estimates=\" --set \"Geometry/Mesh size=0.016\" "
@@ -240,9 +242,10 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
       ++estimated;
       BOOST_TEST(estimate >= 0., f << " Hz");
       const double difference = std::abs(fine_rows[b][5] - coarse_rows[b][5]);
-      BOOST_TEST_MESSAGE(f << " Hz (" << fine_rows[b][5] - highest << " dB from the highest): estimate "
-                           << estimate << " dB, " << factor << " x |" << fine_rows[b][5] << " - "
-                           << coarse_rows[b][5] << "| = " << factor * difference << " dB");
+      BOOST_TEST_MESSAGE(f << " Hz (" << fine_rows[b][5] - highest
+                           << " dB from the highest): estimate " << estimate << " dB, " << factor
+                           << " x |" << fine_rows[b][5] << " - " << coarse_rows[b][5]
+                           << "| = " << factor * difference << " dB");
       // Two runs of one model agree to rounding only: the lattice
       // convolution's FFTW plans are measured (FFTW_MEASURE), so their
       // rounding differs from run to run, and every band but the
@@ -274,9 +277,9 @@ BOOST_AUTO_TEST_CASE(no_point_enters_the_road_by_the_frequency_domain_synthesis)
   const synthesis::ModeSynthesis modes =
     synthesis::read_modal_model((stages / "modal_model.h5").string());
   const unsigned int      n_c   = green.n_points();
-  const modal::PatchModel model = synthesis::to_patch_model(
-    modes, Eigen::MatrixXd::Zero(n_c, n_c), green.df * (green.n_lines - 1));
-  const fe::MaterialParameters      materials;
+  const modal::PatchModel model = synthesis::to_patch_model(modes, Eigen::MatrixXd::Zero(n_c, n_c),
+                                                            green.df * (green.n_lines - 1));
+  const fe::MaterialParameters       materials;
   const geometry::GeometryParameters geometry;
   // The solve at a tolerance of 1e-10, not the default 1e-6: this test
   // checks the convolution to 1e-6 of the displacement change (about 1e-11
@@ -288,20 +291,22 @@ BOOST_AUTO_TEST_CASE(no_point_enters_the_road_by_the_frequency_domain_synthesis)
   BOOST_TEST_REQUIRE(grid.n_points() == 7680u);
 
   road::RoadTextureParameters roads;
-  roads.sinusoid.amplitude  = amplitude;
-  roads.sinusoid.wavelength = wavelength;
-  const road::Texture   texture = roads.make("sinusoid", 0.08 + 0.03);
-  const road::PatchRoad road(texture, grid.points, roads.sampling, "sinusoid");
-  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z, Eigen::VectorXd &slope) {
+  roads.sinusoid.amplitude                = amplitude;
+  roads.sinusoid.wavelength               = wavelength;
+  const road::Texture             texture = roads.make("sinusoid", 0.08 + 0.03);
+  const road::PatchRoad           road(texture, grid.points, roads.sampling, "sinusoid");
+  const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z,
+                                                Eigen::VectorXd &slope) {
     road.heights(x, z, slope);
   };
   contact::RollingSetup setup;
-  setup.speed       = speed_kmh / 3.6;
-  setup.time_step   = texture.dx / setup.speed;
-  setup.n_steps     = 100; // 3.84 cm: about one wavelength
-  setup.static_load = static_load;
+  setup.speed                 = speed_kmh / 3.6;
+  setup.time_step             = texture.dx / setup.speed;
+  setup.n_steps               = 100; // 3.84 cm: about one wavelength
+  setup.static_load           = static_load;
   const Eigen::VectorXd tread = contact::tread_heights(grid.points);
-  const auto start = contact::start_grid_contact(grid, synthesis::static_line(green), tread, heights, setup);
+  const auto            start =
+    contact::start_grid_contact(grid, synthesis::static_line(green), tread, heights, setup);
   auto convolution = contact::make_grid_convolution(
     contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0, 2),
     grid);
@@ -318,8 +323,8 @@ BOOST_AUTO_TEST_CASE(no_point_enters_the_road_by_the_frequency_domain_synthesis)
   std::vector<Eigen::VectorXd> q(f.size());
   for (std::size_t n = 0; n < f.size(); ++n)
     q[n] = grid.gather(f[n]);
-  const auto coarse = test::synthesise_displacements(model, setup.time_step, q);
-  double     scale = 0., penetration = 0., gap = 0.;
+  const auto                   coarse = test::synthesise_displacements(model, setup.time_step, q);
+  double                       scale = 0., penetration = 0., gap = 0.;
   std::vector<Eigen::VectorXd> u(f.size());
   for (std::size_t n = 0; n < f.size(); ++n)
     {
@@ -334,14 +339,13 @@ BOOST_AUTO_TEST_CASE(no_point_enters_the_road_by_the_frequency_domain_synthesis)
         if (f[n][p] > 0.)
           gap = std::max(gap, std::abs(u[n][p] - d[n][p]) / scale);
       }
-  BOOST_TEST_MESSAGE("main job's path, " << setup.n_steps << " steps on " << grid.n_points()
-                                         << " points, points in contact "
-                                         << 100. * summary.min_contact_fraction << "% to "
-                                         << 100. * summary.max_contact_fraction
-                                         << "%: by the frequency-domain synthesis, penetration "
-                                         << penetration << " and loaded points off the road "
-                                         << gap << " of the displacement change " << scale
-                                         << " m");
+  BOOST_TEST_MESSAGE("main job's path, "
+                     << setup.n_steps << " steps on " << grid.n_points()
+                     << " points, points in contact " << 100. * summary.min_contact_fraction
+                     << "% to " << 100. * summary.max_contact_fraction
+                     << "%: by the frequency-domain synthesis, penetration " << penetration
+                     << " and loaded points off the road " << gap << " of the displacement change "
+                     << scale << " m");
   // Measured 1.5e-6 for both: the synthesis' own error (its replicas of
   // the Nyquist band), 1.5e-11 m here.
   BOOST_TEST(penetration <= 5e-6);

@@ -34,8 +34,9 @@ BOOST_AUTO_TEST_CASE(frequency_response_is_inverse_dynamic_stiffness)
       BOOST_TEST(model.n_modes() == (xi > 1. + 1e-8 ? 2u : 1u));
       for (const double f : {0., 1., 50., 100.66, 101., 400., 4000.})
         {
-          const double               w   = 2. * M_PI * f;
-          const std::complex<double> ref = 1. / std::complex<double>(4e5 - w * w, w * osc.damping());
+          const double               w = 2. * M_PI * f;
+          const std::complex<double> ref =
+            1. / std::complex<double>(4e5 - w * w, w * osc.damping());
           if (xi == 0. && std::abs(f - 100.66) < 0.1)
             continue; // at resonance the undamped response is infinite
           BOOST_TEST_CONTEXT("xi = " << xi << ", f = " << f)
@@ -54,7 +55,12 @@ BOOST_AUTO_TEST_CASE(impulse_response_against_odeint)
       const auto       model = osc.modal_model();
       for (const double t : {1e-6, 1e-3, 7.7e-3, 0.05})
         {
-          const auto   ref   = test::integrate(osc, [](double) { return 0.; }, 0., 1., 0., t);
+          const auto ref = test::integrate(
+            osc,
+            [](double) {
+              return 0.;
+            },
+            0., 1., 0., t);
           const double scale = 1. / osc.natural_frequency(); // |g| <= 1 / (M omega_0)
           const double tol   = model_tolerance(xi, 1e-10);
           BOOST_TEST_CONTEXT("xi = " << xi << ", t = " << t)
@@ -80,8 +86,12 @@ BOOST_AUTO_TEST_CASE(free_motion_against_odeint)
         {
           double u, v;
           osc.free_motion(1e-3, -0.3, t, u, v);
-          const auto ref =
-            test::integrate(osc, [&](double) { return -osc.mass() * osc.gravity(); }, 1e-3, -0.3, 0., t);
+          const auto ref = test::integrate(
+            osc,
+            [&](double) {
+              return -osc.mass() * osc.gravity();
+            },
+            1e-3, -0.3, 0., t);
           BOOST_TEST_CONTEXT("xi = " << xi << ", t = " << t)
           {
             BOOST_TEST(std::isfinite(u));

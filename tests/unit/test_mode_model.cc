@@ -40,10 +40,10 @@ namespace
   synthesis::ModeSynthesis
   known_synthesis()
   {
-    const unsigned int P = 7, m = 9;
-    std::mt19937       random(7);
+    const unsigned int                     P = 7, m = 9;
+    std::mt19937                           random(7);
     std::uniform_real_distribution<double> u(-1., 1.);
-    synthesis::ModeSynthesis s;
+    synthesis::ModeSynthesis               s;
     s.frequency_hz.resize(m);
     s.damping_ratio.resize(m);
     const double f[m]  = {120., 310., 311., 640., 900., 1400., 1900., 2500., 3000.};
@@ -63,7 +63,7 @@ namespace
     s.instantaneous = B * B.transpose();
     for (unsigned int p = 0; p < P; ++p)
       s.points.push_back({{0.01 * p, 0.002 * p, 0.27}});
-    s.wavenumber = {0, 1, 1, 2, 3, 4, 5, 6, 7};
+    s.wavenumber               = {0, 1, 1, 2, 3, 4, 5, 6, 7};
     s.dispersion.frequency_hz  = {Eigen::VectorXd::LinSpaced(2, 120., 640.)};
     s.dispersion.damping_ratio = {Eigen::VectorXd::Constant(2, 0.02)};
     return s;
@@ -87,9 +87,9 @@ namespace
         const Eigen::MatrixXcd g = s.at(2. * M_PI * f);
         for (unsigned int i = 0; i < 7; ++i)
           for (unsigned int j = 0; j < 7; ++j)
-            worst = std::max(worst, std::abs(model.frequency_response(i, j, 2. * M_PI * f) -
-                                             g(i, j)) /
-                                      g.cwiseAbs().maxCoeff());
+            worst =
+              std::max(worst, std::abs(model.frequency_response(i, j, 2. * M_PI * f) - g(i, j)) /
+                                g.cwiseAbs().maxCoeff());
       }
     return worst;
   }
@@ -108,8 +108,9 @@ BOOST_AUTO_TEST_CASE(poles_and_residues_give_the_closed_form)
   BOOST_TEST(worst < 3e-14);
   // Exactly critical damping is taken as xi = 1 + 1e-6 (two real poles
   // 2.8e-3 w apart): a relative change of order 1e-6 in that mode.
-  const auto   s1      = known_synthesis();
-  const double nudged = pole_residue_error(s1, synthesis::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
+  const auto   s1 = known_synthesis();
+  const double nudged =
+    pole_residue_error(s1, synthesis::to_patch_model(s1, Eigen::MatrixXd(), 4000.));
   BOOST_TEST_MESSAGE("with a critically damped mode: " << nudged);
   BOOST_TEST(nudged < 1e-7);
   // The static compliance: G_r + sum phi phi^T / w^2.
@@ -123,8 +124,8 @@ BOOST_AUTO_TEST_CASE(negative_damping_and_zero_frequency_are_refused)
   auto s             = known_synthesis();
   s.damping_ratio(2) = -0.01;
   BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
-  s                  = known_synthesis();
-  s.frequency_hz(0)  = 0.;
+  s                 = known_synthesis();
+  s.frequency_hz(0) = 0.;
   BOOST_CHECK_THROW(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.), NumericalError);
 }
 
@@ -140,25 +141,25 @@ namespace
   /// drops the velocity from its steps), its u against the first's, and its
   /// velocity at the end, summed again from its states, against the first's.
   std::array<double, 4>
-  recursion_differences(const modal::PatchModel &model,
-                        const convolution::ShapePrecision precision =
-                          convolution::ShapePrecision::double_precision)
+  recursion_differences(
+    const modal::PatchModel          &model,
+    const convolution::ShapePrecision precision = convolution::ShapePrecision::double_precision)
   {
     const auto         full = synthesis::full_form(model);
     const double       dt   = 2e-5;
     const unsigned int n = 400, P = model.n_points();
-    auto fast   = convolution::make_modal_patch_convolution(model, dt, 2, precision);
-    auto fast_u = convolution::make_modal_patch_convolution(model, dt, 2, precision);
-    auto dense  = convolution::make_modal_patch_convolution(full, dt, 1);
-    auto direct = convolution::make_direct_patch_convolution(model, dt, n + 1);
+    auto               fast   = convolution::make_modal_patch_convolution(model, dt, 2, precision);
+    auto               fast_u = convolution::make_modal_patch_convolution(model, dt, 2, precision);
+    auto               dense  = convolution::make_modal_patch_convolution(full, dt, 1);
+    auto               direct = convolution::make_direct_patch_convolution(model, dt, n + 1);
     // The one-step influences, each against its own size. Without G_r the
     // displacement's response to the impulse at the step's end (u[3]) is zero:
     // exactly in the full form, to round-off in the rank-one form (2.5e-20
     // against u[0]'s 7e-6 with FMA), so a zero one is measured against the
     // largest of its kind.
-    double                         influence = 0.;
+    double                             influence = 0.;
     const convolution::PatchInfluence &a = fast->influence(), &b = dense->influence();
-    const auto relative = [](const std::array<Eigen::MatrixXd, 4> &x,
+    const auto                         relative = [](const std::array<Eigen::MatrixXd, 4> &x,
                              const std::array<Eigen::MatrixXd, 4> &y, const unsigned int g) {
       double largest = 0.;
       for (const auto &m : y)
@@ -191,7 +192,7 @@ namespace
         worst_direct = std::max(worst_direct, (u1 - u3).cwiseAbs().maxCoeff());
         worst_u      = std::max(worst_u, (u1 - u4).cwiseAbs().maxCoeff());
         convolution::PatchLoad load(P);
-        Eigen::VectorXd    next(P);
+        Eigen::VectorXd        next(P);
         for (unsigned int p = 0; p < P; ++p)
           next(p) = u(random);
         // The start is the last end (its modal forces reused), except every
@@ -208,8 +209,8 @@ namespace
     fast->history(u1, v1);
     fast_u->history(u4, v4);
     const double velocity = (v1 - v4).cwiseAbs().maxCoeff() / v1.cwiseAbs().maxCoeff();
-    return {{worst_dense / size, worst_direct / size, influence,
-             std::max(worst_u / size, velocity)}};
+    return {
+      {worst_dense / size, worst_direct / size, influence, std::max(worst_u / size, velocity)}};
   }
 } // namespace
 
@@ -218,9 +219,9 @@ BOOST_AUTO_TEST_CASE(rank_one_recursion_equals_the_full_form_and_the_direct_sum)
   // The undamped mode cannot be convolved (Re lambda = 0): give it a little damping.
   auto s             = known_synthesis();
   s.damping_ratio(3) = 0.01;
-  const auto d       = recursion_differences(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.));
-  BOOST_TEST_MESSAGE("rank-one recursion against the full form " << d[0]
-                     << ", against the direct sum " << d[1] << "; influences " << d[2]
+  const auto d = recursion_differences(synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.));
+  BOOST_TEST_MESSAGE("rank-one recursion against the full form "
+                     << d[0] << ", against the direct sum " << d[1] << "; influences " << d[2]
                      << "; displacement alone, then the velocity " << d[3]);
   BOOST_TEST(d[0] < 2e-14);
   BOOST_TEST(d[1] < 7e-14);
@@ -239,10 +240,10 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
   // load whose start is not the last end. 150 modes with complex shapes
   // (some over-critical: real poles) and a relaxing residual: 420 terms,
   // split over two threads.
-  const unsigned int P = 12, m = 150, n = 300;
-  std::mt19937       random(5);
+  const unsigned int                     P = 12, m = 150, n = 300;
+  std::mt19937                           random(5);
   std::uniform_real_distribution<double> u(0., 1.);
-  synthesis::ModeSynthesis s;
+  synthesis::ModeSynthesis               s;
   s.frequency_hz.resize(m);
   s.damping_ratio.resize(m);
   s.shapes.resize(m, P);
@@ -266,22 +267,22 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
   const auto   model    = synthesis::to_patch_model(s, Eigen::MatrixXd(), 1e4);
   const double dt       = 1.5e-5;
   using convolution::ShapePrecision;
-  auto step   = convolution::make_rank_one_patch_convolution(model, dt, 2,
-                                                       ShapePrecision::double_precision, 1);
+  auto step =
+    convolution::make_rank_one_patch_convolution(model, dt, 2, ShapePrecision::double_precision, 1);
   auto direct = convolution::make_direct_patch_convolution(model, dt, n + 1);
   std::vector<std::unique_ptr<convolution::PatchConvolution>> blocked;
   for (const unsigned int J : {4u, 8u, 16u})
     blocked.push_back(convolution::make_rank_one_patch_convolution(
       model, dt, 2, ShapePrecision::double_precision, J));
-  auto single = convolution::make_rank_one_patch_convolution(model, dt, 2,
-                                                         ShapePrecision::single_precision, 16);
-  Eigen::VectorXd q0 = Eigen::VectorXd::Constant(P, 50.);
+  auto            single = convolution::make_rank_one_patch_convolution(model, dt, 2,
+                                                                        ShapePrecision::single_precision, 16);
+  Eigen::VectorXd q0     = Eigen::VectorXd::Constant(P, 50.);
   for (auto *c : {step.get(), direct.get(), single.get()})
     c->preload(q0);
   for (auto &c : blocked)
     c->preload(q0);
   double          worst_block = 0., worst_direct = 0., worst_single = 0., worst_v = 0.;
-  double          size = 0.;
+  double          size     = 0.;
   Eigen::VectorXd previous = q0, u1(P), u2(P), v1(P), v2(P);
   for (unsigned int k = 0; k < n; ++k)
     {
@@ -298,7 +299,8 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
           if (velocity)
             {
               c->history(u2, v2);
-              worst_v = std::max(worst_v, (v1 - v2).cwiseAbs().maxCoeff() / v1.cwiseAbs().maxCoeff());
+              worst_v =
+                std::max(worst_v, (v1 - v2).cwiseAbs().maxCoeff() / v1.cwiseAbs().maxCoeff());
             }
           else
             c->history_u(u2);
@@ -326,9 +328,9 @@ BOOST_AUTO_TEST_CASE(time_blocks_equal_the_step_by_step_update)
   BOOST_TEST(worst_direct / size < 3e-14);
   BOOST_TEST(worst_single / size < 7e-7);
   BOOST_TEST(worst_single / size > 1e-12); // the shapes are rounded: not the double path
-  BOOST_CHECK_THROW(convolution::make_rank_one_patch_convolution(
-                      model, dt, 2, ShapePrecision::double_precision, 5),
-                    std::logic_error);
+  BOOST_CHECK_THROW(
+    convolution::make_rank_one_patch_convolution(model, dt, 2, ShapePrecision::double_precision, 5),
+    std::logic_error);
 }
 
 BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_rounding)
@@ -342,8 +344,9 @@ BOOST_AUTO_TEST_CASE(single_precision_shapes_follow_the_full_form_to_float_round
   s.damping_ratio(3) = 0.01;
   const auto model   = synthesis::to_patch_model(s, Eigen::MatrixXd(), 4000.);
   const auto d       = recursion_differences(model, convolution::ShapePrecision::single_precision);
-  BOOST_TEST_MESSAGE("single-precision shapes: against the full form " << d[0]
-                     << ", against the direct sum " << d[1] << "; displacement alone, then the "
+  BOOST_TEST_MESSAGE("single-precision shapes: against the full form "
+                     << d[0] << ", against the direct sum " << d[1]
+                     << "; displacement alone, then the "
                      << "velocity " << d[3]);
   BOOST_TEST(d[0] < 7e-7);
   BOOST_TEST(d[1] < 7e-7);
@@ -378,13 +381,14 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
       Eigen::MatrixXcd g = s.instantaneous.cast<std::complex<double>>();
       for (Eigen::Index k = 0; k < s.shapes.rows(); ++k)
         {
-          const double           wk = 2. * M_PI * s.frequency_hz(k), xi = s.damping_ratio(k);
-          const double           wd = wk * std::sqrt(1. - xi * xi);
+          const double               wk = 2. * M_PI * s.frequency_hz(k), xi = s.damping_ratio(k);
+          const double               wd = wk * std::sqrt(1. - xi * xi);
           const std::complex<double> l(-xi * wk, wd), j(0., 1.);
-          Eigen::VectorXcd       psi = s.shapes.row(k).transpose().cast<std::complex<double>>();
-          psi.imag()                 = s.shapes_imag.row(k).transpose();
-          g += psi * psi.transpose() / (2. * j * wd * (j * w - l)) -
-               psi.conjugate() * psi.conjugate().transpose() / (2. * j * wd * (j * w - std::conj(l)));
+          Eigen::VectorXcd           psi = s.shapes.row(k).transpose().cast<std::complex<double>>();
+          psi.imag()                     = s.shapes_imag.row(k).transpose();
+          g +=
+            psi * psi.transpose() / (2. * j * wd * (j * w - l)) -
+            psi.conjugate() * psi.conjugate().transpose() / (2. * j * wd * (j * w - std::conj(l)));
         }
       const double size = g.cwiseAbs().maxCoeff();
       worst             = std::max(worst, (s.at(w) - g).cwiseAbs().maxCoeff() / size);
@@ -393,8 +397,8 @@ BOOST_AUTO_TEST_CASE(complex_shapes_give_the_closed_form_and_the_same_recursion)
           worst_model =
             std::max(worst_model, std::abs(model.frequency_response(i, jj, w) - g(i, jj)) / size);
     }
-  BOOST_TEST_MESSAGE("complex shapes: synthesis against the sum written out " << worst
-                     << ", pole-residue form " << worst_model);
+  BOOST_TEST_MESSAGE("complex shapes: synthesis against the sum written out "
+                     << worst << ", pole-residue form " << worst_model);
   BOOST_TEST(worst < 3e-14);
   BOOST_TEST(worst_model < 5e-15);
   CHECK_BOUND((model.static_compliance() - s.at(0.).real()).cwiseAbs().maxCoeff() /
@@ -426,18 +430,18 @@ BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_l
   // and over-critical modes high in w_k whose slow pole j w_k (xi -
   // sqrt(xi^2 - 1)) lies within the band (they must be summed, not
   // interpolated). Against modes_at() at each of the 257 lines.
-  const unsigned int P = 6, m = 400, lines = 257;
-  const double       df = 15.625;
+  const unsigned int                     P = 6, m = 400, lines = 257;
+  const double                           df = 15.625;
   std::mt19937                           random(19);
   std::uniform_real_distribution<double> u(-1., 1.);
-  synthesis::ModeSynthesis                   s;
-  s.frequency_hz  = Eigen::VectorXd::LinSpaced(m, 60., 20000.);
-  s.damping_ratio = Eigen::VectorXd::Constant(m, 0.02);
-  s.frequency_hz(150) = 4000. * 1.249; // just below the split, lightly damped
-  s.frequency_hz(151) = 4000. * 1.251; // just above it
-  s.damping_ratio(200) = 0.;           // undamped, above the band
-  s.damping_ratio(300) = 40.;          // 12 kHz, its slow pole at about 150 Hz
-  s.damping_ratio(390) = 3.;           // over-critical, both poles beyond the band
+  synthesis::ModeSynthesis               s;
+  s.frequency_hz       = Eigen::VectorXd::LinSpaced(m, 60., 20000.);
+  s.damping_ratio      = Eigen::VectorXd::Constant(m, 0.02);
+  s.frequency_hz(150)  = 4000. * 1.249; // just below the split, lightly damped
+  s.frequency_hz(151)  = 4000. * 1.251; // just above it
+  s.damping_ratio(200) = 0.;            // undamped, above the band
+  s.damping_ratio(300) = 40.;           // 12 kHz, its slow pole at about 150 Hz
+  s.damping_ratio(390) = 3.;            // over-critical, both poles beyond the band
   std::sort(s.frequency_hz.data(), s.frequency_hz.data() + m);
   s.shapes.resize(m, P);
   for (unsigned int k = 0; k < m; ++k)
@@ -449,7 +453,9 @@ BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_l
         {
           s.damping_ratio(300) = 0.9; // complex shapes need xi < 1
           s.damping_ratio(390) = 0.5;
-          s.shapes_imag        = 0.1 * Eigen::MatrixXd::NullaryExpr(m, P, [&] { return u(random); });
+          s.shapes_imag        = 0.1 * Eigen::MatrixXd::NullaryExpr(m, P, [&] {
+                            return u(random);
+                          });
         }
       const auto interpolated = s.modes_at_lines(df, lines);
       BOOST_TEST_REQUIRE(interpolated.size() == lines);
@@ -457,9 +463,11 @@ BOOST_AUTO_TEST_CASE(modes_beyond_the_band_interpolated_equal_the_sum_at_every_l
       for (unsigned int l = 0; l < lines; ++l)
         {
           const Eigen::MatrixXcd g = s.modes_at(2. * M_PI * df * l);
-          worst = std::max(worst, (interpolated[l] - g).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff());
+          worst =
+            std::max(worst, (interpolated[l] - g).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff());
         }
-      BOOST_TEST_MESSAGE("modes beyond the band interpolated, " << (complex_shapes ? "complex" : "real")
+      BOOST_TEST_MESSAGE("modes beyond the band interpolated, "
+                         << (complex_shapes ? "complex" : "real")
                          << " shapes: largest difference from the sum at each line " << worst);
       BOOST_TEST(worst < 1e-13);
     }
@@ -536,10 +544,10 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
   // carries at least 0.1% of the function's peak is found within 1e-3 in
   // frequency.
   synthesis::ModeSynthesis s;
-  const double f[7]  = {180., 420., 430., 900., 1500., 2300., 3300.};
-  const double xi[7] = {0.02, 0.03, 0.03, 0.02, 0.04, 0.03, 0.05};
-  s.frequency_hz     = Eigen::Map<const Eigen::VectorXd>(f, 7);
-  s.damping_ratio    = Eigen::Map<const Eigen::VectorXd>(xi, 7);
+  const double             f[7]  = {180., 420., 430., 900., 1500., 2300., 3300.};
+  const double             xi[7] = {0.02, 0.03, 0.03, 0.02, 0.04, 0.03, 0.05};
+  s.frequency_hz                 = Eigen::Map<const Eigen::VectorXd>(f, 7);
+  s.damping_ratio                = Eigen::Map<const Eigen::VectorXd>(xi, 7);
   s.shapes.resize(7, 3);
   for (unsigned int k = 0; k < 7; ++k)
     for (unsigned int p = 0; p < 3; ++p)
@@ -587,8 +595,8 @@ BOOST_AUTO_TEST_CASE(lsce_finds_the_modes_of_a_synthesis)
 
 BOOST_AUTO_TEST_CASE(modal_model_file_round_trip)
 {
-  const auto dir  = test::scratch_directory("mode_model");
-  const auto file = dir / "modal_model.h5";
+  const auto dir        = test::scratch_directory("mode_model");
+  const auto file       = dir / "modal_model.h5";
   auto       s          = known_synthesis();
   s.residual_relaxation = 3.5e-6;
   base::ParameterRecord record;

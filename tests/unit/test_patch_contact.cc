@@ -18,9 +18,9 @@
 #include <functional>
 
 using namespace greentread;
+using test::ring_radius;
 using test::synthetic_patch;
 using test::tread_height;
-using test::ring_radius;
 
 namespace
 {
@@ -36,14 +36,16 @@ namespace
   void
   check_converged(const contact::RollingSummary &s)
   {
-    BOOST_TEST(s.failed_steps == 0u, "failed steps: " << s.failed_steps << ", first "
-                                                      << s.first_failure);
+    BOOST_TEST(s.failed_steps == 0u,
+               "failed steps: " << s.failed_steps << ", first " << s.first_failure);
   }
   /// A 2 cm sinusoid of 0.3 mm rolled at @p V [m/s], lifted by @p offset,
   /// under the tread heights @p tread: the demand d, dd of contact::roll().
   std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)>
-  sinusoid_demand(const modal::PatchModel &model, const Eigen::VectorXd &tread, const double V,
-                  const double offset)
+  sinusoid_demand(const modal::PatchModel &model,
+                  const Eigen::VectorXd   &tread,
+                  const double             V,
+                  const double             offset)
   {
     return [&model, tread, V, offset](const double t, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
       for (unsigned int p = 0; p < model.n_points(); ++p)
@@ -64,8 +66,11 @@ namespace
   };
 
   ConvolutionComparison
-  compare_convolutions(const modal::PatchModel &model, const double dt, const unsigned int n_steps,
-                       const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand)
+  compare_convolutions(
+    const modal::PatchModel                                                 &model,
+    const double                                                             dt,
+    const unsigned int                                                       n_steps,
+    const std::function<void(double, Eigen::VectorXd &, Eigen::VectorXd &)> &demand)
   {
     std::vector<Eigen::VectorXd> forces[2];
     unsigned int                 run     = 0;
@@ -73,7 +78,7 @@ namespace
       forces[run].push_back(s.force);
     };
     ConvolutionComparison c;
-    auto modal  = convolution::make_modal_patch_convolution(model, dt, 2);
+    auto                  modal = convolution::make_modal_patch_convolution(model, dt, 2);
     auto direct = convolution::make_direct_patch_convolution(model, dt, n_steps + 1);
     c.modal     = contact::roll(*modal, demand, n_steps, Eigen::VectorXd(), observe);
     run         = 1;
@@ -96,8 +101,10 @@ namespace
   };
 
   SlowRoll
-  slow_roll(const modal::PatchModel &model, const Eigen::VectorXd &tread, const double V,
-            const double dt)
+  slow_roll(const modal::PatchModel &model,
+            const Eigen::VectorXd   &tread,
+            const double             V,
+            const double             dt)
   {
     const Eigen::MatrixXd G0   = model.static_compliance();
     const auto            road = sinusoid_demand(model, tread, V, 0.);
@@ -117,7 +124,8 @@ namespace
       r.peak         = std::max(r.peak, max_abs(ref.q));
     };
     auto conv = convolution::make_modal_patch_convolution(model, dt);
-    r.summary = contact::roll(*conv, demand, static_cast<unsigned int>(0.02 / V / dt), eq.q, observe);
+    r.summary =
+      contact::roll(*conv, demand, static_cast<unsigned int>(0.02 / V / dt), eq.q, observe);
     return r;
   }
 } // namespace
@@ -152,14 +160,14 @@ BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
   // code with one point: the mass's height is its flight (free motion with
   // gravity from rest on the road) plus g * F, so the road asks g * F >= d
   // with d = u_r - u_flight.
-  const sdof::Oscillator osc(test::oscillator_parameters());
-  const road::Sinusoid   profile(5e-3, 1e-2);
-  const road::RoadTrack  track{profile, test::oscillator_parameters().speed};
-  const double           dt = 1e-5, end_time = 0.2;
+  const sdof::Oscillator    osc(test::oscillator_parameters());
+  const road::Sinusoid      profile(5e-3, 1e-2);
+  const road::RoadTrack     track{profile, test::oscillator_parameters().speed};
+  const double              dt = 1e-5, end_time = 0.2;
   const sdof::ExactSolution exact(osc, track, end_time);
 
   modal::PatchModel model;
-  model.points = {{{0., 0., ring_radius}}};
+  model.points        = {{{0., 0., ring_radius}}};
   const auto one_mode = osc.modal_model();
   for (const auto &term : one_mode.terms())
     {
@@ -168,8 +176,8 @@ BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
       model.real.push_back(false);
       model.residues.push_back(Eigen::MatrixXcd::Constant(1, 1, term.residue));
     }
-  model.errors = Eigen::MatrixXd::Zero(1, 1);
-  auto       conv = convolution::make_modal_patch_convolution(model, dt);
+  model.errors      = Eigen::MatrixXd::Zero(1, 1);
+  auto       conv   = convolution::make_modal_patch_convolution(model, dt);
   const auto flight = [&](const double t, double &u, double &v) {
     osc.free_motion(track.height(0.), 0., t, u, v);
   };
@@ -179,7 +187,7 @@ BOOST_AUTO_TEST_CASE(one_point_with_one_mode_is_the_1dof_exact_solution)
     d[0]  = track.height(t) - uf;
     dd[0] = track.velocity(t) - vf;
   };
-  double     error = 0.;
+  double     error   = 0.;
   const auto observe = [&](const contact::RollingStep &s) {
     double uf, vf;
     flight(s.time, uf, vf);
@@ -199,10 +207,10 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree)
   // The same patch on a sinusoid with both convolutions: the recursion is
   // exact, so the runs agree to round-off (far inside any fit error).
   const auto model = synthetic_patch();
-  const auto c     = compare_convolutions(model, 2e-5, 3000,
-                                      sinusoid_demand(model, tread_height(model), 20., 2e-4));
+  const auto c =
+    compare_convolutions(model, 2e-5, 3000, sinusoid_demand(model, tread_height(model), 20., 2e-4));
   BOOST_TEST_MESSAGE("direct vs modal-recursive: max force difference " << c.difference << " N of "
-                                                                         << c.peak << " N");
+                                                                        << c.peak << " N");
   check_converged(c.modal);
   check_converged(c.direct);
   BOOST_TEST(c.modal.min_contact_fraction < 1.); // the sinusoid lifts points off
@@ -217,7 +225,7 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
   const auto            model = synthetic_patch();
   const Eigen::VectorXd tread = tread_height(model);
   const Eigen::MatrixXd G0    = model.static_compliance();
-  const auto eq = contact::solve_static_contact(G0, -tread, 100., 0.);
+  const auto            eq    = contact::solve_static_contact(G0, -tread, 100., 0.);
   BOOST_TEST(std::abs(eq.q.sum() - 100.) < 1e-9 * 100.);
   // Complementarity of the static solution, measured here from G0, the
   // demand and the force (the force itself is non-negative by construction:
@@ -225,19 +233,19 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there)
   // tolerance, 1e-10 of the scale.
   const test::Complementarity c =
     test::complementarity(G0, -(-tread.array() + eq.delta).matrix(), eq.q);
-  BOOST_TEST_MESSAGE("static contact: gap down to " << c.gap << ", complementarity "
-                                                    << c.natural << " and " << c.product);
+  BOOST_TEST_MESSAGE("static contact: gap down to " << c.gap << ", complementarity " << c.natural
+                                                    << " and " << c.product);
   BOOST_TEST(c.gap >= -2e-10);
   BOOST_TEST(c.natural <= 2e-10);
   BOOST_TEST(c.product <= 2e-10);
   BOOST_TEST(eq.n_contact < model.n_points()); // the tread's curvature lifts the ends
 
-  auto conv = convolution::make_modal_patch_convolution(model, 1e-5);
+  auto       conv   = convolution::make_modal_patch_convolution(model, 1e-5);
   const auto demand = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
     d  = (-tread.array() + eq.delta).matrix();
     dd = Eigen::VectorXd::Zero(d.size());
   };
-  double     drift = 0.;
+  double     drift   = 0.;
   const auto observe = [&](const contact::RollingStep &s) {
     drift = std::max(drift, max_abs(s.force - eq.q));
   };
@@ -261,7 +269,8 @@ BOOST_AUTO_TEST_CASE(slow_roll_follows_the_static_solution)
       BOOST_TEST_MESSAGE("slow roll at " << V << " m/s: largest difference to the static "
                                          << "solution " << r.error << " N of " << r.peak << " N");
       check_converged(r.summary);
-      BOOST_TEST(r.summary.min_contact_fraction < r.summary.max_contact_fraction); // the active set moves
+      BOOST_TEST(r.summary.min_contact_fraction <
+                 r.summary.max_contact_fraction); // the active set moves
       errors.push_back(r.error / r.peak);
     }
   BOOST_TEST(errors[1] < 1e-3);
@@ -278,8 +287,8 @@ BOOST_AUTO_TEST_CASE(multi_point_contact_with_a_real_residual_pole)
   // Checked on the 12 points against two references: the direct
   // convolution (to round-off) and, rolled slowly, the static solution of
   // each position.
-  auto               model = synthetic_patch(0.05, false);
-  const double       fr    = 3000.;
+  auto                  model = synthetic_patch(0.05, false);
+  const double          fr    = 3000.;
   const Eigen::MatrixXd local = synthetic_patch().instantaneous;
   model.lambda.emplace_back(-2. * M_PI * fr, 0.);
   model.real.push_back(true);
@@ -319,7 +328,7 @@ BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
   // start-up, the impulse is the static load times the time.
   const auto            model = synthetic_patch();
   const Eigen::VectorXd tread = tread_height(model);
-  const auto eq = contact::solve_static_contact(model.static_compliance(), -tread, 80., 0.);
+  const auto         eq = contact::solve_static_contact(model.static_compliance(), -tread, 80., 0.);
   const double       dt = 2e-5, t_settle = 0.2;
   const unsigned int n_steps = 20000; // 0.4 s; the slowest mode decays in 1/(0.05 * 2 pi 120 Hz)
   const auto         demand  = [&](double, Eigen::VectorXd &d, Eigen::VectorXd &dd) {
@@ -333,8 +342,8 @@ BOOST_AUTO_TEST_CASE(impulse_is_static_load_times_duration_after_the_start)
     else
       first_peak = std::max(first_peak, s.force.sum());
   };
-  auto       conv = convolution::make_modal_patch_convolution(model, dt);
-  const auto s    = contact::roll(*conv, demand, n_steps, Eigen::VectorXd(), observe);
+  auto         conv     = convolution::make_modal_patch_convolution(model, dt);
+  const auto   s        = contact::roll(*conv, demand, n_steps, Eigen::VectorXd(), observe);
   const double expected = 80. * (n_steps * dt - t_settle);
   BOOST_TEST_MESSAGE("impulse after the start-up " << late_impulse << " N s, static load times "
                                                    << "duration " << expected
@@ -348,8 +357,8 @@ BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound)
 {
   // A patch on a synthetic road-A texture, envelope sampling as in the
   // scene, under the extremes of patch_rolling.h.
-  const auto            model = synthetic_patch(0.02);
-  const Eigen::VectorXd tread = tread_height(model);
+  const auto                        model = synthetic_patch(0.02);
+  const Eigen::VectorXd             tread = tread_height(model);
   std::vector<road::WavelengthBand> bands;
   std::vector<double>               levels;
   road::texture_preset("road-A", bands, levels);
@@ -376,9 +385,9 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused)
   BOOST_CHECK_THROW(contact::roll(*conv, demand, 3, Eigen::VectorXd(), {}), NumericalError);
   BOOST_CHECK_THROW(contact::roll(*conv, demand, 3, Eigen::VectorXd::Zero(5), {}), InputError);
   // A static load no indentation can carry (no point can reach the road).
-  BOOST_CHECK_THROW(contact::solve_static_contact(Eigen::MatrixXd::Zero(2, 2),
-                                                  Eigen::VectorXd::Zero(2), 10., 0.),
-                    NumericalError);
+  BOOST_CHECK_THROW(
+    contact::solve_static_contact(Eigen::MatrixXd::Zero(2, 2), Eigen::VectorXd::Zero(2), 10., 0.),
+    NumericalError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

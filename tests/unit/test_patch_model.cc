@@ -23,17 +23,17 @@ namespace
    */
   struct KnownSystem
   {
-    static constexpr unsigned int n = 3;
-    std::vector<std::complex<double>> lambda;
+    static constexpr unsigned int      n = 3;
+    std::vector<std::complex<double>>  lambda;
     std::vector<std::array<double, n>> shape;
-    double                            f_r, local;
+    double                             f_r, local;
     /// The local compliance as a constant (true) or a real pole at f_r.
     bool constant;
 
     explicit KnownSystem(const double f_max, const bool constant_local = false)
-      : f_r(3. * f_max)
-      , local(2e-5)
-      , constant(constant_local)
+        : f_r(3. * f_max)
+        , local(2e-5)
+        , constant(constant_local)
     {
       const double f[4]  = {180., 530., 1210., 2350.};
       const double xi[4] = {0.03, 0.02, 0.04, 0.05};
@@ -87,11 +87,11 @@ BOOST_AUTO_TEST_SUITE(patch_model)
 
 BOOST_AUTO_TEST_CASE(a_known_system_is_recovered_for_every_pair)
 {
-  const double                          f_max = 4000., df = 15.625;
-  const KnownSystem                     truth(f_max);
-  const auto                            green = truth.sample(df, 257);
-  modal::IdentificationParameters       identification;
-  modal::PatchModelParameters           parameters;
+  const double                    f_max = 4000., df = 15.625;
+  const KnownSystem               truth(f_max);
+  const auto                      green = truth.sample(df, 257);
+  modal::IdentificationParameters identification;
+  modal::PatchModelParameters     parameters;
   parameters.instantaneous_residual = false; // a residual pole at 3 f_max, as the truth
   const auto model = modal::fit_patch_model(green, identification, parameters, false);
 
@@ -159,8 +159,8 @@ BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovere
             scale = std::max(scale, std::abs(truth.g(i, j, w)));
             // The one-pair model leaves G_r out.
             BOOST_TEST(std::abs(model.pair_model(i, j).frequency_response(w) +
-                                model.instantaneous(i, j) -
-                                model.frequency_response(i, j, w)) <= 1e-12 * scale);
+                                model.instantaneous(i, j) - model.frequency_response(i, j, w)) <=
+                       1e-12 * scale);
           }
       }
   BOOST_TEST_MESSAGE("instantaneous residual: worst |g_model - g| = " << worst << " of " << scale);
@@ -169,10 +169,10 @@ BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovere
 
 BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)
 {
-  const KnownSystem                     truth(2000.);
-  const auto                            green = truth.sample(15.625, 129);
-  modal::IdentificationParameters       identification;
-  modal::PatchModelParameters           parameters;
+  const KnownSystem               truth(2000.);
+  const auto                      green = truth.sample(15.625, 129);
+  modal::IdentificationParameters identification;
+  modal::PatchModelParameters     parameters;
   const auto model = modal::fit_patch_model(green, identification, parameters, false);
   const std::filesystem::path file = test::scratch_directory("patch-model") / "gt_patch_model.h5";
   base::ParameterRecord       record;

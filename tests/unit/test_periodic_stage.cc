@@ -35,16 +35,16 @@ namespace
   /// Points on faces and mid-planes alike: 3 x 3 at half-cell spacing (as
   /// nodes, or as the centres of tributary areas).
   periodic::PatchRequest
-  small_patch(const unsigned int n_cells,
+  small_patch(const unsigned int        n_cells,
               const periodic::PointLoad load = periodic::PointLoad::node)
   {
     periodic::PatchRequest r;
-    r.load                           = load;
-    const double           half_cell = M_PI * 0.2725 / n_cells;
-    r.points_along                   = 3;
-    r.points_across                  = 3;
-    r.length                         = 3 * half_cell;
-    r.width                          = 0.03;
+    r.load                 = load;
+    const double half_cell = M_PI * 0.2725 / n_cells;
+    r.points_along         = 3;
+    r.points_across        = 3;
+    r.length               = 3 * half_cell;
+    r.width                = 0.03;
     return r;
   }
 
@@ -128,7 +128,8 @@ namespace
     Eigen::MatrixXcd       g = Eigen::MatrixXcd::Zero(P, P);
     for (unsigned int p = 0; p < P; ++p)
       for (const auto &e : load[p])
-        g.row(p) += e.weight * (e.direction[0] * X.row(e.dof[0]) + e.direction[1] * X.row(e.dof[1]));
+        g.row(p) +=
+          e.weight * (e.direction[0] * X.row(e.dof[0]) + e.direction[1] * X.row(e.dof[1]));
     return g;
   }
 } // namespace
@@ -144,59 +145,59 @@ BOOST_AUTO_TEST_CASE(doubling_and_bloch_equal_the_full_ring)
 {
   // N a power of two (N_l = 14: three pieces) and not (N_l = 10: two).
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
-  for (const unsigned int N : {16u, 12u})
-    {
-      test::CoarseTyre tyre(N, small_patch(N, load));
-      BOOST_TEST_CONTEXT("N = " << N << (load == periodic::PointLoad::node ? ", node loads" :
-                                                                               ", tributary areas"))
+    for (const unsigned int N : {16u, 12u})
       {
-        BOOST_TEST(tyre.patch.points.size() == 9u);
-        BOOST_TEST(tyre.patch.n_contact_cells == 2u); // faces and mid-planes both used
-        auto full     = periodic::make_green_solver(periodic::Method::full_ring,
-                                                tyre.periodic_cell, tyre.patch);
-        auto doubling = periodic::make_green_solver(periodic::Method::doubling,
-                                                    tyre.periodic_cell, tyre.patch);
-        auto bloch    = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell,
-                                                 tyre.patch);
-        // The driving point's resonance peak on a 5 Hz scan, and a few lines.
-        periodic::SolveDiagnostics diagnostics;
-        double                     peak = 0., largest = 0.;
-        for (double f = 20.; f <= 400.; f += 5.)
-          {
-            const double a = std::abs(bloch->solve(2. * M_PI * f, diagnostics)(4, 4));
-            if (a > largest)
-              {
-                largest = a;
-                peak    = f;
-              }
-          }
-        for (const double f : {0., 150., peak, 1500.})
-          {
-            const double omega = 2. * M_PI * f;
-            const auto   g     = full->solve(omega, diagnostics);
-            BOOST_TEST_CONTEXT("f = " << f << " Hz")
+        test::CoarseTyre tyre(N, small_patch(N, load));
+        BOOST_TEST_CONTEXT(
+          "N = " << N << (load == periodic::PointLoad::node ? ", node loads" : ", tributary areas"))
+        {
+          BOOST_TEST(tyre.patch.points.size() == 9u);
+          BOOST_TEST(tyre.patch.n_contact_cells == 2u); // faces and mid-planes both used
+          auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
+                                                  tyre.patch);
+          auto doubling =
+            periodic::make_green_solver(periodic::Method::doubling, tyre.periodic_cell, tyre.patch);
+          auto bloch =
+            periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
+          // The driving point's resonance peak on a 5 Hz scan, and a few lines.
+          periodic::SolveDiagnostics diagnostics;
+          double                     peak = 0., largest = 0.;
+          for (double f = 20.; f <= 400.; f += 5.)
             {
-              CHECK_BOUND(relative_difference(doubling->solve(omega, diagnostics), g), 1.2e-10);
-              CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics), g), 1.2e-10);
-              // A few columns alone (Bloch: one load per wavenumber and its
-              // transposed solve for N - k; doubling: the default, the
-              // whole of g and the columns copied).
-              const std::vector<unsigned int> columns{4u, 0u, 8u};
-              Eigen::MatrixXcd                expected(g.rows(), columns.size());
-              for (std::size_t c = 0; c < columns.size(); ++c)
-                expected.col(c) = g.col(columns[c]);
-              CHECK_BOUND(relative_difference(bloch->solve_columns(omega, columns, diagnostics),
-                                              expected),
-                          1.2e-10);
-              CHECK_BOUND(relative_difference(doubling->solve_columns(omega, columns, diagnostics),
-                                              expected),
-                          1.2e-10);
+              const double a = std::abs(bloch->solve(2. * M_PI * f, diagnostics)(4, 4));
+              if (a > largest)
+                {
+                  largest = a;
+                  peak    = f;
+                }
             }
-          }
-        BOOST_CHECK_THROW(bloch->solve_columns(0., {9u}, diagnostics), NumericalError);
-        BOOST_TEST(diagnostics.max_residual < 1e-14);
+          for (const double f : {0., 150., peak, 1500.})
+            {
+              const double omega = 2. * M_PI * f;
+              const auto   g     = full->solve(omega, diagnostics);
+              BOOST_TEST_CONTEXT("f = " << f << " Hz")
+              {
+                CHECK_BOUND(relative_difference(doubling->solve(omega, diagnostics), g), 1.2e-10);
+                CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics), g), 1.2e-10);
+                // A few columns alone (Bloch: one load per wavenumber and its
+                // transposed solve for N - k; doubling: the default, the
+                // whole of g and the columns copied).
+                const std::vector<unsigned int> columns{4u, 0u, 8u};
+                Eigen::MatrixXcd                expected(g.rows(), columns.size());
+                for (std::size_t c = 0; c < columns.size(); ++c)
+                  expected.col(c) = g.col(columns[c]);
+                CHECK_BOUND(
+                  relative_difference(bloch->solve_columns(omega, columns, diagnostics), expected),
+                  1.2e-10);
+                CHECK_BOUND(relative_difference(
+                              doubling->solve_columns(omega, columns, diagnostics), expected),
+                            1.2e-10);
+              }
+            }
+          BOOST_CHECK_THROW(bloch->solve_columns(0., {9u}, diagnostics), NumericalError);
+          BOOST_TEST(diagnostics.max_residual < 1e-14);
+        }
       }
-    }
 }
 
 BOOST_AUTO_TEST_CASE(every_method_on_two_threads_equals_one_thread_of_bloch)
@@ -207,11 +208,11 @@ BOOST_AUTO_TEST_CASE(every_method_on_two_threads_equals_one_thread_of_bloch)
   // Without it this run stopped at a spurious "nearly singular" check.
   const unsigned int N = 12;
   test::CoarseTyre   tyre(N, small_patch(N));
-  const auto run = [&](const periodic::Method method, const unsigned int threads) {
+  const auto         run = [&](const periodic::Method method, const unsigned int threads) {
     MultithreadInfo::set_thread_limit(threads);
     periodic::GreenRunReport report;
     const auto g = periodic::compute_green_functions(tyre.periodic_cell, tyre.patch, method, 100.,
-                                                     24, MPI_COMM_SELF, false, report);
+                                                             24, MPI_COMM_SELF, false, report);
     MultithreadInfo::set_thread_limit();
     BOOST_TEST(report.threads == threads);
     return g;
@@ -219,8 +220,8 @@ BOOST_AUTO_TEST_CASE(every_method_on_two_threads_equals_one_thread_of_bloch)
   const auto reference = run(periodic::Method::bloch, 1);
   for (const auto method : {periodic::Method::doubling, periodic::Method::full_ring})
     {
-      const auto   g     = run(method, 2);
-      double       worst = 0., size = 0.;
+      const auto g     = run(method, 2);
+      double     worst = 0., size = 0.;
       for (std::size_t i = 0; i < g.values.size(); ++i)
         {
           worst = std::max(worst, std::abs(g.values[i] - reference.values[i]));
@@ -246,9 +247,9 @@ BOOST_AUTO_TEST_CASE(tributary_loads_have_the_moments_of_their_rectangles)
   request.length        = 0.0913;
   request.width         = 0.0771;
   request.load          = periodic::PointLoad::tributary_area;
-  test::CoarseTyre         tyre(64, request);
-  const auto        &patch = tyre.patch;
-  const double       alpha = tyre.cell->angle();
+  test::CoarseTyre tyre(64, request);
+  const auto      &patch = tyre.patch;
+  const double     alpha = tyre.cell->angle();
   BOOST_TEST(patch.points.size() == 35u);
   BOOST_TEST(patch.dx == request.length / 7, boost::test_tools::tolerance(1e-14));
   BOOST_TEST(patch.dy == request.width / 5, boost::test_tools::tolerance(1e-14));
@@ -261,7 +262,7 @@ BOOST_AUTO_TEST_CASE(tributary_loads_have_the_moments_of_their_rectangles)
       double sum = 0., s1 = 0., z1 = 0., s2 = 0., z2 = 0.;
       for (const auto &e : point.load)
         {
-          const auto  &d = tyre.periodic_cell.dofs[e.dof];
+          const auto &d = tyre.periodic_cell.dofs[e.dof];
           BOOST_TEST(d.on_tread);
           BOOST_TEST(d.component == 0u);
           const double s = point.radius * (d.angle + e.cell * alpha - point.angle);
@@ -289,30 +290,31 @@ BOOST_AUTO_TEST_CASE(ring_response_equals_the_full_ring)
   // full ring's Green's function column of the loaded point.
   const unsigned int N = 12;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
-  {
-  test::CoarseTyre         tyre(N, small_patch(N, load));
-  auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
-                                          tyre.patch);
-  periodic::SolveDiagnostics diagnostics;
-  for (const double f : {0., 333.})
     {
-      const double omega = 2. * M_PI * f;
-      const auto   g     = full->solve(omega, diagnostics);
-      const auto  &q     = tyre.patch.points[4];
-      const auto   u = periodic::ring_response(tyre.periodic_cell, omega, q.load, diagnostics);
-      BOOST_TEST(u.cols() == static_cast<long>(N));
-      double largest = 0.;
-      for (unsigned int p = 0; p < tyre.patch.points.size(); ++p)
+      test::CoarseTyre tyre(N, small_patch(N, load));
+      auto             full =
+        periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell, tyre.patch);
+      periodic::SolveDiagnostics diagnostics;
+      for (const double f : {0., 333.})
         {
-          Complex mean = 0.;
-          for (const auto &e : tyre.patch.points[p].load)
-            mean += e.weight * u(e.dof, e.cell);
-          largest = std::max(largest, std::abs(mean - g(p, 4)));
+          const double omega = 2. * M_PI * f;
+          const auto   g     = full->solve(omega, diagnostics);
+          const auto  &q     = tyre.patch.points[4];
+          const auto   u = periodic::ring_response(tyre.periodic_cell, omega, q.load, diagnostics);
+          BOOST_TEST(u.cols() == static_cast<long>(N));
+          double largest = 0.;
+          for (unsigned int p = 0; p < tyre.patch.points.size(); ++p)
+            {
+              Complex mean = 0.;
+              for (const auto &e : tyre.patch.points[p].load)
+                mean += e.weight * u(e.dof, e.cell);
+              largest = std::max(largest, std::abs(mean - g(p, 4)));
+            }
+          BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[4].load.size()
+                                    << " load DoFs")
+          CHECK_BOUND(largest / g.col(4).cwiseAbs().maxCoeff(), 1.5e-11);
         }
-      BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[4].load.size() << " load DoFs")
-      CHECK_BOUND(largest / g.col(4).cwiseAbs().maxCoeff(), 1.5e-11);
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
@@ -321,19 +323,21 @@ BOOST_AUTO_TEST_CASE(bloch_equals_a_cartesian_ring_from_deal_ii)
   // inflation: deal.II's ring mesh, its own inflation, Cartesian DoFs.
   const unsigned int N = 8;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
-  {
-  test::CoarseTyre         tyre(N, small_patch(N, load));
-  auto bloch = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
-  periodic::SolveDiagnostics diagnostics;
-  for (const double f : {0., 90., 700.})
-    BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
     {
-      const double omega = 2. * M_PI * f;
-      CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics),
-                                      cartesian_ring_green(tyre, omega)),
-                  2e-11);
+      test::CoarseTyre tyre(N, small_patch(N, load));
+      auto             bloch =
+        periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
+      periodic::SolveDiagnostics diagnostics;
+      for (const double f : {0., 90., 700.})
+        BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size()
+                                  << " load DoFs")
+        {
+          const double omega = 2. * M_PI * f;
+          CHECK_BOUND(relative_difference(bloch->solve(omega, diagnostics),
+                                          cartesian_ring_green(tyre, omega)),
+                      2e-11);
+        }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
@@ -342,24 +346,25 @@ BOOST_AUTO_TEST_CASE(reciprocity_and_passivity)
   // same terms, so there reciprocity would hold by construction.
   const unsigned int N = 16;
   for (const auto load : {periodic::PointLoad::node, periodic::PointLoad::tributary_area})
-  {
-  test::CoarseTyre         tyre(N, small_patch(N, load));
-  auto full = periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell,
-                                          tyre.patch);
-  periodic::SolveDiagnostics diagnostics;
-  for (double f = 10.; f <= 2000.; f += 220.)
     {
-      const auto g = full->solve(2. * M_PI * f, diagnostics);
-      BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size() << " load DoFs")
-      {
-        // g_ij = g_ji.
-        CHECK_BOUND((g - g.transpose()).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff(), 5e-11);
-        // With e^{j w t}, a damped driving point dissipates: Im g_ii < 0.
-        for (unsigned int i = 0; i < g.rows(); ++i)
-          BOOST_TEST(g(i, i).imag() < 0.);
-      }
+      test::CoarseTyre tyre(N, small_patch(N, load));
+      auto             full =
+        periodic::make_green_solver(periodic::Method::full_ring, tyre.periodic_cell, tyre.patch);
+      periodic::SolveDiagnostics diagnostics;
+      for (double f = 10.; f <= 2000.; f += 220.)
+        {
+          const auto g = full->solve(2. * M_PI * f, diagnostics);
+          BOOST_TEST_CONTEXT("f = " << f << " Hz, " << tyre.patch.points[0].load.size()
+                                    << " load DoFs")
+          {
+            // g_ij = g_ji.
+            CHECK_BOUND((g - g.transpose()).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff(), 5e-11);
+            // With e^{j w t}, a damped driving point dissipates: Im g_ii < 0.
+            for (unsigned int i = 0; i < g.rows(); ++i)
+              BOOST_TEST(g(i, i).imag() < 0.);
+          }
+        }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
@@ -390,22 +395,22 @@ BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
   }
   geometry::GeometryParameters geometry;
   geometry.geo_file     = (dir / "ring.geo").string();
-  geometry.rim_diameter = 1.;   // only checked for plausibility
+  geometry.rim_diameter = 1.; // only checked for plausibility
   geometry.mesh_size    = 0.01;
   geometry.n_cells      = 256;
   const geometry::TyreCell cell(geometry);
   fe::MaterialParameters   parameters;
-  parameters.tread_nu   = 0.;
-  parameters.tread_loss = 0.;
-  const auto materials  = parameters.materials();
+  parameters.tread_nu        = 0.;
+  parameters.tread_loss      = 0.;
+  const auto       materials = parameters.materials();
   fe::ElasticModel model(cell.cell(), materials);
   model.assemble();
   // Nothing held (no boundary has id 99), no prestress.
-  const auto periodic_cell =
-    periodic::make_periodic_cell(model, cell.angle(), geometry.n_cells, 99, geometry::tread_surface, false);
+  const auto periodic_cell = periodic::make_periodic_cell(model, cell.angle(), geometry.n_cells, 99,
+                                                          geometry::tread_surface, false);
   periodic::BlochCell bloch(periodic_cell);
   const auto         &tread = materials.at(fe::tread_id);
-  const double        E = parameters.tread_E, rho = tread.density, I = w * t * t * t / 12., A = w * t;
+  const double E = parameters.tread_E, rho = tread.density, I = w * t * t * t / 12., A = w * t;
   for (const unsigned int n : {2u, 3u, 4u})
     {
       const double phi = 2. * M_PI * n / geometry.n_cells;
@@ -417,7 +422,7 @@ BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
         0.5 * (K + K.adjoint()), 0.5 * (M + M.adjoint()));
       const double computed = std::sqrt(eigen.eigenvalues()(0));
       const double exact    = std::sqrt(E * I * n * n * std::pow(n * n - 1., 2) /
-                                     (rho * A * std::pow(R, 4) * (n * n + 1.)));
+                                        (rho * A * std::pow(R, 4) * (n * n + 1.)));
       BOOST_TEST_MESSAGE("thin ring, n = " << n << ": Bloch " << computed / (2. * M_PI)
                                            << " Hz, Hoppe " << exact / (2. * M_PI) << " Hz");
       CHECK_BOUND(std::abs(computed / exact - 1.), 3.5e-4);
@@ -428,8 +433,7 @@ BOOST_AUTO_TEST_CASE(thin_ring_natural_frequencies)
       one_point.length = one_point.width = 0.01;
       one_point.points_along = one_point.points_across = 1;
       const auto patch = periodic::place_contact_points(periodic_cell, one_point);
-      auto       solver =
-        periodic::make_green_solver(periodic::Method::bloch, periodic_cell, patch);
+      auto solver      = periodic::make_green_solver(periodic::Method::bloch, periodic_cell, patch);
       periodic::SolveDiagnostics diagnostics;
       BOOST_CHECK_EXCEPTION(solver->solve(computed, diagnostics), NumericalError,
                             [](const NumericalError &e) {
@@ -463,13 +467,13 @@ BOOST_AUTO_TEST_CASE(faces_that_do_not_match_are_refused)
   fe::MaterialParameters materials;
   fe::ElasticModel       model(moved, materials.materials());
   model.assemble();
-  BOOST_CHECK_EXCEPTION(
-    periodic::make_periodic_cell(model, cell.angle(), 16, geometry::rim_seat,
-                                 geometry::tread_surface, false),
-    InputError, [](const InputError &e) {
-      return std::string(e.what()).find("the periodic faces of the cell do not match") !=
-             std::string::npos;
-    });
+  BOOST_CHECK_EXCEPTION(periodic::make_periodic_cell(model, cell.angle(), 16, geometry::rim_seat,
+                                                     geometry::tread_surface, false),
+                        InputError, [](const InputError &e) {
+                          return std::string(e.what()).find(
+                                   "the periodic faces of the cell do not match") !=
+                                 std::string::npos;
+                        });
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -6,13 +6,13 @@
 // static start by both solvers.
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_grid.h>
-#include <greentread/convolution/lattice_convolution.h>
 #include <greentread/contact/lcp.h>
 #include <greentread/contact/projected_cg.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/convolution/lattice_convolution.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/road/texture.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <Eigen/Dense>
 
@@ -47,7 +47,9 @@ namespace
   contact::SymmetricOperator
   dense_operator(const Eigen::MatrixXd &W)
   {
-    return [&W](const Eigen::VectorXd &x, Eigen::VectorXd &y) { y = W * x; };
+    return [&W](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+      y = W * x;
+    };
   }
 
 } // namespace
@@ -94,9 +96,10 @@ BOOST_AUTO_TEST_CASE(lattice_convolution_equals_the_dense_product)
       other.join();
       BOOST_TEST(wrong.load() == 0u);
     }
-  BOOST_CHECK_THROW(convolution::LatticeConvolution(Eigen::MatrixXd::Constant(2, 2, NAN)), InputError);
+  BOOST_CHECK_THROW(convolution::LatticeConvolution(Eigen::MatrixXd::Constant(2, 2, NAN)),
+                    InputError);
   const convolution::LatticeConvolution L(Eigen::MatrixXd::Ones(2, 2));
-  Eigen::VectorXd                   y;
+  Eigen::VectorXd                       y;
   BOOST_CHECK_THROW(L.apply(Eigen::VectorXd::Ones(3), y), InputError);
 }
 
@@ -128,10 +131,11 @@ BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
       for (unsigned int i = 0; i < n; ++i)
         lambda[i] = std::pow(1e3, double(i) / (n - 1));
       const Eigen::MatrixXd W = Q * lambda.asDiagonal() * Q.transpose();
-      const Eigen::VectorXd q = random_vector(n, seed) + Eigen::VectorXd::Constant(n, 0.1 * seed - 1.);
-      std::vector<bool>     active;
-      const auto            reference = contact::solve_lcp(W, q, active);
-      const auto            mprgp     = contact::solve_lcp_projected_cg(dense_operator(W), q, {});
+      const Eigen::VectorXd q =
+        random_vector(n, seed) + Eigen::VectorXd::Constant(n, 0.1 * seed - 1.);
+      std::vector<bool> active;
+      const auto        reference = contact::solve_lcp(W, q, active);
+      const auto        mprgp     = contact::solve_lcp_projected_cg(dense_operator(W), q, {});
       BOOST_TEST(reference.converged);
       BOOST_TEST(mprgp.converged);
       BOOST_TEST(test::relative_difference(mprgp.z, reference.z, W, q) < 1e-8);
@@ -148,21 +152,21 @@ BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
 
   // The LCP of a 480-point grid (10 x 12 cells, 2 x 2 points each) for a
   // rough demand, cold and warm-started from a nearby demand's solution.
-  const auto                 coarse = coarse_points(10, 12);
-  const contact::ContactGrid grid(coarse, 2, tread_layer);
-  const Eigen::MatrixXd      G = coarse_compliance(coarse), W = grid.compliance(G);
-  const contact::ContactGrid free_grid(coarse, 2, tread_layer, true);
+  const auto                       coarse = coarse_points(10, 12);
+  const contact::ContactGrid       grid(coarse, 2, tread_layer);
+  const Eigen::MatrixXd            G = coarse_compliance(coarse), W = grid.compliance(G);
+  const contact::ContactGrid       free_grid(coarse, 2, tread_layer, true);
   const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     free_grid.apply(G, x, y);
   };
-  const Eigen::VectorXd d  = 3e-5 * random_vector(grid.n_points(), 1) -
-                            Eigen::VectorXd::Constant(grid.n_points(), 2e-5);
-  const Eigen::VectorXd d2 = d + 2e-6 * random_vector(grid.n_points(), 2);
+  const Eigen::VectorXd d =
+    3e-5 * random_vector(grid.n_points(), 1) - Eigen::VectorXd::Constant(grid.n_points(), 2e-5);
+  const Eigen::VectorXd       d2 = d + 2e-6 * random_vector(grid.n_points(), 2);
   contact::ProjectedCgOptions options;
-  options.operator_norm = contact::operator_norm(product, grid.n_points());
-  const auto cold       = contact::solve_lcp_projected_cg(product, -d, {}, options);
-  const auto warm       = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
-  const auto again      = contact::solve_lcp_projected_cg(product, -d2, {}, options);
+  options.operator_norm   = contact::operator_norm(product, grid.n_points());
+  const auto        cold  = contact::solve_lcp_projected_cg(product, -d, {}, options);
+  const auto        warm  = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
+  const auto        again = contact::solve_lcp_projected_cg(product, -d2, {}, options);
   std::vector<bool> none;
   const auto        pivoting  = contact::solve_lcp(W, -d2, none);
   const auto        reference = test::siconos_lemke(W, -d2);
@@ -170,8 +174,8 @@ BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
   for (unsigned int i = 0; i < grid.n_points(); ++i)
     n_active += pivoting.z[i] > 0.;
   BOOST_TEST_MESSAGE("480 points, " << n_active << " in contact: MPRGP cold " << cold.iterations
-                                    << " iterations, warm " << warm.iterations << " (from 0: "
-                                    << again.iterations << "); against pivoting "
+                                    << " iterations, warm " << warm.iterations
+                                    << " (from 0: " << again.iterations << "); against pivoting "
                                     << test::relative_difference(warm.z, pivoting.z, W, -d2)
                                     << ", against Siconos "
                                     << test::relative_difference(warm.z, reference.z, W, -d2));
@@ -192,34 +196,38 @@ BOOST_AUTO_TEST_CASE(mprgp_edge_cases_and_failures)
 {
   const Eigen::MatrixXd W = Eigen::MatrixXd::Identity(5, 5) * 2.;
   // No contact: z = 0 at once; every point pushed: z = -q / 2.
-  const auto none = contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Ones(5), {});
+  const auto none =
+    contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Ones(5), {});
   BOOST_TEST(none.converged);
   BOOST_TEST(none.iterations == 0u);
   BOOST_TEST(none.z.cwiseAbs().maxCoeff() == 0.);
-  const auto all = contact::solve_lcp_projected_cg(dense_operator(W), -Eigen::VectorXd::Ones(5), {});
+  const auto all =
+    contact::solve_lcp_projected_cg(dense_operator(W), -Eigen::VectorXd::Ones(5), {});
   BOOST_TEST(all.converged);
   BOOST_TEST((all.z - Eigen::VectorXd::Constant(5, 0.5)).cwiseAbs().maxCoeff() < 1e-12);
   // q = 0: z = 0.
-  BOOST_TEST(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Zero(5), {}).converged);
+  BOOST_TEST(
+    contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Zero(5), {}).converged);
   // Not positive definite: reported, not a wrong answer.
-  const Eigen::MatrixXd indefinite = Eigen::Vector2d(1., -1.).asDiagonal();
+  const Eigen::MatrixXd       indefinite = Eigen::Vector2d(1., -1.).asDiagonal();
   contact::ProjectedCgOptions options;
   options.operator_norm = 1.;
-  const auto failed =
-    contact::solve_lcp_projected_cg(dense_operator(indefinite), Eigen::Vector2d(1., -1.), {}, options);
+  const auto failed     = contact::solve_lcp_projected_cg(dense_operator(indefinite),
+                                                          Eigen::Vector2d(1., -1.), {}, options);
   BOOST_TEST(!failed.converged);
   BOOST_TEST(failed.message.find("not positive") != std::string::npos);
   BOOST_CHECK_THROW(contact::operator_norm(dense_operator(-W), 5), NumericalError);
-  BOOST_CHECK_THROW(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Constant(5, NAN), {}),
-                    NumericalError);
+  BOOST_CHECK_THROW(
+    contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Constant(5, NAN), {}),
+    NumericalError);
   BOOST_CHECK_THROW(contact::solve_lcp_projected_cg(dense_operator(W), Eigen::VectorXd::Ones(5),
                                                     Eigen::VectorXd::Ones(4)),
                     InputError);
   // The iteration limit, reported.
-  options.max_iterations = 1;
-  const Eigen::MatrixXd hard = Eigen::Vector3d(1., 10., 100.).asDiagonal();
-  const auto limited =
-    contact::solve_lcp_projected_cg(dense_operator(hard), -Eigen::Vector3d(1., 1., 1.), {}, options);
+  options.max_iterations        = 1;
+  const Eigen::MatrixXd hard    = Eigen::Vector3d(1., 10., 100.).asDiagonal();
+  const auto            limited = contact::solve_lcp_projected_cg(dense_operator(hard),
+                                                                  -Eigen::Vector3d(1., 1., 1.), {}, options);
   BOOST_TEST(!limited.converged);
   BOOST_TEST(limited.message.find("iterations") != std::string::npos);
 }
@@ -229,17 +237,18 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   // A synthetic modal model on 4 x 3 coarse cells, rolled on road-A on a 3 x
   // 3 grid from the static start: the matrix-free solver against pivoting,
   // at a tolerance of 1e-10 (here), and at the default (below).
-  const auto                 coarse = coarse_points(4, 3);
-  const unsigned int         n_c    = coarse.size();
+  const auto                     coarse = coarse_points(4, 3);
+  const unsigned int             n_c    = coarse.size();
   const synthesis::ModeSynthesis s      = test::synthetic_modes(coarse);
-  const modal::PatchModel model = synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
+  const modal::PatchModel        model =
+    synthesis::to_patch_model(s, Eigen::MatrixXd::Zero(n_c, n_c), 4000.);
 
   const contact::ContactGrid pivoting(coarse, 3, tread_layer),
     free(coarse, 3, tread_layer, true, true, 1e-10);
-  const test::GridRolls      r = test::roll_on_two_grids(model, pivoting, free);
-  const auto &start = r.start[0], &start_free = r.start[1];
-  const auto &summary = r.summary;
-  const double peak = r.peak, worst = r.worst;
+  const test::GridRolls r     = test::roll_on_two_grids(model, pivoting, free);
+  const auto           &start = r.start[0], &start_free = r.start[1];
+  const auto           &summary = r.summary;
+  const double          peak = r.peak, worst = r.worst;
   BOOST_TEST(start.n_contact > 0u);
   BOOST_TEST(std::abs(start_free.delta / start.delta - 1.) < 1e-7);
   BOOST_TEST((start_free.q - start.q).cwiseAbs().maxCoeff() < 1e-7 * start.q.maxCoeff());
@@ -257,8 +266,9 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   const contact::ContactGrid loose(coarse, 3, tread_layer, true);
   BOOST_TEST(loose.tolerance == 1e-6);
   const test::GridRolls d = test::roll_on_two_grids(model, pivoting, loose);
-  BOOST_TEST_MESSAGE("at the default tolerance: largest force difference " << d.worst / d.peak
-                     << " of the peak; largest penetration " << d.summary[1].max_penetration << " m");
+  BOOST_TEST_MESSAGE("at the default tolerance: largest force difference "
+                     << d.worst / d.peak << " of the peak; largest penetration "
+                     << d.summary[1].max_penetration << " m");
   BOOST_TEST(d.summary[1].failed_steps == 0u);
   BOOST_TEST(d.worst < 4.4e-6 * d.peak);
   BOOST_TEST(d.worst > 1e-8 * d.peak); // the tolerance reaches the solve

@@ -4,9 +4,9 @@
 // proportional damping the synthesis is exact; with a cut-off it converges).
 #include "coarse_tyre.h"
 #include <greentread/base/exceptions.h>
-#include <greentread/synthesis/mode_synthesis.h>
-#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/green_solvers.h>
+#include <greentread/synthesis/bloch_modes.h>
+#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/ring_modes.h>
 #include <greentread/synthesis/shared_pattern.h>
 
@@ -39,8 +39,11 @@ namespace
 
   /// The Bloch matrices a K + c C + m M of wavenumber k, dense.
   Eigen::MatrixXcd
-  dense_part(const periodic::PeriodicCell &cell, const unsigned int k, const Complex a,
-             const Complex c, const Complex m)
+  dense_part(const periodic::PeriodicCell &cell,
+             const unsigned int            k,
+             const Complex                 a,
+             const Complex                 c,
+             const Complex                 m)
   {
     periodic::BlochCell bloch(cell);
     bloch.set_combination(a, c, m);
@@ -52,7 +55,8 @@ namespace
   Eigen::MatrixXcd
   direct(const test::CoarseTyre &tyre, const double omega)
   {
-    auto solver = periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
+    auto solver =
+      periodic::make_green_solver(periodic::Method::bloch, tyre.periodic_cell, tyre.patch);
     periodic::SolveDiagnostics diagnostics;
     return solver->solve(omega, diagnostics);
   }
@@ -64,7 +68,7 @@ namespace
     for (const auto &p : tyre.patch.points)
       points.push_back({{p.x, p.y, p.radius}});
     return synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes, modes.shapes_imag,
-                             direct(tyre, 0.).real(), points);
+                                 direct(tyre, 0.).real(), points);
   }
 
   /// The direct Bloch Green's functions every 50 Hz from 0 to 2 kHz.
@@ -101,7 +105,7 @@ BOOST_AUTO_TEST_CASE(bloch_modes_equal_a_dense_eigen_solve)
   // 3 a complex Hermitian one.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request());
-  synthesis::ModeSearch   search;
+  synthesis::ModeSearch  search;
   search.cutoff = 2. * M_PI * 3000.;
   for (const unsigned int k : {0u, 3u, N / 2})
     {
@@ -114,53 +118,54 @@ BOOST_AUTO_TEST_CASE(bloch_modes_equal_a_dense_eigen_solve)
       // 60 kHz at k = 3, whose basis outgrows the first 512 columns of its
       // storage.
       for (const unsigned int slices : {1u, 3u, 7u, 0u})
-      {
-      if (slices == 0 && k != 3)
-        continue;
-      search.slices = std::max(slices, 1u);
-      search.cutoff = 2. * M_PI * (slices == 0 ? 60000. : 3000.);
-      const auto modes = synthesis::bloch_modes(tyre.periodic_cell, k, search);
-      Eigen::Index expected = 0;
-      while (expected < dense.eigenvalues().size() &&
-             dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
-        ++expected;
-      BOOST_TEST_MESSAGE("k = " << k << ", " << search.slices << " slices: " << modes.omega.size() << " modes to " << search.cutoff / (2. * M_PI) << " Hz ("
-                                << K.rows() << " DoFs), first "
-                                << modes.omega(0) / (2. * M_PI) << " Hz, Krylov dimension "
-                                << modes.krylov_dimension << ", residual "
-                                << modes.max_residual);
-      BOOST_TEST_REQUIRE(modes.omega.size() == expected);
-      BOOST_TEST_REQUIRE(expected > 5);
-      if (slices == 0)
-        // The basis outgrew its first 512 columns of storage.
-        BOOST_TEST_REQUIRE(modes.krylov_dimension > 512u);
-      const Eigen::MatrixXcd gram = modes.shapes.adjoint() * M * modes.shapes;
-      BOOST_TEST((gram - Eigen::MatrixXcd::Identity(expected, expected)).cwiseAbs().maxCoeff() <
-                 1e-10);
-      // The frequencies and damping ratios agree to the search's own accuracy,
-      // 1e-9 or the largest relative residual it kept if larger: the modes of
-      // k = 0 under the steel belt stop at rounding level (residual 1.9e-8),
-      // and agree to 3.5e-9 on an AVX-512 machine, 1e-9 on another.
-      const double accuracy = std::max(1e-9, modes.max_residual);
-      for (Eigen::Index r = 0; r < expected; ++r)
         {
-          const double w = std::sqrt(dense.eigenvalues()(r));
-          BOOST_TEST(std::abs(modes.omega(r) / w - 1.) < accuracy);
-          // The damping ratio from the dense eigenvector (its phase cancels),
-          // unless the frequency is repeated.
-          const bool repeated = (r > 0 && dense.eigenvalues()(r) < 1.0001 * dense.eigenvalues()(r - 1)) ||
-                                (r + 1 < expected && dense.eigenvalues()(r + 1) < 1.0001 * dense.eigenvalues()(r));
-          if (!repeated)
+          if (slices == 0 && k != 3)
+            continue;
+          search.slices         = std::max(slices, 1u);
+          search.cutoff         = 2. * M_PI * (slices == 0 ? 60000. : 3000.);
+          const auto   modes    = synthesis::bloch_modes(tyre.periodic_cell, k, search);
+          Eigen::Index expected = 0;
+          while (expected < dense.eigenvalues().size() &&
+                 dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
+            ++expected;
+          BOOST_TEST_MESSAGE(
+            "k = " << k << ", " << search.slices << " slices: " << modes.omega.size()
+                   << " modes to " << search.cutoff / (2. * M_PI) << " Hz (" << K.rows()
+                   << " DoFs), first " << modes.omega(0) / (2. * M_PI) << " Hz, Krylov dimension "
+                   << modes.krylov_dimension << ", residual " << modes.max_residual);
+          BOOST_TEST_REQUIRE(modes.omega.size() == expected);
+          BOOST_TEST_REQUIRE(expected > 5);
+          if (slices == 0)
+            // The basis outgrew its first 512 columns of storage.
+            BOOST_TEST_REQUIRE(modes.krylov_dimension > 512u);
+          const Eigen::MatrixXcd gram = modes.shapes.adjoint() * M * modes.shapes;
+          BOOST_TEST((gram - Eigen::MatrixXcd::Identity(expected, expected)).cwiseAbs().maxCoeff() <
+                     1e-10);
+          // The frequencies and damping ratios agree to the search's own accuracy,
+          // 1e-9 or the largest relative residual it kept if larger: the modes of
+          // k = 0 under the steel belt stop at rounding level (residual 1.9e-8),
+          // and agree to 3.5e-9 on an AVX-512 machine, 1e-9 on another.
+          const double accuracy = std::max(1e-9, modes.max_residual);
+          for (Eigen::Index r = 0; r < expected; ++r)
             {
-              const Eigen::VectorXcd v  = dense.eigenvectors().col(r);
-              const double           xi = v.dot(C * v).real() / (2. * w * v.dot(M * v).real());
-              BOOST_TEST(std::abs(modes.damping_ratio(r) - xi) < accuracy * xi);
+              const double w = std::sqrt(dense.eigenvalues()(r));
+              BOOST_TEST(std::abs(modes.omega(r) / w - 1.) < accuracy);
+              // The damping ratio from the dense eigenvector (its phase cancels),
+              // unless the frequency is repeated.
+              const bool repeated =
+                (r > 0 && dense.eigenvalues()(r) < 1.0001 * dense.eigenvalues()(r - 1)) ||
+                (r + 1 < expected && dense.eigenvalues()(r + 1) < 1.0001 * dense.eigenvalues()(r));
+              if (!repeated)
+                {
+                  const Eigen::VectorXcd v  = dense.eigenvectors().col(r);
+                  const double           xi = v.dot(C * v).real() / (2. * w * v.dot(M * v).real());
+                  BOOST_TEST(std::abs(modes.damping_ratio(r) - xi) < accuracy * xi);
+                }
+              if (k == 0 || 2 * k == N)
+                // Real up to the eigenvector's error, about residual / relative gap.
+                BOOST_TEST(modes.shapes.col(r).imag().norm() < 1e-6 * modes.shapes.col(r).norm());
             }
-          if (k == 0 || 2 * k == N)
-            // Real up to the eigenvector's error, about residual / relative gap.
-            BOOST_TEST(modes.shapes.col(r).imag().norm() < 1e-6 * modes.shapes.col(r).norm());
         }
-      }
     }
 }
 
@@ -171,11 +176,12 @@ BOOST_AUTO_TEST_CASE(every_mode_and_proportional_damping_give_the_bloch_solve)
   // and the static residual G_r vanishes.
   const unsigned int     N = 12;
   const test::CoarseTyre tyre(N, patch_request(), false);
-  synthesis::ModeSearch   search;
+  synthesis::ModeSearch  search;
   search.cutoff    = 2. * M_PI * 1e7;
   search.tolerance = 1e-7;
-  const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
-  const auto model = synthesis_of(tyre, modes);
+  const auto modes =
+    synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
+  const auto         model   = synthesis_of(tyre, modes);
   const unsigned int n_bloch = tyre.periodic_cell.n_face + tyre.periodic_cell.n_interior;
   BOOST_TEST_MESSAGE(modes.size() << " ring modes from cells of " << n_bloch << " DoFs, up to "
                                   << modes.omega.maxCoeff() / (2. * M_PI) << " Hz");
@@ -202,17 +208,17 @@ BOOST_AUTO_TEST_CASE(coupled_modes_equal_the_direct_solve_in_their_subspace)
   // A_k(r, q) the Bloch mode r under point q's load.
   const unsigned int     N = 16;
   const test::CoarseTyre tyre(N, patch_request(), true);
-  synthesis::ModeSearch   search;
-  search.cutoff    = 2. * M_PI * 3000.;
-  const auto modes = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
-                                          MPI_COMM_SELF, false);
+  synthesis::ModeSearch  search;
+  search.cutoff = 2. * M_PI * 3000.;
+  const auto modes =
+    synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
   BOOST_TEST_REQUIRE(modes.uncoupled == 0u);
   BOOST_TEST_REQUIRE(modes.shapes_imag.size() > 0);
-  const auto         model = synthesis_of(tyre, modes);
-  const Eigen::Index P     = tyre.patch.points.size();
+  const auto                         model = synthesis_of(tyre, modes);
+  const Eigen::Index                 P     = tyre.patch.points.size();
   std::vector<synthesis::BlochModes> bloch;
-  std::vector<Eigen::MatrixXcd>     A;
-  double                            coupling = 0.;
+  std::vector<Eigen::MatrixXcd>      A;
+  double                             coupling = 0.;
   for (unsigned int k = 0; k < N; ++k)
     {
       bloch.push_back(synthesis::bloch_modes(tyre.periodic_cell, k, search));
@@ -260,10 +266,10 @@ BOOST_AUTO_TEST_CASE(a_cutoff_converges_and_stays_passive)
   // keeps falling as the cut-off rises: worst 0.91%, 0.26%, 0.16% at 2.5, 5
   // and 10 kHz. With only the diagonal of Psi^H C Psi kept it stops at the
   // coupling's floor: 0.65% at 5 and 10 kHz.
-  const unsigned int     N = 16;
-  const test::CoarseTyre tyre(N, patch_request(), true);
+  const unsigned int                  N = 16;
+  const test::CoarseTyre              tyre(N, patch_request(), true);
   const base::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
-  std::vector<double> worst, diagonal;
+  std::vector<double>                 worst, diagonal;
   for (const double cutoff : {2500., 5000., 10000.})
     for (const bool couple : {true, false})
       {
@@ -272,15 +278,15 @@ BOOST_AUTO_TEST_CASE(a_cutoff_converges_and_stays_passive)
         synthesis::ModeSearch search;
         search.cutoff     = 2. * M_PI * cutoff;
         const auto modes  = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
-                                                 MPI_COMM_SELF, false, couple);
+                                                  MPI_COMM_SELF, false, couple);
         const auto model  = synthesis_of(tyre, modes);
         const auto errors = synthesis::compare(model, direct_lines);
         BOOST_TEST_MESSAGE("cut-off " << cutoff << " Hz, " << modes.size()
-                                      << (couple ? " coupled" : " diagonal")
-                                      << " modes: E median " << errors.median << ", worst "
-                                      << errors.worst << ", passivity " << errors.passivity
-                                      << ", G_r " << model.residual_definiteness()
-                                      << ", uncoupled wavenumbers " << modes.uncoupled);
+                                      << (couple ? " coupled" : " diagonal") << " modes: E median "
+                                      << errors.median << ", worst " << errors.worst
+                                      << ", passivity " << errors.passivity << ", G_r "
+                                      << model.residual_definiteness() << ", uncoupled wavenumbers "
+                                      << modes.uncoupled);
         BOOST_TEST(errors.passivity > -1e-12);
         BOOST_TEST(model.residual_definiteness() > -1e-10);
         (couple ? worst : diagonal).push_back(errors.worst);
@@ -299,17 +305,17 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   // With C = a M + b K the synthesis differs from the direct solve only by
   // the modes above the cut-off less their static part: at 2 kHz of lines
   // and a 10 kHz cut-off, E is below 1e-3 for every pair.
-  const unsigned int     N = 16;
-  const test::CoarseTyre tyre(N, patch_request(), false);
+  const unsigned int                  N = 16;
+  const test::CoarseTyre              tyre(N, patch_request(), false);
   const base::FrequencyResponseMatrix direct_lines = lines_to_2khz(tyre);
-  synthesis::ModeSearch search;
-  search.cutoff     = 2. * M_PI * 10000.;
-  const auto modes  = synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search,
-                                           MPI_COMM_SELF, false);
+  synthesis::ModeSearch               search;
+  search.cutoff = 2. * M_PI * 10000.;
+  const auto modes =
+    synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
   auto       model  = synthesis_of(tyre, modes);
   const auto errors = synthesis::compare(model, direct_lines);
   BOOST_TEST_MESSAGE("proportional damping, " << modes.size() << " modes: E median "
-                                               << errors.median << ", worst " << errors.worst);
+                                              << errors.median << ", worst " << errors.worst);
   BOOST_TEST(errors.worst < 1e-3);
   BOOST_TEST(errors.passivity > -1e-12);
   // The modes above the cut-off respond below it as phi phi^T / (w_k^2 (1 +
@@ -333,8 +339,8 @@ BOOST_AUTO_TEST_CASE(proportional_damping_leaves_only_truncation)
   // the sum itself at every line, above, to round-off: E is relative to
   // |g|, so it moves by about the lines' relative difference (1e-14).
   synthesis::ModalLines kept;
-  const auto        staged = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
-                                               modes.shapes_imag, direct_lines, &kept);
+  const auto staged = synthesis::synthesise(modes.omega, modes.damping_ratio, modes.shapes,
+                                            modes.shapes_imag, direct_lines, &kept);
   BOOST_TEST_REQUIRE(kept.matches(direct_lines));
   const auto reused = synthesis::compare(staged, direct_lines, &kept);
   BOOST_TEST(std::abs(staged.residual_relaxation / model.residual_relaxation - 1.) < 1e-12);
@@ -353,16 +359,16 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
   // independent dense solve: the massless DoFs condensed statically
   // (K_rr - K_rs K_ss^-1 K_sr, with M'_rr positive definite), then a dense
   // generalised eigen-solve.
-  const unsigned int N = 16;
-  test::CoarseTyre   tyre(N, patch_request(), true);
-  auto              &cell   = tyre.periodic_cell;
+  const unsigned int         N = 16;
+  test::CoarseTyre           tyre(N, patch_request(), true);
+  auto                      &cell   = tyre.periodic_cell;
   const periodic::SparseReal before = cell.mass;
   const periodic::SparseReal stiffness_damping =
     periodic::SparseReal(cell.damping - cell.mass_damping);
   BOOST_TEST_REQUIRE(cell.mass_damping.norm() > 0.);
   BOOST_TEST_REQUIRE(stiffness_damping.norm() > 0.);
-  const double               moved  = periodic::move_tread_mass_inward(cell);
-  Eigen::VectorXd            axial  = Eigen::VectorXd::Zero(cell.size());
+  const double    moved = periodic::move_tread_mass_inward(cell);
+  Eigen::VectorXd axial = Eigen::VectorXd::Zero(cell.size());
   for (unsigned int i = 0; i < cell.size(); ++i)
     {
       if (cell.dofs[i].component == 2)
@@ -376,8 +382,8 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
   BOOST_TEST(periodic::SparseReal(cell.damping - cell.mass_damping - stiffness_damping).norm() <
              1e-12 * stiffness_damping.norm());
   const double m0 = axial.dot(before * axial), m1 = axial.dot(cell.mass * axial);
-  BOOST_TEST_MESSAGE("moved " << 100. * moved << "% of the cell's mass; axial mass " << m0
-                              << " -> " << m1 << " kg");
+  BOOST_TEST_MESSAGE("moved " << 100. * moved << "% of the cell's mass; axial mass " << m0 << " -> "
+                              << m1 << " kg");
   BOOST_TEST(moved > 0.01);
   BOOST_TEST(moved < 0.2);
   BOOST_TEST(std::abs(m1 - m0) < 1e-12 * m0);
@@ -386,10 +392,11 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
   search.cutoff = 2. * M_PI * 3000.;
   for (const unsigned int k : {0u, 3u})
     {
-      const Eigen::MatrixXcd K = dense_part(cell, k, 1., 0., 0.);
-      const Eigen::MatrixXcd M = dense_part(cell, k, 0., 0., 1.);
+      const Eigen::MatrixXcd                                K = dense_part(cell, k, 1., 0., 0.);
+      const Eigen::MatrixXcd                                M = dense_part(cell, k, 0., 0., 1.);
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> mass_eigen(M);
-      BOOST_TEST(mass_eigen.eigenvalues().minCoeff() > -1e-12 * mass_eigen.eigenvalues().maxCoeff());
+      BOOST_TEST(mass_eigen.eigenvalues().minCoeff() >
+                 -1e-12 * mass_eigen.eigenvalues().maxCoeff());
       // The massive DoFs r and the massless s of [L, I].
       std::vector<Eigen::Index> r, s;
       for (Eigen::Index i = 0; i < K.rows(); ++i)
@@ -409,7 +416,7 @@ BOOST_AUTO_TEST_CASE(mass_moved_off_the_tread_surface)
       condensed = (0.5 * (condensed + condensed.adjoint())).eval();
       const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> dense(condensed,
                                                                              block(M, r, r));
-      const auto modes = synthesis::bloch_modes(cell, k, search);
+      const auto   modes    = synthesis::bloch_modes(cell, k, search);
       Eigen::Index expected = 0;
       while (expected < dense.eigenvalues().size() &&
              dense.eigenvalues()(expected) <= search.cutoff * search.cutoff)
@@ -437,7 +444,7 @@ BOOST_AUTO_TEST_CASE(shared_pattern_products_equal_eigens)
   // columns (the last group of four padded), one and two products at once.
   const test::CoarseTyre tyre(8, patch_request());
   periodic::BlochCell    bloch(tyre.periodic_cell);
-  const auto part = [&](const Complex a, const Complex c, const Complex m) {
+  const auto             part = [&](const Complex a, const Complex c, const Complex m) {
     bloch.set_combination(a, c, m);
     return periodic::SparseComplex(bloch.assemble(2. * M_PI * 3. / 8.));
   };

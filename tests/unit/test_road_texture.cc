@@ -90,14 +90,14 @@ BOOST_AUTO_TEST_CASE(synthetic_textures_match_their_presets)
       std::vector<double>               target;
       road::texture_preset(name, bands, target);
       // 384 um sampling (Section 5.2), 1.57 m x 98 mm.
-      const auto t     = road::synthetic_texture(bands, target, 384e-6, 4096, 256, 42, 1.);
+      const auto t = road::synthetic_texture(bands, target, 384e-6, 4096, 256, 42, 1.);
       // The generator checks itself with road::texture_spectrum(). Here the
       // band levels come from another analysis: the one-third-octave band
       // spectra of the analysis stage (Hann window, its own band sums),
       // with x as time, so that the band of spatial frequency 1 / lambda is
       // the wavelength band lambda; the mean square over the profiles.
-      std::vector<double> mean_square(bands.size(), 0.);
-      std::vector<double> profile(t.nx);
+      std::vector<double>    mean_square(bands.size(), 0.);
+      std::vector<double>    profile(t.nx);
       analysis::BandSpectrum spectrum;
       for (unsigned int j = 0; j < t.ny; ++j)
         {
@@ -148,8 +148,8 @@ BOOST_AUTO_TEST_CASE(a_long_preset_is_made_in_pieces_that_keep_its_spectrum)
   //   would give +41%, a linear fade -18% over the join);
   // - its length is an FFT-friendly sample count (2, 3 and 5 only).
   road::RoadTextureParameters roads; // road-A, seed 1, 2.304 m in 384 um samples
-  const double                width = 0.1;
-  const road::Texture         one   = roads.make("road-A", width);
+  const double                width  = 0.1;
+  const road::Texture         one    = roads.make("road-A", width);
   const road::Texture         longer = roads.make("road-A", width, 8.);
   BOOST_TEST(one.nx == 6000u);
   BOOST_TEST(longer.length() >= 8.);
@@ -167,11 +167,9 @@ BOOST_AUTO_TEST_CASE(a_long_preset_is_made_in_pieces_that_keep_its_spectrum)
   double     worst  = 0.;
   for (std::size_t b = 0; b < bands.size(); ++b)
     worst = std::max(worst, std::abs(levels[b] - target[b]));
-  BOOST_TEST_MESSAGE("8 m of road-A in pieces: worst band " << worst << " dB off target, MPD "
-                                                            << 1e3 * road::mean_profile_depth(longer)
-                                                            << " mm (one piece: "
-                                                            << 1e3 * road::mean_profile_depth(one)
-                                                            << " mm)");
+  BOOST_TEST_MESSAGE("8 m of road-A in pieces: worst band "
+                     << worst << " dB off target, MPD " << 1e3 * road::mean_profile_depth(longer)
+                     << " mm (one piece: " << 1e3 * road::mean_profile_depth(one) << " mm)");
   BOOST_TEST(worst < 1.);
 
   const unsigned int overlap = unsigned(std::ceil(0.2 / roads.spacing));
@@ -285,8 +283,8 @@ BOOST_AUTO_TEST_CASE(envelope_is_the_highest_sample_of_the_tributary_rectangle)
   for (unsigned int p = 0; p < points.size(); ++p)
     for (const unsigned int i0 : {40u, 41u, 97u, 180u, 233u})
       {
-        const double s  = i0 * t.dx - points[p][0] - x_offset;
-        const double xc = i0 * t.dx;
+        const double s   = i0 * t.dx - points[p][0] - x_offset;
+        const double xc  = i0 * t.dx;
         double       top = -INFINITY;
         for (unsigned int j = 0; j < t.ny; ++j)
           for (unsigned int i = 0; i < t.nx; ++i)
@@ -374,14 +372,13 @@ BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
   const auto refused = [&dir](const std::string &name, const std::string &text,
                               const std::string &message) {
     std::ofstream(dir / name) << text;
-    BOOST_CHECK_EXCEPTION(road::read_texture((dir / name).string()), InputError,
-                          [&](const InputError &e) {
-                            const bool found =
-                              std::string(e.what()).find(message) != std::string::npos;
-                            if (!found)
-                              BOOST_TEST_MESSAGE("message: " << e.what());
-                            return found;
-                          });
+    BOOST_CHECK_EXCEPTION(
+      road::read_texture((dir / name).string()), InputError, [&](const InputError &e) {
+        const bool found = std::string(e.what()).find(message) != std::string::npos;
+        if (!found)
+          BOOST_TEST_MESSAGE("message: " << e.what());
+        return found;
+      });
   };
   refused("ragged.txt", "1e-3 1e-3\n1 2 3\n1 2\n", "2 heights where the first profile has 3");
   refused("word.txt", "1e-3 1e-3\n1 x 3\n", "'x' is not a number");
@@ -394,8 +391,7 @@ BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
           "holds 3 values; its header announces NumPoints x NumProfiles = 4");
   BOOST_CHECK_EXCEPTION(road::read_texture((dir / "missing.sdf").string()), InputError,
                         [](const InputError &e) {
-                          return std::string(e.what()).find("does not exist") !=
-                                 std::string::npos;
+                          return std::string(e.what()).find("does not exist") != std::string::npos;
                         });
 }
 

@@ -58,9 +58,10 @@ BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
       double error = 0., penetration = 0.;
       for (const double jitter : {1., 1.1, 1.21})
         {
-          const auto o = simulate(test::oscillator_parameters(), test::contact_parameters(jitter * dt));
-          BOOST_TEST_MESSAGE("dt = " << jitter * dt << ": max |u - u_exact| = " << o.errors.max_u_error
-                                     << " m, penetration inside steps "
+          const auto o =
+            simulate(test::oscillator_parameters(), test::contact_parameters(jitter * dt));
+          BOOST_TEST_MESSAGE("dt = " << jitter * dt << ": max |u - u_exact| = "
+                                     << o.errors.max_u_error << " m, penetration inside steps "
                                      << o.errors.max_penetration_step << " m, fallback steps "
                                      << o.run.branch_count[4]);
           BOOST_TEST(o.max_abs_u < 5e-3 + 1e-4);
@@ -72,7 +73,7 @@ BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
       penetrations.push_back(penetration);
     }
   // Least-squares slope of log(error) against log(dt).
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  double       sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = dts.size();
   for (unsigned int i = 0; i < dts.size(); ++i)
     {
@@ -117,7 +118,8 @@ BOOST_AUTO_TEST_CASE(road_fast_enough_that_the_mass_flies)
 {
   // V0 = 1 m/s: peak road acceleration 200 g; the mass is thrown off every
   // crest and lands further on.
-  const auto o = simulate(test::oscillator_parameters(0.02, 1.), test::contact_parameters(1e-6, 0.05));
+  const auto o =
+    simulate(test::oscillator_parameters(0.02, 1.), test::contact_parameters(1e-6, 0.05));
   BOOST_TEST(o.errors.exact_contact_fraction < 0.5);
   BOOST_TEST(std::abs(o.errors.contact_fraction - o.errors.exact_contact_fraction) < 1e-3);
   BOOST_TEST(o.errors.max_u_error < 1e-6 * 5e-3);
@@ -128,8 +130,8 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_contact_runs_agree)
   // The whole nonlinear run, not only one load history: without truncation
   // the two methods choose the same contact loads and agree to round-off.
   const auto cp = test::contact_parameters(1e-4);
-  const auto a  = simulate(test::oscillator_parameters(), cp, convolution::Method::direct, 5e-3, 0.);
-  const auto b  = simulate(test::oscillator_parameters(), cp, convolution::Method::modal_recursive);
+  const auto a = simulate(test::oscillator_parameters(), cp, convolution::Method::direct, 5e-3, 0.);
+  const auto b = simulate(test::oscillator_parameters(), cp, convolution::Method::modal_recursive);
   double     du = 0.;
   for (unsigned int n = 0; n < a.run.u.size(); ++n)
     du = std::max(du, std::abs(a.run.u[n] - b.run.u[n]));

@@ -36,17 +36,17 @@ BOOST_AUTO_TEST_CASE(standard_errors_match_the_spread_over_records_of_one_road)
   // N; on the main job's 7680 points it is within 0.8% of the load).
   // The bound is the factor 1.5 the error bars are held to; the spread of 30
   // records is itself known to 13% (one standard deviation).
-  const auto            model = test::synthetic_patch(0.05);
-  const Eigen::VectorXd tread = test::tread_height(model);
+  const auto                        model = test::synthetic_patch(0.05);
+  const Eigen::VectorXd             tread = test::tread_height(model);
   std::vector<road::WavelengthBand> wavelength_bands;
   std::vector<double>               texture_levels;
   road::texture_preset("road-A", wavelength_bands, texture_levels);
   constexpr unsigned records = 30;
   test::RollingCase  run;
-  run.load     = 100.;
-  run.distance = 1.2 * records + 0.5 * 3.84e-4; // 30 x 3125 steps
-  const double        spacing = 3.84e-4;
-  const double        dt      = spacing / (run.speed_kmh / 3.6);
+  run.load             = 100.;
+  run.distance         = 1.2 * records + 0.5 * 3.84e-4; // 30 x 3125 steps
+  const double spacing = 3.84e-4;
+  const double dt      = spacing / (run.speed_kmh / 3.6);
   // 96,000 samples (36.9 m), a length of small prime factors: the
   // generator's FFTs take O(n^2) on a length with a large one.
   const road::Texture texture =
@@ -78,8 +78,9 @@ BOOST_AUTO_TEST_CASE(standard_errors_match_the_spread_over_records_of_one_road)
     }
 
   const auto bands = analysis::third_octave_bands(100., 5000.);
-  for (const auto &[name, spread] : {std::pair<std::string, const test::BandSpread *>{"total", &total},
-                                     {"centre point", &point}})
+  for (const auto &[name, spread] :
+       {std::pair<std::string, const test::BandSpread *>{"total", &total},
+        {"centre point", &point}})
     {
       double low = 1e9, high = 0.;
       for (std::size_t b = 0; b < bands.size(); ++b)

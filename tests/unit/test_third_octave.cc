@@ -246,7 +246,7 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
   const auto resonant = [&](const unsigned seed) {
     // y_n = e_n + 2 r cos(w) y_{n-1} - r^2 y_{n-2}, pole radius r from Q.
     const double w = 2. * M_PI * 1000. * dt, r = std::exp(-w / (2. * 5.));
-    auto         x = white(1000 + seed);
+    auto         x  = white(1000 + seed);
     double       y1 = 0., y2 = 0.;
     for (auto &v : x)
       {
@@ -275,8 +275,8 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
       for (unsigned r = 0; r < realisations; ++r)
         spread.add(analysis::welch_band_spectrum(make(r), dt, 1.));
       const auto &segments = spread.segments;
-      const auto bands = analysis::third_octave_bands(100., 5000.);
-      double     low = 1e9, high = 0.;
+      const auto  bands    = analysis::third_octave_bands(100., 5000.);
+      double      low = 1e9, high = 0.;
       for (std::size_t b = 0; b < bands.size(); ++b)
         {
           const double ratio = spread.ratio(b);
@@ -293,8 +293,7 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
           BOOST_TEST(ratio <= 1.5, bands[b].nominal << " Hz");
           if (name == "white")
             {
-              const double exact =
-                10. * std::log10(2. * dt * (bands[b].upper - bands[b].lower));
+              const double exact = 10. * std::log10(2. * dt * (bands[b].upper - bands[b].lower));
               // Within 3 standard errors of the mean of 40 levels, beside
               // the mean of a logarithm's bias, -(SE / 4.34)^2 / 2 in
               // 4.34 ln units.

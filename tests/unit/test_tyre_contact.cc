@@ -31,9 +31,9 @@ namespace
   /// The coarse tyre's patch model, road-A under it, and the tread's height.
   struct CoarseTyre
   {
-    modal::PatchModel model;
-    Eigen::VectorXd   tread;
-    road::Texture     texture;
+    modal::PatchModel       model;
+    Eigen::VectorXd         tread;
+    road::Texture           texture;
     static constexpr double spacing = 3.84e-4;
 
     CoarseTyre()
@@ -59,8 +59,9 @@ namespace
 
     /// Roll from the static equilibrium; @p observe sees every step.
     contact::RollingSummary
-    roll(const test::RollingCase &run, const std::function<void(const contact::RollingStep &)> &observe,
-         Eigen::VectorXd *start = nullptr) const
+    roll(const test::RollingCase                                 &run,
+         const std::function<void(const contact::RollingStep &)> &observe,
+         Eigen::VectorXd                                         *start = nullptr) const
     {
       return test::roll_on_texture(model, tread, texture, run, observe, start);
     }
@@ -80,8 +81,8 @@ BOOST_AUTO_TEST_CASE(lcp_instances_of_the_rolling_tyre_match_siconos)
   for (const double roughness : {1., 5.})
     {
       test::RollingCase run;
-      run.roughness = roughness;
-      run.speed_kmh = roughness > 1. ? 130. : 90.;
+      run.roughness      = roughness;
+      run.speed_kmh      = roughness > 1. ? 130. : 90.;
       const auto observe = [&](const contact::RollingStep &s) {
         if (s.step % 3 != 0)
           return;
@@ -117,13 +118,17 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree_on_the_tyre)
 {
   // 5 cm of road-A at 90 km/h: the convolution sum over every past step
   // against the modal recursion, both from the same patch model.
-  const CoarseTyre tyre;
-  test::RollingCase  run;
+  const CoarseTyre  tyre;
+  test::RollingCase run;
   run.distance = 0.05;
   std::vector<Eigen::VectorXd> modal, direct;
-  tyre.roll(run, [&](const contact::RollingStep &s) { modal.push_back(s.force); });
+  tyre.roll(run, [&](const contact::RollingStep &s) {
+    modal.push_back(s.force);
+  });
   run.direct = true;
-  tyre.roll(run, [&](const contact::RollingStep &s) { direct.push_back(s.force); });
+  tyre.roll(run, [&](const contact::RollingStep &s) {
+    direct.push_back(s.force);
+  });
   BOOST_TEST_REQUIRE(modal.size() == direct.size());
   double difference = 0., scale = 0.;
   for (std::size_t n = 0; n < modal.size(); ++n)
@@ -131,8 +136,8 @@ BOOST_AUTO_TEST_CASE(direct_and_modal_recursive_convolutions_agree_on_the_tyre)
       difference = std::max(difference, (modal[n] - direct[n]).cwiseAbs().maxCoeff());
       scale      = std::max(scale, direct[n].cwiseAbs().maxCoeff());
     }
-  BOOST_TEST_MESSAGE(modal.size() << " steps: max |q_modal - q_direct| " << difference
-                                  << " N of " << scale << " N");
+  BOOST_TEST_MESSAGE(modal.size() << " steps: max |q_modal - q_direct| " << difference << " N of "
+                                  << scale << " N");
   // Measured 1.5e-14 of the peak: round-off, which differs between machines.
   BOOST_TEST(difference <= 1e-13 * scale);
 }
@@ -141,15 +146,18 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there_on_the_ty
 {
   // The run starts from the static contact of the model's own static
   // compliance: on a flat road nothing moves.
-  const CoarseTyre tyre;
-  test::RollingCase  run;
+  const CoarseTyre  tyre;
+  test::RollingCase run;
   run.flat     = true;
   run.distance = 0.1;
   Eigen::VectorXd q0;
-  double          drift = 0.;
+  double          drift   = 0.;
   const auto      summary = tyre.roll(
-    run, [&](const contact::RollingStep &s) { drift = std::max(drift, (s.force - q0).cwiseAbs().maxCoeff()); },
-    &q0);
+         run,
+         [&](const contact::RollingStep &s) {
+      drift = std::max(drift, (s.force - q0).cwiseAbs().maxCoeff());
+    },
+         &q0);
   BOOST_TEST_MESSAGE("flat road: the forces stay within " << drift << " N of the static "
                                                           << q0.sum() << " N");
   BOOST_TEST(summary.failed_steps == 0u);

@@ -50,9 +50,11 @@ namespace greentread
      * likely to pass, and at most longest_steps.
      */
     unsigned int
-    more_steps_for_target(const SpectraParameters &spectra, const BandRun &run,
-                          const BandSpectrum &stress, const BandSpectrum &force,
-                          unsigned int steps_done);
+    more_steps_for_target(const SpectraParameters &spectra,
+                          const BandRun           &run,
+                          const BandSpectrum      &stress,
+                          const BandSpectrum      &force,
+                          unsigned int             steps_done);
 
     /**
      * @brief The runs of one road at speed @p speed [m/s]: the run at the
@@ -76,8 +78,11 @@ namespace greentread
      *         does).
      */
     std::vector<BandRun>
-    plan_band_runs(const SpectraParameters &spectra, double speed, double time_step,
-                   double distance, double top_band);
+    plan_band_runs(const SpectraParameters &spectra,
+                   double                   speed,
+                   double                   time_step,
+                   double                   distance,
+                   double                   top_band);
 
     /// How many combined standard errors apart a band of the low-rate run
     /// and the same band of the run at the scene's step may be.
@@ -95,8 +100,9 @@ namespace greentread
      * scene then keeps the run at its step for every band.
      */
     std::string
-    low_rate_disagreement(const BandSpectrum &fine, const BandSpectrum &low_spectrum,
-                          const BandRun &low);
+    low_rate_disagreement(const BandSpectrum &fine,
+                          const BandSpectrum &low_spectrum,
+                          const BandRun      &low);
 
     /**
      * @brief The fine spectrum @p fine with the bands from @p low.f_low to
@@ -106,7 +112,8 @@ namespace greentread
      * @throws InputError if @p low_spectrum lacks one of those bands.
      */
     BandSpectrum
-    merge_band_spectra(const BandSpectrum &fine, const BandSpectrum &low_spectrum,
-                       const BandRun &low);
+    merge_band_spectra(const BandSpectrum &fine,
+                       const BandSpectrum &low_spectrum,
+                       const BandRun      &low);
   } // namespace analysis
 } // namespace greentread

@@ -30,10 +30,9 @@ namespace greentread
     struct ErrorBarParameters
     {
       /// The discretisations estimated, in the order of 'Estimates'.
-      std::vector<Discretisation> estimates = {Discretisation::time_step,
-                                               Discretisation::contact_grid,
-                                               Discretisation::mode_cutoff,
-                                               Discretisation::ring_section};
+      std::vector<Discretisation> estimates = {
+        Discretisation::time_step, Discretisation::contact_grid, Discretisation::mode_cutoff,
+        Discretisation::ring_section};
       /// The Fourier lines the lowest band of a coarser run's window holds.
       unsigned int window_lines = 4;
       /// The coarser level's mode cut-off over 'Patch model/Mode cutoff'.

@@ -88,17 +88,24 @@ namespace greentread
      * section: the same step and grid, on the section twice as coarse.
      */
     std::vector<EstimateRun>
-    plan_estimate_runs(const std::vector<BandRun> &plan, const ErrorBarParameters &parameters,
-                       double target_from, double speed, unsigned int subdivisions);
+    plan_estimate_runs(const std::vector<BandRun> &plan,
+                       const ErrorBarParameters   &parameters,
+                       double                      target_from,
+                       double                      speed,
+                       unsigned int                subdivisions);
 
     /**
      * @brief The band spectrum of the first @p samples samples of @p x
      * (welch_band_spectrum(), bands @p f_low to @p f_high).
      */
     BandSpectrum
-    window_spectrum(const std::vector<double> &x, double dt, std::size_t samples,
-                    double reference, double f_low, double f_high,
-                    unsigned int lines_per_segment);
+    window_spectrum(const std::vector<double> &x,
+                    double                     dt,
+                    std::size_t                samples,
+                    double                     reference,
+                    double                     f_low,
+                    double                     f_high,
+                    unsigned int               lines_per_segment);
 
     /**
      * @brief Add one estimate to @p target: in each band of @p target from
@@ -109,7 +116,9 @@ namespace greentread
      * estimate; values already there from another run's bands are kept).
      */
     void
-    add_estimate(BandSpectrum &target, const EstimateRun &estimate, const BandSpectrum &run,
+    add_estimate(BandSpectrum       &target,
+                 const EstimateRun  &estimate,
+                 const BandSpectrum &run,
                  const BandSpectrum &other);
 
     struct RunSpectrum;
@@ -125,10 +134,13 @@ namespace greentread
      * @p lines_per_segment).
      */
     void
-    add_error_bars(RunSpectrum &merged, const std::vector<EstimateRun> &estimates,
-                   const std::vector<BandRun> &plan, const std::vector<bool> &used,
+    add_error_bars(RunSpectrum                                                   &merged,
+                   const std::vector<EstimateRun>                                &estimates,
+                   const std::vector<BandRun>                                    &plan,
+                   const std::vector<bool>                                       &used,
                    const std::function<const RunSpectrum &(const std::string &)> &run_of,
-                   double stress_reference, unsigned int lines_per_segment);
+                   double                                                         stress_reference,
+                   unsigned int lines_per_segment);
 
     /**
      * @brief BandSpectrum::total_error: per band, the standard error and
@@ -141,10 +153,10 @@ namespace greentread
     /// The largest error of a spectrum's leading bands, and what lowers it.
     struct Contributor
     {
-      std::string  what;      ///< "statistics" or a discretisation's describe()
-      std::string  parameter; ///< the parameter to change, quoted
-      double       error = 0.; ///< [dB]
-      double       band  = 0.; ///< nominal centre [Hz]
+      std::string what;       ///< "statistics" or a discretisation's describe()
+      std::string parameter;  ///< the parameter to change, quoted
+      double      error = 0.; ///< [dB]
+      double      band  = 0.; ///< nominal centre [Hz]
     };
 
     /**

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/base/output.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/output.h>
 #include <greentread/periodic/contact_patch.h>
 
 #include <filesystem>
@@ -22,8 +22,9 @@ namespace greentread
     /// contact_points.csv: `point,i_x,i_y,x,y,radius,load_dofs`: each point's
     /// centre [m] and the number of radial DoFs its tributary load spreads over.
     void
-    write_contact_points(const std::filesystem::path &file, const periodic::ContactPatch &patch,
-                         const base::ParameterRecord &record);
+    write_contact_points(const std::filesystem::path  &file,
+                         const periodic::ContactPatch &patch,
+                         const base::ParameterRecord  &record);
 
     /// The files write_green_pairs() wrote.
     struct GreenPairFiles
@@ -39,7 +40,7 @@ namespace greentread
      */
     GreenPairFiles
     write_green_pairs(const std::filesystem::path                              &directory,
-                      const base::FrequencyResponseMatrix                     &green,
+                      const base::FrequencyResponseMatrix                      &green,
                       const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                       const std::string                                        &title,
                       const base::ParameterRecord                              &record);
@@ -50,7 +51,7 @@ namespace greentread
      * that the regression tests' absolute tolerance sees them.
      */
     std::string
-    summarise_pairs(const base::FrequencyResponseMatrix                     &green,
+    summarise_pairs(const base::FrequencyResponseMatrix                      &green,
                     const std::vector<std::pair<unsigned int, unsigned int>> &pairs);
   } // namespace analysis
 } // namespace greentread

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/base/output.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/output.h>
 #include <greentread/modal/identification.h>
 
 #include <filesystem>
@@ -61,10 +61,10 @@ namespace greentread
      * @return Whether it was plotted.
      */
     bool
-    write_worst_fit(const std::filesystem::path    &directory,
-                    const base::FrequencyResponse &frf,
-                    const modal::Identification    &fit,
+    write_worst_fit(const std::filesystem::path          &directory,
+                    const base::FrequencyResponse        &frf,
+                    const modal::Identification          &fit,
                     std::pair<unsigned int, unsigned int> pair,
-                    const base::ParameterRecord    &record);
+                    const base::ParameterRecord          &record);
   } // namespace analysis
 } // namespace greentread

@@ -24,7 +24,7 @@ namespace greentread
      */
     void
     write_dispersion(const std::filesystem::path &directory,
-                     const synthesis::Dispersion     &dispersion,
+                     const synthesis::Dispersion &dispersion,
                      double                       cutoff_hz,
                      const base::ParameterRecord &record);
 
@@ -35,9 +35,9 @@ namespace greentread
      * pair, worst driving point, the passivity and the definiteness of G_r.
      */
     void
-    report_synthesis(const std::filesystem::path   &directory,
-                     const synthesis::ModeSynthesis    &synthesis,
-                     const synthesis::SynthesisErrors  &errors,
-                     const base::ParameterRecord   &record);
+    report_synthesis(const std::filesystem::path      &directory,
+                     const synthesis::ModeSynthesis   &synthesis,
+                     const synthesis::SynthesisErrors &errors,
+                     const base::ParameterRecord      &record);
   } // namespace analysis
 } // namespace greentread

@@ -46,8 +46,8 @@ namespace greentread
       std::vector<std::array<double, 3>> points;
       std::vector<double>                xs, ys; ///< the distinct x and y [m]
       unsigned int                       nx = 0, ny = 0;
-      unsigned int                       centre = 0;     ///< the point nearest (0, 0)
-      std::vector<unsigned int>          middle_row;     ///< the points with x nearest 0
+      unsigned int                       centre = 0; ///< the point nearest (0, 0)
+      std::vector<unsigned int>          middle_row; ///< the points with x nearest 0
     };
 
     /**
@@ -56,8 +56,10 @@ namespace greentread
      * image (road_<label>_texture.png, Figure A.11).
      */
     void
-    write_road_report(const std::filesystem::path &directory, const std::string &road,
-                      const road::Texture &texture, const base::ParameterRecord &record);
+    write_road_report(const std::filesystem::path &directory,
+                      const std::string           &road,
+                      const road::Texture         &texture,
+                      const base::ParameterRecord &record);
 
     /**
      * @brief The outputs of one rolling run `<run>`, written step by step and
@@ -76,9 +78,14 @@ namespace greentread
        *            reporting cell's (contact::ContactGrid::reporting_weights()).
        * @param[in] frames VTU frames written over the run.
        */
-      RunOutput(const std::filesystem::path &directory, const std::string &run,
-                const PatchLattice &lattice, double speed, double tributary,
-                const Eigen::VectorXd &reporting, unsigned int n_steps, unsigned int frames,
+      RunOutput(const std::filesystem::path &directory,
+                const std::string           &run,
+                const PatchLattice          &lattice,
+                double                       speed,
+                double                       tributary,
+                const Eigen::VectorXd       &reporting,
+                unsigned int                 n_steps,
+                unsigned int                 frames,
                 const base::ParameterRecord &record);
 
       /// Record one step.
@@ -148,9 +155,13 @@ namespace greentread
      * @param[in] f_max The Green's functions' highest line [Hz].
      */
     void
-    write_spectra(const std::filesystem::path &directory, const std::vector<RunSpectrum> &runs,
-                  const std::vector<std::string> &roads, const std::vector<double> &speeds,
-                  double stress_reference, double f_max, const SpectraParameters &spectra,
-                  const base::ParameterRecord &record);
+    write_spectra(const std::filesystem::path    &directory,
+                  const std::vector<RunSpectrum> &runs,
+                  const std::vector<std::string> &roads,
+                  const std::vector<double>      &speeds,
+                  double                          stress_reference,
+                  double                          f_max,
+                  const SpectraParameters        &spectra,
+                  const base::ParameterRecord    &record);
   } // namespace analysis
 } // namespace greentread

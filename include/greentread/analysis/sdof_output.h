@@ -22,18 +22,22 @@ namespace greentread
   {
     /// modal_parameters.csv: `i,j,lambda_re,lambda_im,R_re,R_im`, one row per pole.
     void
-    write_modal_parameters(const std::filesystem::path &file, const modal::ModalModel &model,
+    write_modal_parameters(const std::filesystem::path &file,
+                           const modal::ModalModel     &model,
                            const base::ParameterRecord &record);
 
     /// time_history.csv: `t,u,v,F` of @p run.
     void
-    write_time_history(const std::filesystem::path &file, const sdof::SdofRun &run,
+    write_time_history(const std::filesystem::path &file,
+                       const sdof::SdofRun         &run,
                        const base::ParameterRecord &record);
 
     /// reference.csv: `t,u_road,u_exact,v_exact,F_exact` on the run's time grid.
     void
-    write_reference(const std::filesystem::path &file, const sdof::SdofRun &run,
-                    const sdof::ExactSolution &exact, const road::RoadTrack &track,
+    write_reference(const std::filesystem::path &file,
+                    const sdof::SdofRun         &run,
+                    const sdof::ExactSolution   &exact,
+                    const road::RoadTrack       &track,
                     const base::ParameterRecord &record);
 
     /**
@@ -42,9 +46,13 @@ namespace greentread
      * size, labelled @p size_name (N_g or N_m).
      */
     void
-    write_summary(const std::filesystem::path &file, const sdof::SdofRun &run,
-                  const sdof::SdofErrors &e, const sdof::ExactSolution &exact, double a0,
-                  const std::string &size_name, const base::ParameterRecord &record);
+    write_summary(const std::filesystem::path &file,
+                  const sdof::SdofRun         &run,
+                  const sdof::SdofErrors      &e,
+                  const sdof::ExactSolution   &exact,
+                  double                       a0,
+                  const std::string           &size_name,
+                  const base::ParameterRecord &record);
 
     /**
      * @brief time_history.png in @p directory, from its time_history.csv and
@@ -52,8 +60,10 @@ namespace greentread
      * @return Whether it was plotted (gnuplot may be missing).
      */
     bool
-    plot_time_history(const std::filesystem::path &directory, const std::string &label,
-                      double peak_force, const base::ParameterRecord &record);
+    plot_time_history(const std::filesystem::path &directory,
+                      const std::string           &label,
+                      double                       peak_force,
+                      const base::ParameterRecord &record);
 
     /**
      * @brief The errors on screen, small ones in nm, um/s and ppm: the

@@ -26,12 +26,15 @@ namespace greentread
      * @return Whether the PNG was plotted.
      */
     bool
-    write_section(const std::filesystem::path &directory, const geometry::TyreCell &cell,
-                  const std::string &geo_name, const base::ParameterRecord &record);
+    write_section(const std::filesystem::path &directory,
+                  const geometry::TyreCell    &cell,
+                  const std::string           &geo_name,
+                  const base::ParameterRecord &record);
 
     /// inflated_cell.vtu (displacement @p u, von Mises stress) and its .pvd.
     void
-    write_inflated_cell(const std::filesystem::path &directory, const fe::ElasticModel &model,
+    write_inflated_cell(const std::filesystem::path  &directory,
+                        const fe::ElasticModel       &model,
                         const dealii::Vector<double> &u);
 
     /// The masses of the layers, as written by write_mass_report().
@@ -50,8 +53,10 @@ namespace greentread
      * NaN.
      */
     MassReport
-    write_mass_report(const std::filesystem::path &file, const geometry::TyreCell &cell,
-                      const fe::ElasticModel &model, const fe::MaterialParameters &materials,
-                      const base::ParameterRecord &record);
+    write_mass_report(const std::filesystem::path  &file,
+                      const geometry::TyreCell     &cell,
+                      const fe::ElasticModel       &model,
+                      const fe::MaterialParameters &materials,
+                      const base::ParameterRecord  &record);
   } // namespace analysis
 } // namespace greentread

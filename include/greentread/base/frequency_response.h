@@ -61,8 +61,8 @@ namespace greentread
      * @brief Write an FRF as `f,re,im` (atomically, with the parameter record).
      */
     void
-    write_frf_csv(const std::filesystem::path  &file,
-                  const FrequencyResponse      &frf,
+    write_frf_csv(const std::filesystem::path &file,
+                  const FrequencyResponse     &frf,
                   const base::ParameterRecord &record);
 
     /**
@@ -96,9 +96,7 @@ namespace greentread
      * index is not below @p n_points.
      */
     std::vector<std::pair<unsigned int, unsigned int>>
-    parse_point_pairs(const std::string &text,
-                      unsigned int       n_points,
-                      const std::string &parameter);
+    parse_point_pairs(const std::string &text, unsigned int n_points, const std::string &parameter);
 
     /**
      * @brief Read a Green's function file, an HDF5 file with the layout
@@ -119,10 +117,10 @@ namespace greentread
      * (what the result depends on, for the stage cache) are written too.
      */
     void
-    write_green_hdf5(const std::filesystem::path  &file,
+    write_green_hdf5(const std::filesystem::path   &file,
                      const FrequencyResponseMatrix &green,
-                     const base::ParameterRecord  &record,
-                     const std::string            &stage_key = {});
+                     const base::ParameterRecord   &record,
+                     const std::string             &stage_key = {});
 
     /**
      * @brief The `stage_key` attribute of a Green's function file, or an
@@ -139,10 +137,10 @@ namespace greentread
      * A file left unfinished has no key, and is never under its final name.
      */
     void
-    write_hdf5_stage(const std::filesystem::path                    &file,
-                     const std::vector<std::array<double, 3>>       &points,
-                     const base::ParameterRecord                    &record,
-                     const std::string                              &stage_key,
+    write_hdf5_stage(const std::filesystem::path                     &file,
+                     const std::vector<std::array<double, 3>>        &points,
+                     const base::ParameterRecord                     &record,
+                     const std::string                               &stage_key,
                      const std::function<void(dealii::HDF5::File &)> &fill);
 
     /**

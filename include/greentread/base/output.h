@@ -3,8 +3,8 @@
 #include <greentread/base/parameters.h>
 
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 

@@ -105,8 +105,7 @@ namespace greentread
      * allowed, with the closest declared name for a misspelled one.
      */
     void
-    parse_scene_file(dealii::ParameterHandler &prm,
-                     const std::string        &filename);
+    parse_scene_file(dealii::ParameterHandler &prm, const std::string &filename);
 
     /**
      * @brief Apply one command-line override "Section/Sub/Name=value".
@@ -131,15 +130,13 @@ namespace greentread
      * values, and documentation (which carries the unit).
      */
     void
-    print_parameter_reference(const dealii::ParameterHandler &prm,
-                              std::ostream                   &out);
+    print_parameter_reference(const dealii::ParameterHandler &prm, std::ostream &out);
 
     /**
      * @brief The declared name closest to @p name (Levenshtein distance), or
      * an empty string when nothing is reasonably close.
      */
     std::string
-    closest_name(const std::string              &name,
-                 const std::vector<std::string> &candidates);
+    closest_name(const std::string &name, const std::vector<std::string> &candidates);
   } // namespace base
 } // namespace greentread

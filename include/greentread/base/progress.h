@@ -56,14 +56,14 @@ namespace greentread
       void
       check(std::size_t done);
 
-      std::string                                        label;
-      std::size_t                                        total;
-      double                                             interval;
-      std::size_t                                        next_check;
-      std::size_t                                        stride;
-      bool                                               printed = false;
-      std::chrono::steady_clock::time_point              start;
-      std::chrono::steady_clock::time_point              last;
+      std::string                           label;
+      std::size_t                           total;
+      double                                interval;
+      std::size_t                           next_check;
+      std::size_t                           stride;
+      bool                                  printed = false;
+      std::chrono::steady_clock::time_point start;
+      std::chrono::steady_clock::time_point last;
     };
 
     /**
@@ -88,8 +88,8 @@ namespace greentread
      * finish, and the exception of the lowest i is rethrown here.
      */
     void
-    for_each_index(std::size_t                                             count,
-                   unsigned int                                            n_threads,
+    for_each_index(std::size_t                                           count,
+                   unsigned int                                          n_threads,
                    const std::function<void(std::size_t, unsigned int)> &item);
   } // namespace base
 } // namespace greentread

@@ -68,8 +68,11 @@ namespace greentread
      *         products with the blocks and with W.
      */
     LcpResult
-    solve_lcp_candidate_set(const SymmetricOperator &W, const OperatorBlock &block,
-                            const Eigen::VectorXd &q, const Eigen::VectorXd &start,
-                            ProjectedCgOptions options, unsigned int *candidates = nullptr);
+    solve_lcp_candidate_set(const SymmetricOperator &W,
+                            const OperatorBlock     &block,
+                            const Eigen::VectorXd   &q,
+                            const Eigen::VectorXd   &start,
+                            ProjectedCgOptions       options,
+                            unsigned int            *candidates = nullptr);
   } // namespace contact
 } // namespace greentread

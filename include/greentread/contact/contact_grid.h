@@ -2,9 +2,9 @@
 
 #include <greentread/contact/contact_grid_parameters.h>
 #include <greentread/contact/elastic_layer.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/convolution/lattice_convolution.h>
 #include <greentread/convolution/patch_convolution.h>
-#include <greentread/contact/rolling.h>
 
 #include <Eigen/Core>
 
@@ -98,9 +98,11 @@ namespace greentread
        * @throws InputError if the points are not a lattice or s is 0.
        */
       ContactGrid(const std::vector<std::array<double, 3>> &coarse_points,
-                  unsigned int subdivisions, const ElasticLayer &layer,
-                  bool matrix_free = false, bool candidate_set = true,
-                  double tolerance = 1e-6);
+                  unsigned int                              subdivisions,
+                  const ElasticLayer                       &layer,
+                  bool                                      matrix_free   = false,
+                  bool                                      candidate_set = true,
+                  double                                    tolerance     = 1e-6);
 
       unsigned int
       n_points() const
@@ -140,8 +142,9 @@ namespace greentread
       /// y += \f$A^T M A x\f$ (none when @p coarse is null) + the local
       /// term times x: apply() without clearing y, each cell sum taken once.
       void
-      add_product(const Eigen::MatrixXd *coarse, const Eigen::VectorXd &x,
-                  Eigen::VectorXd &y) const;
+      add_product(const Eigen::MatrixXd *coarse,
+                  const Eigen::VectorXd &x,
+                  Eigen::VectorXd       &y) const;
 
       /**
        * @brief A block of apply()'s operator, entry by entry: out(k, l) =
@@ -152,8 +155,10 @@ namespace greentread
        * (candidate_set.h) iterates on.
        */
       void
-      block(const Eigen::MatrixXd &coarse, const std::vector<unsigned int> &rows,
-            const std::vector<unsigned int> &columns, Eigen::MatrixXd &out) const;
+      block(const Eigen::MatrixXd           &coarse,
+            const std::vector<unsigned int> &rows,
+            const std::vector<unsigned int> &columns,
+            Eigen::MatrixXd                 &out) const;
 
       /**
        * @brief The weights of the reporting cell, @p along x @p across [m]
@@ -210,15 +215,18 @@ namespace greentread
      * of each step. With s = 1, @p coarse itself.
      */
     std::unique_ptr<convolution::PatchConvolution>
-    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse, const ContactGrid &grid);
+    make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse,
+                          const ContactGrid                             &grid);
 
     /**
      * @brief contact::start_contact() on the grid: the static compliance
      * \f$A^T G_0 A\f$ + the local term, by the grid's solver.
      */
     StaticContact
-    start_grid_contact(const ContactGrid &grid, const Eigen::MatrixXd &coarse_static,
-                       const Eigen::VectorXd &tread, const PatchRoadHeights &road,
-                       const RollingSetup &setup);
+    start_grid_contact(const ContactGrid      &grid,
+                       const Eigen::MatrixXd  &coarse_static,
+                       const Eigen::VectorXd  &tread,
+                       const PatchRoadHeights &road,
+                       const RollingSetup     &setup);
   } // namespace contact
 } // namespace greentread

@@ -41,8 +41,10 @@ namespace greentread
        * @param[in] ur, vr  The road's height and velocity at t_{n+1}.
        */
       virtual ContactStep
-      step(const convolution::Response &history, const convolution::StepLoad &known, double ur,
-           double vr) = 0;
+      step(const convolution::Response &history,
+           const convolution::StepLoad &known,
+           double                       ur,
+           double                       vr) = 0;
 
       /// What to change when a run with this law diverges, or empty.
       virtual std::string
@@ -59,7 +61,9 @@ namespace greentread
      * when its contact mode is too fast for the time step).
      */
     std::unique_ptr<OnePointContactLaw>
-    create(const ContactParameters &parameters, const convolution::Influence &psi,
-           double stiffness, double mass);
+    create(const ContactParameters      &parameters,
+           const convolution::Influence &psi,
+           double                        stiffness,
+           double                        mass);
   } // namespace contact
 } // namespace greentread

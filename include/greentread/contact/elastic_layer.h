@@ -51,8 +51,8 @@ namespace greentread
     /// An isotropic elastic layer bonded to a rigid base.
     struct ElasticLayer
     {
-      double youngs_modulus = 7e6;  ///< E [Pa]
-      double poissons_ratio = 0.49; ///< nu, below 0.5
+      double youngs_modulus = 7e6;   ///< E [Pa]
+      double poissons_ratio = 0.49;  ///< nu, below 0.5
       double thickness      = 0.008; ///< h [m]
     };
 
@@ -98,9 +98,14 @@ namespace greentread
      * @throws InputError if a period is too short for the offsets asked.
      */
     Eigen::MatrixXd
-    rectangle_lattice_compliance(const std::function<double(double)> &compliance, double a,
-                                 double b, unsigned int mx, unsigned int my, unsigned int nx,
-                                 unsigned int ny, unsigned int harmonics = 24);
+    rectangle_lattice_compliance(const std::function<double(double)> &compliance,
+                                 double                               a,
+                                 double                               b,
+                                 unsigned int                         mx,
+                                 unsigned int                         my,
+                                 unsigned int                         nx,
+                                 unsigned int                         ny,
+                                 unsigned int                         harmonics = 24);
 
     /**
      * @brief The kernel of the compliance between the rectangles of an
@@ -109,8 +114,12 @@ namespace greentread
      * @p margin [m] on each side of the patch (at least the patch's own size).
      */
     Eigen::MatrixXd
-    layer_lattice_kernel(const ElasticLayer &layer, double a, double b, unsigned int nx,
-                         unsigned int ny, double margin);
+    layer_lattice_kernel(const ElasticLayer &layer,
+                         double              a,
+                         double              b,
+                         unsigned int        nx,
+                         unsigned int        ny,
+                         double              margin);
 
     /**
      * @brief The compliance [m/N] between all rectangles of an nx x ny patch
@@ -118,7 +127,11 @@ namespace greentread
      * that adds @p margin [m] on each side of the patch.
      */
     Eigen::MatrixXd
-    layer_patch_compliance(const ElasticLayer &layer, double a, double b, unsigned int nx,
-                           unsigned int ny, double margin);
+    layer_patch_compliance(const ElasticLayer &layer,
+                           double              a,
+                           double              b,
+                           unsigned int        nx,
+                           unsigned int        ny,
+                           double              margin);
   } // namespace contact
 } // namespace greentread

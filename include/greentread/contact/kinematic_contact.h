@@ -45,11 +45,11 @@ namespace greentread
     /// Which branch of the rule decided a step.
     enum class KinematicBranch
     {
-      separated,     ///< predicted position above the road: no force
-      riding,        ///< (start, end): both Gauss forces >= 0
-      impact_early,  ///< impulse at t_n and start force
-      impact_late,   ///< end force and impulse at t_{n+1}
-      fallback       ///< impulse at t_n matching the displacement only
+      separated,    ///< predicted position above the road: no force
+      riding,       ///< (start, end): both Gauss forces >= 0
+      impact_early, ///< impulse at t_n and start force
+      impact_late,  ///< end force and impulse at t_{n+1}
+      fallback      ///< impulse at t_n matching the displacement only
     };
 
     std::string

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <greentread/contact/kinematic_contact.h>
-#include <greentread/convolution/patch_convolution.h>
 #include <greentread/contact/lcp.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/modal/patch_model.h>
 
 #include <Eigen/Core>
@@ -34,13 +34,13 @@ namespace greentread
     /// What the solve of one step reports.
     struct PatchStepReport
     {
-      unsigned int n_contact       = 0;
+      unsigned int n_contact        = 0;
       unsigned int outer_iterations = 0;
-      unsigned int lcp_iterations  = 0;
-      unsigned int n_fallback      = 0;
-      bool         converged       = true;
+      unsigned int lcp_iterations   = 0;
+      unsigned int n_fallback       = 0;
+      bool         converged        = true;
       /// max |v_i - v_i^r| over the points in contact, relative to max |v^r - v^h|.
-      double velocity_residual = 0.;
+      double      velocity_residual = 0.;
       std::string message;
       /// The last LCP of the step, \f$w = M z + q\f$, and its solution z, for
       /// checks against another solver. @p lcp_matrix points into the solver
@@ -84,8 +84,11 @@ namespace greentread
        * @param[out] load The loads of the step.
        */
       PatchStepReport
-      solve(const Eigen::VectorXd &uh, const Eigen::VectorXd &vh, const Eigen::VectorXd &d,
-            const Eigen::VectorXd &dd, convolution::PatchLoad &load);
+      solve(const Eigen::VectorXd  &uh,
+            const Eigen::VectorXd  &vh,
+            const Eigen::VectorXd  &d,
+            const Eigen::VectorXd  &dd,
+            convolution::PatchLoad &load);
 
       /// The force at the start of the next step (for a start from a static
       /// equilibrium, its loads).
@@ -101,17 +104,19 @@ namespace greentread
        * reciprocal positive matrix, so the LCP is well posed.
        */
       PatchStepReport
-      solve_continuous(const Eigen::VectorXd &uh, const Eigen::VectorXd &d, convolution::PatchLoad &load);
+      solve_continuous(const Eigen::VectorXd  &uh,
+                       const Eigen::VectorXd  &d,
+                       convolution::PatchLoad &load);
 
-      Eigen::VectorXd                      previous_end;
-      double                               end_norm = 0.; // of psi.u[2], continuous path
-      Eigen::MatrixXd                      lcp_matrix; // the last round's, iterative path
-      const convolution::PatchInfluence                &psi;
+      Eigen::VectorXd                    previous_end;
+      double                             end_norm = 0.; // of psi.u[2], continuous path
+      Eigen::MatrixXd                    lcp_matrix;    // the last round's, iterative path
+      const convolution::PatchInfluence &psi;
       /// The matrix-free form: MPRGP (projected_cg.h) on \f$\Psi^u_{end}\f$.
-      bool                                 matrix_free = false;
-      std::vector<KinematicContact>        rules;
-      std::vector<bool>                    active;
-      std::vector<std::array<double, 4>>   shapes;
+      bool                               matrix_free = false;
+      std::vector<KinematicContact>      rules;
+      std::vector<bool>                  active;
+      std::vector<std::array<double, 4>> shapes;
     };
 
     /// What one step of a rolling run hands to its observer.
@@ -157,12 +162,12 @@ namespace greentread
      * not finite.
      */
     RollingSummary
-    roll(convolution::PatchConvolution                                                  &convolution,
+    roll(convolution::PatchConvolution                                                &convolution,
          const std::function<void(double t, Eigen::VectorXd &d, Eigen::VectorXd &dd)> &demand,
-         unsigned int                                                       n_steps,
-         const Eigen::VectorXd                                             &start_force,
-         const std::function<void(const RollingStep &)>                    &observe,
-         const std::function<unsigned int(unsigned int steps_done)>        &more_steps = {});
+         unsigned int                                                                  n_steps,
+         const Eigen::VectorXd                                                        &start_force,
+         const std::function<void(const RollingStep &)>                               &observe,
+         const std::function<unsigned int(unsigned int steps_done)> &more_steps = {});
 
     /**
      * @brief The static contact: \f$G_0 q = u\f$, \f$u - d \ge 0\f$, \f$q \ge 0\f$,
@@ -174,13 +179,15 @@ namespace greentread
     struct StaticContact
     {
       Eigen::VectorXd q, u;
-      double          delta = 0.;
+      double          delta     = 0.;
       unsigned int    n_contact = 0;
     };
 
     StaticContact
-    solve_static_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &d0, double total_load,
-                         double delta);
+    solve_static_contact(const Eigen::MatrixXd &G0,
+                         const Eigen::VectorXd &d0,
+                         double                 total_load,
+                         double                 delta);
 
     /// The LCP \f$w = G_0 q + c\f$ of the static contact for a given c, by
     /// some solver (the matrix-free one of the contact grid).
@@ -188,7 +195,9 @@ namespace greentread
 
     /// solve_static_contact() with the static LCP solved by @p solve.
     StaticContact
-    solve_static_contact(const StaticSolve &solve, const Eigen::VectorXd &d0, double total_load,
-                         double delta);
+    solve_static_contact(const StaticSolve     &solve,
+                         const Eigen::VectorXd &d0,
+                         double                 total_load,
+                         double                 delta);
   } // namespace contact
 } // namespace greentread

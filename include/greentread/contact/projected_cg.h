@@ -53,7 +53,7 @@ namespace greentread
     struct ProjectedCgOptions
     {
       /// τ of the convergence test.
-      double tolerance = 1e-10;
+      double       tolerance      = 1e-10;
       unsigned int max_iterations = 20000;
       /// \f$\|W\|_2\f$ from operator_norm(); 0 computes it at every call.
       double operator_norm = 0.;
@@ -91,7 +91,9 @@ namespace greentread
      * @throws NumericalError if q is not finite or a product is not.
      */
     LcpResult
-    solve_lcp_projected_cg(const SymmetricOperator &W, const Eigen::VectorXd &q,
-                           const Eigen::VectorXd &start, const ProjectedCgOptions &options = {});
+    solve_lcp_projected_cg(const SymmetricOperator  &W,
+                           const Eigen::VectorXd    &q,
+                           const Eigen::VectorXd    &start,
+                           const ProjectedCgOptions &options = {});
   } // namespace contact
 } // namespace greentread

@@ -27,17 +27,17 @@ namespace greentread
     /// Everything a rolling run needs besides the model and the road.
     struct RollingSetup
     {
-      double       speed     = 25.;   ///< V [m/s]
-      double       time_step = 1e-5;  ///< dt [s]
+      double       speed     = 25.;  ///< V [m/s]
+      double       time_step = 1e-5; ///< dt [s]
       unsigned int n_steps   = 0;
       /// The load the start position carries [N]; 0: @p indentation is used.
       double static_load = 600.;
       double indentation = 0.; ///< [m], with static_load = 0
       /// Start from the static contact (forces held since t = -infinity) or from rest.
-      bool                   static_start  = true;
-      convolution::Method    convolution   = convolution::Method::modal_recursive;
-      unsigned int           direct_kernel = 0; ///< steps kept by `direct`; 0: the whole run
-      unsigned int           threads       = 1; ///< of the modal recursion
+      bool                static_start  = true;
+      convolution::Method convolution   = convolution::Method::modal_recursive;
+      unsigned int        direct_kernel = 0; ///< steps kept by `direct`; 0: the whole run
+      unsigned int        threads       = 1; ///< of the modal recursion
       /// of the rank-one modal recursion's shapes
       convolution::ShapePrecision shape_precision = convolution::ShapePrecision::double_precision;
     };
@@ -71,13 +71,17 @@ namespace greentread
      * the tread heights t.
      */
     StaticContact
-    start_contact(const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
-                  const PatchRoadHeights &road, const RollingSetup &setup);
+    start_contact(const Eigen::MatrixXd  &G0,
+                  const Eigen::VectorXd  &tread,
+                  const PatchRoadHeights &road,
+                  const RollingSetup     &setup);
 
     /// start_contact() with the static LCP solved by @p solve.
     StaticContact
-    start_contact(const StaticSolve &solve, const Eigen::VectorXd &tread,
-                  const PatchRoadHeights &road, const RollingSetup &setup);
+    start_contact(const StaticSolve      &solve,
+                  const Eigen::VectorXd  &tread,
+                  const PatchRoadHeights &road,
+                  const RollingSetup     &setup);
 
     /**
      * @brief The convolution of @p method for @p model at @p dt over
@@ -86,10 +90,14 @@ namespace greentread
      * naming the parameters that shorten it.
      */
     std::unique_ptr<convolution::PatchConvolution>
-    make_patch_convolution(convolution::Method method, const modal::PatchModel &model,
-                           double dt, unsigned int n_steps, unsigned int direct_kernel,
-                           unsigned int   threads,
-                           convolution::ShapePrecision precision = convolution::ShapePrecision::double_precision);
+    make_patch_convolution(
+      convolution::Method         method,
+      const modal::PatchModel    &model,
+      double                      dt,
+      unsigned int                n_steps,
+      unsigned int                direct_kernel,
+      unsigned int                threads,
+      convolution::ShapePrecision precision = convolution::ShapePrecision::double_precision);
 
     /**
      * @brief Roll @p model over @p road from @p start (start_contact()): the
@@ -97,18 +105,24 @@ namespace greentread
      * indentation held; @p observe sees every step (may be empty).
      */
     RollingSummary
-    roll_patch(const modal::PatchModel &model, const Eigen::VectorXd &tread,
-               const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe);
+    roll_patch(const modal::PatchModel                        &model,
+               const Eigen::VectorXd                          &tread,
+               const PatchRoadHeights                         &road,
+               const StaticContact                            &start,
+               const RollingSetup                             &setup,
+               const std::function<void(const RollingStep &)> &observe);
 
     /// roll_patch() with a convolution made beforehand (benchmarks time the
     /// run without the making of the kernels); @p setup.convolution and
     /// @p setup.threads are not used. @p more_steps as in contact::roll():
     /// the run may go on past setup.n_steps (the road must be long enough).
     RollingSummary
-    roll_patch(convolution::PatchConvolution &convolution, const Eigen::VectorXd &tread,
-               const PatchRoadHeights &road, const StaticContact &start,
-               const RollingSetup &setup, const std::function<void(const RollingStep &)> &observe,
+    roll_patch(convolution::PatchConvolution                   &convolution,
+               const Eigen::VectorXd                           &tread,
+               const PatchRoadHeights                          &road,
+               const StaticContact                             &start,
+               const RollingSetup                              &setup,
+               const std::function<void(const RollingStep &)>  &observe,
                const std::function<unsigned int(unsigned int)> &more_steps = {});
   } // namespace contact
 } // namespace greentread

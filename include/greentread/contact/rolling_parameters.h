@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/convolution/patch_convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
+#include <greentread/convolution/patch_convolution.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,17 +15,18 @@ namespace greentread
     /// 'Convolution/Shape precision'.
     struct RollingParameters
     {
-      std::vector<double> speeds = {50., 70., 90.}; // km/h
+      std::vector<double> speeds   = {50., 70., 90.}; // km/h
       double              distance = 2.;
-      double              time_step = 0.; // Time stepping/Time step; 0: the road sampling interval / V
-      double              static_load = 600.;
-      double              indentation = 0.;
-      bool                static_start = true;
-      convolution::Method convolution = convolution::Method::modal_recursive;
-      convolution::ShapePrecision      shape_precision = convolution::ShapePrecision::single_precision; // convolution::Convolution/Shape precision
-      unsigned int        direct_kernel = 0;
-      unsigned int        frames = 40;
-      double              stress_reference = 100.;
+      double time_step    = 0.; // Time stepping/Time step; 0: the road sampling interval / V
+      double static_load  = 600.;
+      double indentation  = 0.;
+      bool   static_start = true;
+      convolution::Method         convolution = convolution::Method::modal_recursive;
+      convolution::ShapePrecision shape_precision =
+        convolution::ShapePrecision::single_precision; // convolution::Convolution/Shape precision
+      unsigned int direct_kernel    = 0;
+      unsigned int frames           = 40;
+      double       stress_reference = 100.;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -76,8 +76,8 @@ namespace greentread
       Response
       of(const StepLoad &load) const
       {
-        const std::array<double, 4> x = {{load.impulse_start, load.start,
-                                          load.end, load.impulse_end}};
+        const std::array<double, 4> x = {
+          {load.impulse_start, load.start, load.end, load.impulse_end}};
         Response r;
         for (unsigned int i = 0; i < 4; ++i)
           {
@@ -104,8 +104,9 @@ namespace greentread
     {
     public:
       explicit Convolution(double time_step)
-        : dt(time_step)
-      {}
+          : dt(time_step)
+      {
+      }
 
       virtual ~Convolution() = default;
 

@@ -56,8 +56,8 @@ namespace greentread
     /// An impulse response known in closed form, for the direct method.
     struct ImpulseResponse
     {
-      std::function<double(double)> g, dg; ///< g(t) [m/(N s)] and dg/dt
-      double rate = 0.;                    ///< its fastest rate |lambda| [1/s]
+      std::function<double(double)> g, dg;     ///< g(t) [m/(N s)] and dg/dt
+      double                        rate = 0.; ///< its fastest rate |lambda| [1/s]
     };
 
     /**
@@ -70,7 +70,7 @@ namespace greentread
      */
     std::unique_ptr<Convolution>
     create(const ConvolutionParameters &parameters,
-           const modal::ModalModel            &model,
+           const modal::ModalModel     &model,
            double                       dt,
            unsigned int                 n_steps,
            const ImpulseResponse       *exact = nullptr);

@@ -68,24 +68,24 @@ namespace greentread
     private:
       struct Mode
       {
-        modal::ModalTerm::Kind      kind;
-        std::complex<double> lambda, residue;
-        double               residue_t;
-        double               scale;          // 2 for a pair, 1 otherwise
-        std::complex<double> step_decay;     // e^{lambda dt}
-        std::complex<double> step_growth;    // e^{-lambda dt}
-        std::complex<double> gauss_growth[2];// e^{-lambda theta_g dt}
-        std::complex<double> decay = 1.;     // e^{lambda t_n}
-        std::complex<double> grow  = 1.;     // e^{-lambda t_n}
-        std::complex<double> acc0  = 0.;     // int e^{-lambda tau} q
-        std::complex<double> acc1  = 0.;     // int tau e^{-lambda tau} q (double pole)
+        modal::ModalTerm::Kind kind;
+        std::complex<double>   lambda, residue;
+        double                 residue_t;
+        double                 scale;           // 2 for a pair, 1 otherwise
+        std::complex<double>   step_decay;      // e^{lambda dt}
+        std::complex<double>   step_growth;     // e^{-lambda dt}
+        std::complex<double>   gauss_growth[2]; // e^{-lambda theta_g dt}
+        std::complex<double>   decay = 1.;      // e^{lambda t_n}
+        std::complex<double>   grow  = 1.;      // e^{-lambda t_n}
+        std::complex<double>   acc0  = 0.;      // int e^{-lambda tau} q
+        std::complex<double>   acc1  = 0.;      // int tau e^{-lambda tau} q (double pole)
       };
 
       std::vector<Mode> modes;
       double            theta[2], weight[2];
       double            g0;
-      double            growth         = 1.;
-      bool              warned         = false;
+      double            growth = 1.;
+      bool              warned = false;
     };
   } // namespace convolution
 } // namespace greentread

@@ -57,21 +57,21 @@ namespace greentread
       unsigned int n_modes;
 
       // Simple poles (pairs and real ones), structure of arrays.
-      Eigen::ArrayXd alpha_re, alpha_im;     // e^{lambda dt}
-      Eigen::ArrayXd beta_a_re, beta_a_im;   // weight of the start value
-      Eigen::ArrayXd beta_b_re, beta_b_im;   // weight of the end value
-      Eigen::ArrayXd cu_re, cu_im;           // u = Re(sum cu s)
-      Eigen::ArrayXd cv_re, cv_im;           // v = Re(sum cv s) + g0 q
-      Eigen::ArrayXd s_re, s_im;             // states
-      Eigen::ArrayXd h_re, h_im;             // e^{lambda dt} s, from history()
+      Eigen::ArrayXd alpha_re, alpha_im;   // e^{lambda dt}
+      Eigen::ArrayXd beta_a_re, beta_a_im; // weight of the start value
+      Eigen::ArrayXd beta_b_re, beta_b_im; // weight of the end value
+      Eigen::ArrayXd cu_re, cu_im;         // u = Re(sum cu s)
+      Eigen::ArrayXd cv_re, cv_im;         // v = Re(sum cv s) + g0 q
+      Eigen::ArrayXd s_re, s_im;           // states
+      Eigen::ArrayXd h_re, h_im;           // e^{lambda dt} s, from history()
 
       /// A double pole: states s0 = int e^{l(t-tau)} q, s1 = int (t-tau) e^{l(t-tau)} q.
       struct DoublePole
       {
         double lambda, r0, r1;
-        double alpha;          // e^{lambda dt}
-        double wa0, wb0;       // weights into s0
-        double wa1, wb1;       // weights into s1
+        double alpha;    // e^{lambda dt}
+        double wa0, wb0; // weights into s0
+        double wa1, wb1; // weights into s1
         double s0 = 0., s1 = 0.;
         double h0 = 0., h1 = 0.;
       };

@@ -30,8 +30,10 @@ namespace greentread
      * block length.
      */
     std::unique_ptr<PatchConvolution>
-    make_rank_one_patch_convolution(const modal::PatchModel &model, double dt,
-                                    unsigned int n_threads, ShapePrecision precision,
-                                    unsigned int block_steps = 0);
+    make_rank_one_patch_convolution(const modal::PatchModel &model,
+                                    double                   dt,
+                                    unsigned int             n_threads,
+                                    ShapePrecision           precision,
+                                    unsigned int             block_steps = 0);
   } // namespace convolution
 } // namespace greentread

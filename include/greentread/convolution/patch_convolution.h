@@ -60,7 +60,8 @@ namespace greentread
       /// solve (greentread/contact/candidate_set.h); empty: the solve works
       /// on the whole grid.
       std::function<void(const std::vector<unsigned int> &rows,
-                         const std::vector<unsigned int> &columns, Eigen::MatrixXd &out)>
+                         const std::vector<unsigned int> &columns,
+                         Eigen::MatrixXd                 &out)>
         block_u;
       /// With add_u: the matrix-free solve's tolerance, the projected
       /// gradient it ends at relative to the road's largest demand
@@ -71,8 +72,10 @@ namespace greentread
     /// y += \f$\Psi^u_g\f$ x, from the matrix's columns where x is not zero
     /// (the loads of the points in contact) or by the matrix-free form.
     void
-    add_influence(const PatchInfluence &psi, unsigned int g, const Eigen::VectorXd &x,
-                  Eigen::VectorXd &y);
+    add_influence(const PatchInfluence  &psi,
+                  unsigned int           g,
+                  const Eigen::VectorXd &x,
+                  Eigen::VectorXd       &y);
 
     /**
      * @brief Step-by-step convolution of a patch's Green's functions; the
@@ -82,9 +85,10 @@ namespace greentread
     {
     public:
       PatchConvolution(unsigned int n_points, double dt)
-        : n_p(n_points)
-        , dt(dt)
-      {}
+          : n_p(n_points)
+          , dt(dt)
+      {
+      }
 
       virtual ~PatchConvolution() = default;
 
@@ -161,8 +165,9 @@ namespace greentread
      * step, split over @p n_threads threads by rows.
      */
     std::unique_ptr<PatchConvolution>
-    make_modal_patch_convolution(const modal::PatchModel &model, double dt,
-                                 unsigned int   n_threads = 1,
+    make_modal_patch_convolution(const modal::PatchModel &model,
+                                 double                   dt,
+                                 unsigned int             n_threads = 1,
                                  ShapePrecision precision = ShapePrecision::double_precision);
 
     /**
@@ -174,7 +179,6 @@ namespace greentread
      * The preload's tail is the free decay of the model.
      */
     std::unique_ptr<PatchConvolution>
-    make_direct_patch_convolution(const modal::PatchModel &model, double dt,
-                                  unsigned int n_kernel);
+    make_direct_patch_convolution(const modal::PatchModel &model, double dt, unsigned int n_kernel);
   } // namespace convolution
 } // namespace greentread

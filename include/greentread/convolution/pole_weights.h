@@ -3,8 +3,8 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/convolution/exponential_integrals.h>
 #include <greentread/convolution/patch_convolution.h>
-#include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/modal/patch_model.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/thread_management.h>
 
@@ -53,9 +53,9 @@ namespace greentread
         bool relaxing;
 
         PoleWeights(const modal::PatchModel &model, const double dt_)
-          : instantaneous(model.instantaneous)
-          , dt(dt_)
-          , relaxing(model.residual_relaxation > 0.)
+            : instantaneous(model.instantaneous)
+            , dt(dt_)
+            , relaxing(model.residual_relaxation > 0.)
         {
           if (!(dt > 0.) || !std::isfinite(dt))
             throw InputError("patch convolution: time step " + format_short(dt) +
@@ -150,8 +150,9 @@ namespace greentread
                   weights[s / 4].emplace_back(re, im);
                 }
               std::vector<Eigen::MatrixXd> first;
-              auto                         task = dealii::Threads::new_task(
-                [&]() { first = modal::shape_sums(shapes, shapes_imag, weights[0]); });
+              auto                         task = dealii::Threads::new_task([&]() {
+                first = modal::shape_sums(shapes, shapes_imag, weights[0]);
+              });
               const auto second = modal::shape_sums(shapes, shapes_imag, weights[1]);
               task.join();
               for (unsigned int s = 0; s < 4; ++s)
@@ -164,8 +165,8 @@ namespace greentread
             for (unsigned int s = 0; s < 8; ++s)
               sums[s] = contract(s >= 4, *z[s % 4]);
           const Eigen::MatrixXd &g0 = sums[3];
-          psi.u = {{sums[0], sums[1], sums[2], g0}};
-          psi.v = {{sums[4], sums[5], sums[6] + g0, sums[7]}};
+          psi.u                     = {{sums[0], sums[1], sums[2], g0}};
+          psi.v                     = {{sums[4], sums[5], sums[6] + g0, sums[7]}};
           if (instantaneous.size() && instantaneous.cwiseAbs().maxCoeff() > 0.)
             {
               // u = G_r q(t): the end value acts at once; the slope of the
@@ -181,5 +182,5 @@ namespace greentread
         }
       };
     } // namespace internal
-  } // namespace convolution
+  }   // namespace convolution
 } // namespace greentread

@@ -35,12 +35,12 @@ namespace greentread
      */
     template <typename Shape>
     void
-    modal_forces(const Shape  *shapes,
-                 std::size_t   rows,
-                 std::size_t   P,
-                 const Shape  *loads,
-                 unsigned int  n_loads,
-                 double       *forces);
+    modal_forces(const Shape *shapes,
+                 std::size_t  rows,
+                 std::size_t  P,
+                 const Shape *loads,
+                 unsigned int n_loads,
+                 double      *forces);
 
     /**
      * @brief out[c P + p] += sum_r weights[2 r + c] shapes[r P + p], for
@@ -81,11 +81,11 @@ namespace greentread
      */
     template <typename Shape>
     void
-    add_block_weighted_shapes(const Shape  *shapes,
-                              std::size_t   rows,
-                              std::size_t   P,
-                              const Shape  *weights,
-                              unsigned int  J,
-                              double       *out);
+    add_block_weighted_shapes(const Shape *shapes,
+                              std::size_t  rows,
+                              std::size_t  P,
+                              const Shape *weights,
+                              unsigned int J,
+                              double      *out);
   } // namespace convolution
 } // namespace greentread

@@ -31,8 +31,9 @@ namespace greentread
      * update's own sums.
      */
     std::vector<Eigen::MatrixXd>
-    single_precision_shape_sums(const ShapesF                                                   &shapes,
-                                Eigen::Index                                                     stride,
-                                const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> &weights);
+    single_precision_shape_sums(
+      const ShapesF                                                  &shapes,
+      Eigen::Index                                                    stride,
+      const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> &weights);
   } // namespace convolution
 } // namespace greentread

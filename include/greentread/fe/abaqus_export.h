@@ -31,7 +31,7 @@ namespace greentread
      * boundary conditions, loads and steps.
      */
     void
-    write_abaqus(const std::filesystem::path  &file,
+    write_abaqus(const std::filesystem::path    &file,
                  const dealii::Triangulation<3> &triangulation,
                  const dealii::Mapping<3>       &mapping,
                  const MaterialParameters       &materials,

@@ -22,7 +22,7 @@ namespace greentread
     struct Node
     {
       std::array<dealii::types::global_dof_index, 3> dofs;
-      dealii::Point<3>                                position;
+      dealii::Point<3>                               position;
     };
 
     /**

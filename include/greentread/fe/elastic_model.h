@@ -44,9 +44,9 @@ namespace greentread
        *                           Degree 2 is the default: trilinear
        *                           elements lock with nu = 0.49.
        */
-      ElasticModel(const dealii::Triangulation<3>       &triangulation,
+      ElasticModel(const dealii::Triangulation<3>         &triangulation,
                    const std::map<unsigned int, Material> &materials,
-                   unsigned int                           degree = 2);
+                   unsigned int                            degree = 2);
 
       /// Assemble K, M and C (consistent mass, Rayleigh damping per material).
       void
@@ -99,12 +99,13 @@ namespace greentread
 
       /// Consistent nodal forces of a traction t(x) on the faces of @p boundary.
       dealii::Vector<double>
-      traction_load(dealii::types::boundary_id                                  boundary,
+      traction_load(dealii::types::boundary_id                                           boundary,
                     const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &)> &t) const;
 
       /// Clamp (u = 0) every DoF on @p boundary.
       void
-      add_clamp(dealii::types::boundary_id boundary, dealii::AffineConstraints<double> &constraints) const;
+      add_clamp(dealii::types::boundary_id         boundary,
+                dealii::AffineConstraints<double> &constraints) const;
 
       /**
        * @brief Rotational periodicity between the faces of @p first and
@@ -131,9 +132,9 @@ namespace greentread
 
       /// The stress sigma = C : eps(u) at a point of a cell.
       dealii::SymmetricTensor<2, 3>
-      stress(const dealii::Point<3>                 &point,
-             unsigned int                            material_id,
-             const dealii::SymmetricTensor<2, 3>    &strain) const;
+      stress(const dealii::Point<3>              &point,
+             unsigned int                         material_id,
+             const dealii::SymmetricTensor<2, 3> &strain) const;
 
       /**
        * @brief Kp of Eq. (41): \f$K^p_{ab} = \int \nabla N_a \cdot \sigma_0

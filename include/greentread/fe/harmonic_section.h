@@ -60,8 +60,8 @@ namespace greentread
     bool
     same_pattern(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y)
     {
-      return x.isCompressed() && y.isCompressed() && x.rows() == y.rows() &&
-             x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
+      return x.isCompressed() && y.isCompressed() && x.rows() == y.rows() && x.cols() == y.cols() &&
+             x.nonZeros() == y.nonZeros() &&
              std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1,
                         y.outerIndexPtr()) &&
              std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr());
@@ -161,10 +161,10 @@ namespace greentread
       dealii::MappingQ<2>              mapping;
       dealii::DoFHandler<2>            dofs;
       /// The free unknown of each DoF, or -1 for a held one.
-      std::vector<long>                free;
-      QuadraticInN                     K, Kp, C_beta;
-      Eigen::SparseMatrix<double>      M, C_alpha;
-      double                           growth = 0.;
+      std::vector<long>           free;
+      QuadraticInN                K, Kp, C_beta;
+      Eigen::SparseMatrix<double> M, C_alpha;
+      double                      growth = 0.;
 
       void
       assemble();

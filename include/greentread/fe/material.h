@@ -1,9 +1,9 @@
 #pragma once
 
-#include <greentread/base/mesh_ids.h>
-#include <greentread/fe/material_parameters.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <greentread/base/mesh_ids.h>
+#include <greentread/fe/material_parameters.h>
 
 #include <string>
 
@@ -52,8 +52,15 @@ namespace greentread
      * @throws InputError if the compliance is not positive definite.
      */
     dealii::SymmetricTensor<4, 3>
-    orthotropic_stiffness(double E1, double E2, double E3, double nu12, double nu13,
-                          double nu23, double G12, double G13, double G23);
+    orthotropic_stiffness(double E1,
+                          double E2,
+                          double E3,
+                          double nu12,
+                          double nu13,
+                          double nu23,
+                          double G12,
+                          double G13,
+                          double G23);
 
     /**
      * @brief Rayleigh coefficients that give a viscous damping ratio of

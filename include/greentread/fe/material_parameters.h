@@ -32,8 +32,7 @@ namespace greentread
       double belt_G_rtheta = 330e6, belt_G_rz = 330e6, belt_G_thetaz = 330e6;
       double belt_loss = 0.05;
       // Sidewall: rubber and nylon.
-      double sidewall_density = 1000., sidewall_E = 109e6, sidewall_nu = 0.48,
-             sidewall_loss   = 0.1;
+      double sidewall_density = 1000., sidewall_E = 109e6, sidewall_nu = 0.48, sidewall_loss = 0.1;
       // Bead: steel.
       double bead_density = 7850., bead_E = 162.6e9, bead_nu = 0.33, bead_loss = 0.002;
       // The two frequencies where the Rayleigh damping ratio equals eta/2.

@@ -44,7 +44,7 @@ namespace greentread
       unsigned int n_cells            = 256;
       /// 'Element degree': the Lagrange degree of the elements; 0 is 'auto'
       /// (see section_degree() and cell_degree()).
-      unsigned int degree             = 0;
+      unsigned int degree = 0;
       std::string  other_constants;
 
       static void

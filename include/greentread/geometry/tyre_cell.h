@@ -1,8 +1,8 @@
 #pragma once
 
+#include <deal.II/grid/tria.h>
 #include <greentread/base/mesh_ids.h>
 #include <greentread/geometry/geometry_parameters.h>
-#include <deal.II/grid/tria.h>
 
 #include <array>
 #include <optional>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <greentread/modal/modal_model.h>
 #include <greentread/base/frequency_response.h>
 #include <greentread/modal/identification_parameters.h>
+#include <greentread/modal/modal_model.h>
 #include <greentread/modal/pole_polish.h>
 
 #include <functional>
@@ -63,7 +63,7 @@ namespace greentread
       unsigned int            n_bands = 1;
       unsigned int            order = 0, rank = 0;
       double                  condition = 0.;
-      PoleCounts   poles;
+      PoleCounts              poles;
       /// Residual terms (zero when not asked for): lower -L/w^2, upper U [m/N].
       double lower_residual = 0., upper_residual = 0.;
       /// The poles' refinement, when asked (the misfits are equal when it
@@ -102,8 +102,8 @@ namespace greentread
      * residual terms. The line at 0 Hz is skipped when lower != 0.
      */
     double
-    modal_error(const base::FrequencyResponse     &frf,
-                const modal::ModalModel &model,
+    modal_error(const base::FrequencyResponse &frf,
+                const modal::ModalModel       &model,
                 double                         lower = 0.,
                 double                         upper = 0.);
   } // namespace modal
@@ -124,9 +124,9 @@ namespace greentread
      */
     std::vector<Identification>
     identify_all(const std::function<base::FrequencyResponse(std::size_t)> &get,
-                 std::size_t                                          count,
-                 const IdentificationParameters                      &parameters,
-                 bool                                                 show_progress = true);
+                 std::size_t                                                count,
+                 const IdentificationParameters                            &parameters,
+                 bool                                                       show_progress = true);
 
 
     /**
@@ -137,10 +137,10 @@ namespace greentread
      * identified once and the result used for both; @p reused counts them.
      */
     std::vector<Identification>
-    identify_pairs(const base::FrequencyResponseMatrix                            &green,
+    identify_pairs(const base::FrequencyResponseMatrix                      &green,
                    const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
                    const IdentificationParameters                           &parameters,
                    std::size_t                                              &reused,
-                   bool show_progress = true);
+                   bool                                                      show_progress = true);
   } // namespace modal
 } // namespace greentread

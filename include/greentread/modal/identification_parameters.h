@@ -36,25 +36,25 @@ namespace greentread
      */
     struct IdentificationParameters
     {
-      std::string  frf_file;
-      std::string  green_file;
-      std::string  pairs                     = "all";
+      std::string frf_file;
+      std::string green_file;
+      std::string pairs = "all";
       /// Sub-bands of zoom LSCE; 0 = auto.
-      unsigned int bands                     = 0;
-      double       zoom_above_error          = 0.05;
-      unsigned int max_modes                 = 60;
-      double       order_tolerance           = 1e-3;
-      ResidueModel residue_model             = ResidueModel::eq7;
-      bool         compare_models            = true;
-      bool         lower_residual            = false;
-      bool         upper_residual            = false;
+      unsigned int bands            = 0;
+      double       zoom_above_error = 0.05;
+      unsigned int max_modes        = 60;
+      double       order_tolerance  = 1e-3;
+      ResidueModel residue_model    = ResidueModel::eq7;
+      bool         compare_models   = true;
+      bool         lower_residual   = false;
+      bool         upper_residual   = false;
       /// Refine the chosen poles against every line (modal/pole_polish.h),
       /// kept if E falls ('Identification/Pole refinement'): for noisy
       /// (measured) FRFs; it costs about a hundred times LSCE's time.
-      bool polish_poles = false;
-      double       stability_frequency       = 0.01;
-      double       stability_damping         = 0.05;
-      double       band_edge                 = 0.98;
+      bool   polish_poles        = false;
+      double stability_frequency = 0.01;
+      double stability_damping   = 0.05;
+      double band_edge           = 0.98;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -59,8 +59,8 @@ namespace greentread
      */
     ImpulseResponse<std::complex<double>>
     band_impulse_response(const base::FrequencyResponse &frf,
-                          unsigned int             first_line,
-                          unsigned int             last_line);
+                          unsigned int                   first_line,
+                          unsigned int                   last_line);
 
     /**
      * @brief The Hankel least squares of Eq. (A.10) for every order up to a

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <greentread/base/output.h>
-#include <greentread/modal/modal_model.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/output.h>
 #include <greentread/modal/identification.h>
+#include <greentread/modal/modal_model.h>
 #include <greentread/modal/patch_model_parameters.h>
 
 #include <Eigen/Core>
@@ -173,10 +173,10 @@ namespace greentread
      * the least-squares problem is rank deficient.
      */
     PatchModel
-    fit_patch_model(const base::FrequencyResponseMatrix  &green,
-                    const IdentificationParameters &identification,
-                    const PatchModelParameters     &parameters,
-                    bool                            show_progress);
+    fit_patch_model(const base::FrequencyResponseMatrix &green,
+                    const IdentificationParameters      &identification,
+                    const PatchModelParameters          &parameters,
+                    bool                                 show_progress);
 
     /// Write @p model as HDF5 (temporary name, then renamed) with its key.
     void

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/base/output.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/output.h>
 #include <greentread/modal/identification.h>
 #include <greentread/modal/patch_model.h>
 
@@ -37,13 +37,13 @@ namespace greentread
      * modal_errors.csv beside @p file.
      */
     PatchModel
-    patch_model_stage(const base::FrequencyResponseMatrix  &green,
-                      const IdentificationParameters &identification,
-                      const PatchModelParameters     &parameters,
-                      const std::filesystem::path    &file,
-                      const std::string              &key,
-                      const base::ParameterRecord    &record,
-                      bool                            reuse,
-                      bool                            print_timings);
+    patch_model_stage(const base::FrequencyResponseMatrix &green,
+                      const IdentificationParameters      &identification,
+                      const PatchModelParameters          &parameters,
+                      const std::filesystem::path         &file,
+                      const std::string                   &key,
+                      const base::ParameterRecord         &record,
+                      bool                                 reuse,
+                      bool                                 print_timings);
   } // namespace modal
 } // namespace greentread

@@ -51,7 +51,7 @@ namespace greentread
      * refinement does not lower the misfit, the poles as given.
      */
     std::vector<PolishPole>
-    polish_poles(const base::FrequencyResponse       &frf,
+    polish_poles(const base::FrequencyResponse &frf,
                  const std::vector<PolishPole> &poles,
                  bool                           lower,
                  bool                           upper,

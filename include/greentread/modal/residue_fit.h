@@ -34,15 +34,15 @@ namespace greentread
       class ResidueFit
       {
       public:
-        ResidueFit(const base::FrequencyResponse    &frf,
-                   const std::vector<Pole>    &poles,
-                   ResidueModel                model,
-                   bool                        lower,
-                   bool                        upper)
-          : frf(frf)
-          , poles(poles)
-          , model(model)
-          , first_line(lower ? 1 : 0)
+        ResidueFit(const base::FrequencyResponse &frf,
+                   const std::vector<Pole>       &poles,
+                   ResidueModel                   model,
+                   bool                           lower,
+                   bool                           upper)
+            : frf(frf)
+            , poles(poles)
+            , model(model)
+            , first_line(lower ? 1 : 0)
         {
           const unsigned int n_lines = frf.values.size() - first_line;
           // Columns: residual terms first (always kept), then the modes.
@@ -148,7 +148,8 @@ namespace greentread
           const unsigned int n_lines = weights.size();
           double             e       = 0.;
           for (unsigned int k = 0; k < n_lines; ++k)
-            e += weights[k] * std::hypot(data[k] - fitted[k], data[k + n_lines] - fitted[k + n_lines]);
+            e +=
+              weights[k] * std::hypot(data[k] - fitted[k], data[k + n_lines] - fitted[k + n_lines]);
           return e / norm;
         }
 
@@ -187,10 +188,10 @@ namespace greentread
           for (std::size_t c = 0; c < columns.size(); ++c)
             P.col(c) = A.col(columns[c]);
           Eigen::HouseholderQR<Eigen::MatrixXd> qr(P);
-          triangle_ = qr.matrixQR().topRows(P.cols()).triangularView<Eigen::Upper>();
-          qtb_      = (qr.householderQ().transpose() * data).head(P.cols());
-          columns_  = columns;
-          boundary_ = boundary;
+          triangle_        = qr.matrixQR().topRows(P.cols()).triangularView<Eigen::Upper>();
+          qtb_             = (qr.householderQ().transpose() * data).head(P.cols());
+          columns_         = columns;
+          boundary_        = boundary;
           const double top = columns.empty() ? 1. : std::abs(triangle_(0, 0));
 
           // E of each prefix: its coefficients by back-substitution, its fit
@@ -201,9 +202,8 @@ namespace greentread
               const unsigned int m = boundary[n];
               if (m > 0 && !(std::abs(triangle_(m - 1, m - 1)) > 1e-12 * top))
                 break; // a prefix with a dependent column, and all longer ones
-              const Eigen::VectorXd y = triangle_.topLeftCorner(m, m)
-                                          .triangularView<Eigen::Upper>()
-                                          .solve(qtb_.head(m));
+              const Eigen::VectorXd y =
+                triangle_.topLeftCorner(m, m).triangularView<Eigen::Upper>().solve(qtb_.head(m));
               errors[n] = error(P.leftCols(m) * y);
             }
           return errors;
@@ -214,9 +214,8 @@ namespace greentread
         coefficients_of(const std::size_t n) const
         {
           const unsigned int    m = boundary_[n];
-          const Eigen::VectorXd y = triangle_.topLeftCorner(m, m)
-                                      .triangularView<Eigen::Upper>()
-                                      .solve(qtb_.head(m));
+          const Eigen::VectorXd y =
+            triangle_.topLeftCorner(m, m).triangularView<Eigen::Upper>().solve(qtb_.head(m));
           Eigen::VectorXd x = Eigen::VectorXd::Zero(A.cols());
           for (unsigned int i = 0; i < m; ++i)
             x[columns_[i]] = y[i];
@@ -225,8 +224,10 @@ namespace greentread
 
         /// The modal model of coefficients x for the modes in @p modes.
         modal::ModalModel
-        model_of(const Eigen::VectorXd &x, const std::vector<unsigned int> &modes,
-                 double &lower, double &upper) const
+        model_of(const Eigen::VectorXd           &x,
+                 const std::vector<unsigned int> &modes,
+                 double                          &lower,
+                 double                          &upper) const
         {
           lower = upper = 0.;
           for (unsigned int c = 0; c < n_residual; ++c)
@@ -240,8 +241,8 @@ namespace greentread
                 result.add_real(pole.lambda.real(), x[c] / scale[c]);
               else if (model == ResidueModel::eq7)
                 // A / ((jw - l)(jw - conj l)): R = A / (l - conj l).
-                result.add_pair(pole.lambda,
-                                x[c] / scale[c] / std::complex<double>(0., 2. * pole.lambda.imag()));
+                result.add_pair(pole.lambda, x[c] / scale[c] /
+                                               std::complex<double>(0., 2. * pole.lambda.imag()));
               else
                 result.add_pair(pole.lambda, {x[c] / scale[c], x[c + 1] / scale[c + 1]});
             }
@@ -255,7 +256,7 @@ namespace greentread
         }
 
       private:
-        const base::FrequencyResponse       &frf;
+        const base::FrequencyResponse &frf;
         std::vector<Pole>              poles;
         ResidueModel                   model;
         unsigned int                   first_line;
@@ -273,5 +274,5 @@ namespace greentread
         mutable std::vector<unsigned int> columns_, boundary_;
       };
     } // namespace internal
-  } // namespace modal
+  }   // namespace modal
 } // namespace greentread

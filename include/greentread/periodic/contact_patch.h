@@ -25,10 +25,10 @@ namespace greentread
     /// What the user asks for: the patch and its points.
     struct PatchRequest
     {
-      double       length       = 0.06; ///< L_c along x [m]
-      double       width        = 0.08; ///< l_c along y [m]
-      unsigned int points_along = 10;   ///< N_x
-      unsigned int points_across = 12;  ///< N_y
+      double       length        = 0.06; ///< L_c along x [m]
+      double       width         = 0.08; ///< l_c along y [m]
+      unsigned int points_along  = 10;   ///< N_x
+      unsigned int points_across = 12;   ///< N_y
       PointLoad    load          = PointLoad::node;
     };
 

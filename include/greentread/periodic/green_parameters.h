@@ -27,9 +27,9 @@ namespace greentread
      */
     struct GreenParameters
     {
-      double       max_frequency = 4000.;
-      double       frequency_step = 15.625;
-      std::string  method         = "bloch";
+      double      max_frequency  = 4000.;
+      double      frequency_step = 15.625;
+      std::string method         = "bloch";
       /// 'Harmonic tolerance': the harmonic method's tail bound.
       double       harmonic_tolerance = 1e-3;
       PatchRequest patch;

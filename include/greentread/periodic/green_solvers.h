@@ -119,9 +119,9 @@ namespace greentread
        * column of a very fine ring affordable (the mesh study's check).
        */
       virtual Eigen::MatrixXcd
-      solve_columns(double                            omega,
+      solve_columns(double                           omega,
                     const std::vector<unsigned int> &columns,
-                    SolveDiagnostics                 &diagnostics);
+                    SolveDiagnostics                &diagnostics);
     };
 
     /// The methods, as the parameter names them.
@@ -147,7 +147,9 @@ namespace greentread
      * @throws NumericalError if @p method is `harmonic` and @p harmonic is null.
      */
     std::unique_ptr<GreenSolver>
-    make_green_solver(Method method, const PeriodicCell &cell, const ContactPatch &patch,
+    make_green_solver(Method              method,
+                      const PeriodicCell &cell,
+                      const ContactPatch &patch,
                       const HarmonicRing *harmonic = nullptr);
 
     /**

@@ -1,19 +1,19 @@
 #pragma once
 
+#include <greentread/base/frequency_response.h>
 #include <greentread/base/output.h>
 #include <greentread/fe/elastic_model.h>
 #include <greentread/fe/inflation.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
-#include <greentread/base/frequency_response.h>
 #include <greentread/periodic/green_functions.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <filesystem>
-#include <memory>
 #include <map>
+#include <memory>
 #include <string>
 
 /**
@@ -40,8 +40,8 @@ namespace greentread
       /// The section's harmonics and their ring, with the `harmonic` method.
       std::unique_ptr<fe::HarmonicSection>    section;
       std::unique_ptr<periodic::HarmonicRing> harmonic;
-      PeriodicCell                        periodic_cell;
-      ContactPatch                        patch;
+      PeriodicCell                            periodic_cell;
+      ContactPatch                            patch;
       /// The largest radial growth of the tread under the inflation [m].
       double tread_growth = 0.;
       /// With 'Surface mass = moved inward': the fraction of the cell's
@@ -83,8 +83,8 @@ namespace greentread
     struct GreenStageResult
     {
       base::FrequencyResponseMatrix green;
-      bool                           reused = false;
-      GreenRunReport                 report;
+      bool                          reused = false;
+      GreenRunReport                report;
     };
 
     /**
@@ -111,7 +111,10 @@ namespace greentread
      * @p timings) the run times of each stage of @p tyre.
      */
     std::string
-    describe(const GreenStageResult &result, const InflatedTyre &tyre,
-             const GreenParameters &parameters, const std::filesystem::path &h5, bool timings);
+    describe(const GreenStageResult      &result,
+             const InflatedTyre          &tyre,
+             const GreenParameters       &parameters,
+             const std::filesystem::path &h5,
+             bool                         timings);
   } // namespace periodic
 } // namespace greentread

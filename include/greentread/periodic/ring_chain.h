@@ -86,7 +86,7 @@ namespace greentread
       at_points(const ContactPatch                                          &patch,
                 const Eigen::Matrix<Number, Eigen::Dynamic, Eigen::Dynamic> &X) const
       {
-        const unsigned int P = patch.points.size();
+        const unsigned int                                    P = patch.points.size();
         Eigen::Matrix<Number, Eigen::Dynamic, Eigen::Dynamic> g =
           Eigen::Matrix<Number, Eigen::Dynamic, Eigen::Dynamic>::Zero(P, X.cols());
         for (unsigned int p = 0; p < P; ++p)

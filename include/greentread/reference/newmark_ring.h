@@ -49,7 +49,9 @@ namespace greentread
     {
     public:
       /// @throws NumericalError if K or K_eff cannot be factorised.
-      NewmarkRing(const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch, double dt);
+      NewmarkRing(const periodic::PeriodicCell &cell,
+                  const periodic::ContactPatch &patch,
+                  double                        dt);
 
       /// \f$B^T K_{eff}^{-1} r_n\f$ and the velocity that goes with it.
       void
@@ -86,14 +88,14 @@ namespace greentread
     private:
       using SparseLU = Eigen::UmfPackLU<periodic::SparseReal>;
 
-      periodic::RingChain       ring;
-      periodic::SparseReal      K, C, M, K_eff;
-      periodic::SparseReal      loads, loads_t; // B and its transpose
-      SparseLU        effective, stiffness;
-      Eigen::MatrixXd response;       // K_eff^{-1} B
-      Eigen::MatrixXd static_w;
-      Eigen::VectorXd u, v, a, u_free, rhs;
-      bool            have_history = false;
+      periodic::RingChain  ring;
+      periodic::SparseReal K, C, M, K_eff;
+      periodic::SparseReal loads, loads_t; // B and its transpose
+      SparseLU             effective, stiffness;
+      Eigen::MatrixXd      response; // K_eff^{-1} B
+      Eigen::MatrixXd      static_w;
+      Eigen::VectorXd      u, v, a, u_free, rhs;
+      bool                 have_history = false;
     };
   } // namespace reference
 } // namespace greentread

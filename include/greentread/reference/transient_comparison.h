@@ -1,8 +1,8 @@
 #pragma once
 
-#include <greentread/convolution/patch_convolution.h>
-#include <greentread/convolution/convolution_parameters.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/convolution/convolution_parameters.h>
+#include <greentread/convolution/patch_convolution.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/periodic/contact_patch.h>
 #include <greentread/road/patch_road.h>
@@ -37,17 +37,17 @@ namespace greentread
     struct TransientCaseSetup
     {
       std::string  geo_file  = "geometry/tyre_165_65_r13.geo"; ///< 'Geometry/Geometry file'
-      double       mesh_size = 0.04; ///< 'Geometry/Mesh size' [m]
-      unsigned int n_cells   = 32;   ///< 'Geometry/Number of cells'
+      double       mesh_size = 0.04;                           ///< 'Geometry/Mesh size' [m]
+      unsigned int n_cells   = 32;                             ///< 'Geometry/Number of cells'
       /// The contact points (default: the main job's 10 x 12 on 60 x 80 mm).
       periodic::PatchRequest patch;
       /// The Green's functions' lines, for the LSCE fit and the static start [Hz].
-      double       frequency_step = 50., max_frequency = 5000.;
-      unsigned int lsce_modes     = 30; ///< 'modal::Identification/Maximum number of modes'
-      double       speed_kmh      = 90.;
-      double       distance       = 0.5;  ///< [m]
-      double       static_load    = 600.; ///< [N]
-      road::RoadSampling sampling = road::RoadSampling::envelope;
+      double             frequency_step = 50., max_frequency = 5000.;
+      unsigned int       lsce_modes  = 30; ///< 'modal::Identification/Maximum number of modes'
+      double             speed_kmh   = 90.;
+      double             distance    = 0.5;  ///< [m]
+      double             static_load = 600.; ///< [N]
+      road::RoadSampling sampling    = road::RoadSampling::envelope;
       /// The road's heights fade in over this distance from the start
       /// (\f$\sin^2\f$ ramp), so that both paths start at rest from the
       /// static contact on the flat road, with no impact at t = 0 [m].
@@ -84,7 +84,7 @@ namespace greentread
       /// displacement at a step's end per unit force at that end [m/N].
       double step_compliance = 0.;
       /// Points in contact at the start, and the least and most fraction over the run.
-      unsigned int static_contacts = 0;
+      unsigned int static_contacts      = 0;
       double       min_contact_fraction = 1., max_contact_fraction = 0.;
     };
 
@@ -147,8 +147,9 @@ namespace greentread
        * |u_i^{ref}|\f$.
        */
       std::vector<double>
-      driven_difference(const std::vector<const PathModel *> &models, double dt,
-                        double pulse) const;
+      driven_difference(const std::vector<const PathModel *> &models,
+                        double                                dt,
+                        double                                pulse) const;
 
       /// The reference: Newmark on the full ring.
       TransientRun
@@ -156,7 +157,9 @@ namespace greentread
 
       /// A fast path: @p model with @p method.
       TransientRun
-      fast(const std::string &road, double dt, const PathModel &model,
+      fast(const std::string  &road,
+           double              dt,
+           const PathModel    &model,
            convolution::Method method) const;
 
       const periodic::ContactPatch &
@@ -177,17 +180,17 @@ namespace greentread
       const road::PatchRoad &
       road_named(const std::string &name) const;
 
-      TransientCaseSetup                        setup;
-      std::unique_ptr<periodic::InflatedTyre>   tyre;
-      base::FrequencyResponseMatrix            green;
-      Eigen::MatrixXd                           G0;
-      std::vector<std::array<double, 3>>        points;
-      Eigen::VectorXd                           tread;
-      unsigned int                              centre = 0;
-      double                                    area = 0., spacing = 0.;
-      double                                    static_difference = 0.;
-      unsigned int                              ring_dofs = 0;
-      std::map<std::string, road::PatchRoad>    roads;
+      TransientCaseSetup                      setup;
+      std::unique_ptr<periodic::InflatedTyre> tyre;
+      base::FrequencyResponseMatrix           green;
+      Eigen::MatrixXd                         G0;
+      std::vector<std::array<double, 3>>      points;
+      Eigen::VectorXd                         tread;
+      unsigned int                            centre = 0;
+      double                                  area = 0., spacing = 0.;
+      double                                  static_difference = 0.;
+      unsigned int                            ring_dofs         = 0;
+      std::map<std::string, road::PatchRoad>  roads;
     };
   } // namespace reference
 } // namespace greentread

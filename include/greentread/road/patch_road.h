@@ -31,8 +31,10 @@ namespace greentread
     class PatchRoad
     {
     public:
-      PatchRoad(const Texture &texture, const std::vector<std::array<double, 3>> &points,
-                RoadSampling sampling, const std::string &name);
+      PatchRoad(const Texture                            &texture,
+                const std::vector<std::array<double, 3>> &points,
+                RoadSampling                              sampling,
+                const std::string                        &name);
 
       /// The road height under point @p p at patch position @p s along the texture, and its slope.
       void

@@ -30,14 +30,14 @@ namespace greentread
     /// Subsection "Road texture": the roads of the tyre/road scene.
     struct RoadTextureParameters
     {
-      std::vector<std::string> roads = {"road-A", "road-B"};
-      unsigned int             seed  = 1;
-      double                   length = 2.304;
+      std::vector<std::string> roads   = {"road-A", "road-B"};
+      unsigned int             seed    = 1;
+      double                   length  = 2.304;
       double                   spacing = 0.384e-3;
       SinusoidParameters       sinusoid; ///< the road 'sinusoid' (Road/Sinusoid)
       /// Factor on every road's heights.
-      double                   height_scale = 1.;
-      RoadSampling             sampling = RoadSampling::envelope;
+      double       height_scale = 1.;
+      RoadSampling sampling     = RoadSampling::envelope;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -31,8 +31,8 @@ namespace greentread
       run() override;
 
     private:
-      dealii::ParameterHandler        &prm;
-      GlobalParameters                 global;
+      dealii::ParameterHandler       &prm;
+      GlobalParameters                global;
       modal::IdentificationParameters identification;
     };
   } // namespace scenes

@@ -39,13 +39,13 @@ namespace greentread
       run() override;
 
     private:
-      dealii::ParameterHandler              &prm;
-      GlobalParameters                       global;
-      sdof::OscillatorParameters             oscillator;
-      road::RoadParameters                   road;
-      contact::ContactParameters             contact;
-      convolution::ConvolutionParameters     convolution;
-      modal::IdentificationParameters        identification;
+      dealii::ParameterHandler          &prm;
+      GlobalParameters                   global;
+      sdof::OscillatorParameters         oscillator;
+      road::RoadParameters               road;
+      contact::ContactParameters         contact;
+      convolution::ConvolutionParameters convolution;
+      modal::IdentificationParameters    identification;
     };
   } // namespace scenes
 } // namespace greentread

@@ -37,12 +37,12 @@ namespace greentread
       run() override;
 
     private:
-      dealii::ParameterHandler     &prm;
-      GlobalParameters              global;
-      bool                          full;
+      dealii::ParameterHandler    &prm;
+      GlobalParameters             global;
+      bool                         full;
       geometry::GeometryParameters geometry;
       fe::MaterialParameters       materials;
-      fe::InflationParameters          inflation;
+      fe::InflationParameters      inflation;
     };
   } // namespace scenes
 } // namespace greentread

@@ -5,8 +5,8 @@
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/base/output.h>
-#include <greentread/contact/rolling.h>
 #include <greentread/contact/contact_grid.h>
+#include <greentread/contact/rolling.h>
 #include <greentread/contact/rolling_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
@@ -58,9 +58,10 @@ namespace greentread
       /// the inflated tyre it built is left in @p tyre, for the modal stage.
       /// Implemented, with the modal stage, in tyre_road_contact_stages.cc.
       base::FrequencyResponseMatrix
-      green_stage(const geometry::GeometryParameters &tyre_geometry,
-                  const periodic::GreenParameters &lines,
-                  const std::filesystem::path &h5, const std::string &key,
+      green_stage(const geometry::GeometryParameters      &tyre_geometry,
+                  const periodic::GreenParameters         &lines,
+                  const std::filesystem::path             &h5,
+                  const std::string                       &key,
                   const base::ParameterRecord             &record,
                   std::unique_ptr<periodic::InflatedTyre> &tyre) const;
 
@@ -79,12 +80,13 @@ namespace greentread
       /// cut-off. @p tyre: the Green's stage's inflated tyre, if it built
       /// one (else the modes build their own).
       modal::PatchModel
-      modal_stage(const geometry::GeometryParameters &tyre_geometry,
-                  const base::FrequencyResponseMatrix &G, const std::string &green_key,
-                  const std::filesystem::path &directory,
-                  const base::ParameterRecord &record,
-                  const periodic::InflatedTyre *tyre,
-                  std::optional<CoarserModel> *coarser = nullptr) const;
+      modal_stage(const geometry::GeometryParameters  &tyre_geometry,
+                  const base::FrequencyResponseMatrix &G,
+                  const std::string                   &green_key,
+                  const std::filesystem::path         &directory,
+                  const base::ParameterRecord         &record,
+                  const periodic::InflatedTyre        *tyre,
+                  std::optional<CoarserModel>         *coarser = nullptr) const;
 
       /// The ring section's coarser level, for its error bar: the patch
       /// model and static compliance of the section with 'Geometry/Mesh
@@ -113,26 +115,33 @@ namespace greentread
       /// a run prints its lines in whole blocks. Without @p write_outputs (a
       /// coarser run of the error bars) it keeps its histories only.
       analysis::RunSpectrum
-      roll(const modal::PatchModel &model, const contact::ContactGrid &grid,
-           const Eigen::MatrixXd &G0, const Eigen::VectorXd &tread,
-           const analysis::PatchLattice &lattice, const road::PatchRoad &patch_road,
-           const std::string &road_name, double speed_kmh, const analysis::BandRun &band_run,
-           const std::filesystem::path &directory, const base::ParameterRecord &record,
-           unsigned int threads, bool write_outputs = true) const;
+      roll(const modal::PatchModel      &model,
+           const contact::ContactGrid   &grid,
+           const Eigen::MatrixXd        &G0,
+           const Eigen::VectorXd        &tread,
+           const analysis::PatchLattice &lattice,
+           const road::PatchRoad        &patch_road,
+           const std::string            &road_name,
+           double                        speed_kmh,
+           const analysis::BandRun      &band_run,
+           const std::filesystem::path  &directory,
+           const base::ParameterRecord  &record,
+           unsigned int                  threads,
+           bool                          write_outputs = true) const;
 
-      dealii::ParameterHandler          &prm;
-      GlobalParameters                   global;
-      geometry::GeometryParameters       geometry;
-      fe::MaterialParameters             materials;
-      fe::InflationParameters                inflation;
-      periodic::GreenParameters          green;
-      modal::IdentificationParameters    identification;
-      modal::PatchModelParameters        patch_model;
-      road::RoadTextureParameters        roads;
-      contact::RollingParameters         rolling;
-      analysis::SpectraParameters        spectra;
-      analysis::ErrorBarParameters       error_bars;
-      contact::ContactGridParameters     contact_grid;
+      dealii::ParameterHandler       &prm;
+      GlobalParameters                global;
+      geometry::GeometryParameters    geometry;
+      fe::MaterialParameters          materials;
+      fe::InflationParameters         inflation;
+      periodic::GreenParameters       green;
+      modal::IdentificationParameters identification;
+      modal::PatchModelParameters     patch_model;
+      road::RoadTextureParameters     roads;
+      contact::RollingParameters      rolling;
+      analysis::SpectraParameters     spectra;
+      analysis::ErrorBarParameters    error_bars;
+      contact::ContactGridParameters  contact_grid;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the
       /// Green's functions.

@@ -37,9 +37,7 @@ namespace greentread
        * @throws NumericalError if more than 10^6 events are found (a Zeno
        * sequence of impacts).
        */
-      ExactSolution(const Oscillator      &oscillator,
-                    const road::RoadTrack &road,
-                    double                 end_time);
+      ExactSolution(const Oscillator &oscillator, const road::RoadTrack &road, double end_time);
 
       /// u(t) [m] and v(t) [m/s] (just after any impact at t).
       void
@@ -110,8 +108,8 @@ namespace greentread
       const Oscillator      oscillator;
       const road::RoadTrack road;
       double                end_time;
-      std::vector<Phase>     phases;
-      std::vector<Impact>    impacts;
+      std::vector<Phase>    phases;
+      std::vector<Impact>   impacts;
 
       double
       force_in_contact(double t) const;

@@ -26,7 +26,7 @@ namespace greentread
       double gravity       = 9.81;
       double speed         = 0.1;
       /// Take the Green's function from LSCE of the oscillator's own FRF.
-      bool   identified_green = false;
+      bool   identified_green  = false;
       double frf_max_frequency = 1000.;
       double frf_line_spacing  = 1.;
 

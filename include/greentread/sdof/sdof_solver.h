@@ -1,10 +1,10 @@
 #pragma once
 
+#include <greentread/base/frequency_response.h>
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/kinematic_contact.h>
 #include <greentread/convolution/convolution.h>
 #include <greentread/convolution/convolution_parameters.h>
-#include <greentread/base/frequency_response.h>
 #include <greentread/modal/identification.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/sdof/exact_solution.h>
@@ -60,15 +60,15 @@ namespace greentread
      */
     struct SdofErrors
     {
-      double max_u_error = 0.;          ///< max_n |u_n - u(t_n)| [m]
-      double max_v_error = 0.;          ///< max_n |v_n - v(t_n^+)| [m/s]
-      double max_force_error = 0.;      ///< max |mean F - exact mean F| over steps without an impact [N]
-      double impulse_error = 0.;        ///< |total impulse - exact| / exact
-      double max_penetration_grid = 0.; ///< max_n (u_r - u_n)^+ [m]
-      double max_penetration_step = 0.; ///< the same inside steps (Hermite) [m]
-      double contact_fraction = 0.;     ///< steps in contact / steps
+      double max_u_error     = 0.; ///< max_n |u_n - u(t_n)| [m]
+      double max_v_error     = 0.; ///< max_n |v_n - v(t_n^+)| [m/s]
+      double max_force_error = 0.; ///< max |mean F - exact mean F| over steps without an impact [N]
+      double impulse_error   = 0.; ///< |total impulse - exact| / exact
+      double max_penetration_grid   = 0.; ///< max_n (u_r - u_n)^+ [m]
+      double max_penetration_step   = 0.; ///< the same inside steps (Hermite) [m]
+      double contact_fraction       = 0.; ///< steps in contact / steps
       double exact_contact_fraction = 0.;
-      double peak_contact_force = 0.;   ///< of the exact solution, impacts aside [N]
+      double peak_contact_force     = 0.; ///< of the exact solution, impacts aside [N]
     };
 
     /**
@@ -79,8 +79,8 @@ namespace greentread
     struct IdentifiedGreen
     {
       base::FrequencyResponse frf;
-      modal::Identification    identification;
-      double                   pole_error = 0.;
+      modal::Identification   identification;
+      double                  pole_error = 0.;
     };
 
     IdentifiedGreen
@@ -99,11 +99,11 @@ namespace greentread
      * it, and the direct method with its impulse response.
      */
     std::unique_ptr<convolution::Convolution>
-    make_convolution(const Oscillator                          &oscillator,
+    make_convolution(const Oscillator                         &oscillator,
                      const convolution::ConvolutionParameters &parameters,
                      double                                    dt,
                      unsigned int                              n_steps,
-                     const modal::ModalModel            *model = nullptr);
+                     const modal::ModalModel                  *model = nullptr);
 
     /**
      * @brief Run the contact problem: gravity and contact load convolved with
@@ -115,11 +115,11 @@ namespace greentread
      * error when a penalty run has omega_c dt > 1.
      */
     SdofRun
-    solve(const Oscillator                    &oscillator,
-          const road::RoadTrack               &road,
-          convolution::Convolution            &convolution,
-          const contact::ContactParameters    &contact,
-          bool                                 show_progress = true);
+    solve(const Oscillator                 &oscillator,
+          const road::RoadTrack            &road,
+          convolution::Convolution         &convolution,
+          const contact::ContactParameters &contact,
+          bool                              show_progress = true);
 
     /**
      * @brief Compare a run with the exact solution on its time grid.
@@ -145,12 +145,12 @@ namespace greentread
      * files).
      */
     SdofOutcome
-    simulate(const OscillatorParameters                &oscillator,
-             const road::RoadProfile                   &road,
-             const contact::ContactParameters          &contact,
+    simulate(const OscillatorParameters               &oscillator,
+             const road::RoadProfile                  &road,
+             const contact::ContactParameters         &contact,
              const convolution::ConvolutionParameters &convolution,
              bool                                      show_progress = false,
-             const modal::ModalModel            *model         = nullptr);
+             const modal::ModalModel                  *model         = nullptr);
 
     /**
      * @brief The oscillator's FRF (Eq. 3) on lines 0, df, ..., up to f_max.

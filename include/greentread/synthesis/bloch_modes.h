@@ -114,7 +114,11 @@ namespace greentread
      * the wavenumber, @p which names the problem in errors.
      */
     BlochModes
-    hermitian_modes(periodic::SparseComplex K, periodic::SparseComplex C, periodic::SparseComplex M,
-                    unsigned int k, const std::string &which, const ModeSearch &search);
+    hermitian_modes(periodic::SparseComplex K,
+                    periodic::SparseComplex C,
+                    periodic::SparseComplex M,
+                    unsigned int            k,
+                    const std::string      &which,
+                    const ModeSearch       &search);
   } // namespace synthesis
 } // namespace greentread

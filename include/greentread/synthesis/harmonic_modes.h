@@ -64,8 +64,10 @@ namespace greentread
      *         search fails, or a slice's count is not met.
      */
     BlochModes
-    harmonic_modes(const fe::HarmonicSection &section, unsigned int n, double cutoff,
-                   unsigned int modes_per_slice = 48);
+    harmonic_modes(const fe::HarmonicSection &section,
+                   unsigned int               n,
+                   double                     cutoff,
+                   unsigned int               modes_per_slice = 48);
 
     /// The number of eigenvalues of harmonic @p n below @p cutoff^2.
     unsigned int

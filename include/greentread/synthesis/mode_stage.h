@@ -1,9 +1,9 @@
 #pragma once
 
-#include <greentread/base/output.h>
 #include <greentread/base/frequency_response.h>
-#include <greentread/synthesis/mode_synthesis.h>
+#include <greentread/base/output.h>
 #include <greentread/periodic/green_stage.h>
+#include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -41,7 +41,7 @@ namespace greentread
       const geometry::GeometryParameters &geometry;
       const fe::MaterialParameters       &materials;
       const fe::InflationParameters      &inflation;
-      const periodic::PatchRequest                 &patch;
+      const periodic::PatchRequest       &patch;
       /// Keep the modes up to this [Hz].
       double cutoff_hz = 0.;
       /// With the `harmonic` method: the modes come from the section's
@@ -63,14 +63,14 @@ namespace greentread
      * those of @p green (a Green's file from other parameters).
      */
     synthesis::ModeSynthesis
-    run_mode_stage(const ModeStageInputs                &inputs,
+    run_mode_stage(const ModeStageInputs               &inputs,
                    const base::FrequencyResponseMatrix &green,
-                   const std::filesystem::path          &file,
-                   const std::string                    &key,
-                   const base::ParameterRecord          &record,
-                   bool                                  reuse,
-                   bool                                  print_timings,
-                   MPI_Comm                              comm,
-                   synthesis::ModalLines                    *lines = nullptr);
+                   const std::filesystem::path         &file,
+                   const std::string                   &key,
+                   const base::ParameterRecord         &record,
+                   bool                                 reuse,
+                   bool                                 print_timings,
+                   MPI_Comm                             comm,
+                   synthesis::ModalLines               *lines = nullptr);
   } // namespace synthesis
 } // namespace greentread

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/base/output.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/output.h>
 #include <greentread/modal/patch_model.h>
 
 #include <Eigen/Dense>
@@ -162,12 +162,12 @@ namespace greentread
      * than 1 GB: about 490 points and more at the default 257 lines).
      */
     ModeSynthesis
-    synthesise(const Eigen::VectorXd         &omega,
-               const Eigen::VectorXd         &damping_ratio,
-               const Eigen::MatrixXd         &shapes,
-               const Eigen::MatrixXd         &shapes_imag,
+    synthesise(const Eigen::VectorXd               &omega,
+               const Eigen::VectorXd               &damping_ratio,
+               const Eigen::MatrixXd               &shapes,
+               const Eigen::MatrixXd               &shapes_imag,
                const base::FrequencyResponseMatrix &direct,
-               ModalLines                    *lines = nullptr);
+               ModalLines                          *lines = nullptr);
 
     /**
      * @brief The residual's relaxation time beta_r [s] that makes
@@ -180,9 +180,9 @@ namespace greentread
      * @throws NumericalError if the model and @p direct differ in points.
      */
     double
-    fit_residual_relaxation(const ModeSynthesis           &model,
+    fit_residual_relaxation(const ModeSynthesis                 &model,
                             const base::FrequencyResponseMatrix &direct,
-                            const ModalLines              *lines = nullptr);
+                            const ModalLines                    *lines = nullptr);
 
     /**
      * @brief The synthesis as a PatchModel in rank-one form, for the
@@ -258,8 +258,8 @@ namespace greentread
      * modal stage's, left by synthesise()).
      */
     SynthesisErrors
-    compare(const ModeSynthesis           &model,
+    compare(const ModeSynthesis                 &model,
             const base::FrequencyResponseMatrix &direct,
-            const ModalLines              *lines = nullptr);
+            const ModalLines                    *lines = nullptr);
   } // namespace synthesis
 } // namespace greentread

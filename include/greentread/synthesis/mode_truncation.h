@@ -20,7 +20,8 @@ namespace greentread
      * without a new search.
      */
     ModeSynthesis
-    truncate(const ModeSynthesis &all, double cutoff_hz,
+    truncate(const ModeSynthesis                 &all,
+             double                               cutoff_hz,
              const base::FrequencyResponseMatrix &direct);
   } // namespace synthesis
 } // namespace greentread

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <greentread/synthesis/bloch_modes.h>
 #include <greentread/periodic/contact_patch.h>
+#include <greentread/synthesis/bloch_modes.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -49,8 +49,8 @@ namespace greentread
     {
       /// Per mode, ascending in frequency: w_r [rad/s], the damping ratio
       /// and the wavenumber k (0 .. N/2) it comes from.
-      Eigen::VectorXd              omega, damping_ratio;
-      std::vector<unsigned int>    wavenumber;
+      Eigen::VectorXd           omega, damping_ratio;
+      std::vector<unsigned int> wavenumber;
       /// The shapes at the points, [mode][point]: mass-normalised real
       /// shapes, or with the damping's coupling the complex shapes psi of
       /// coupled_point_modes(), real part here and imaginary part in
@@ -85,10 +85,10 @@ namespace greentread
     RingModes
     ring_modes(const periodic::PeriodicCell &cell,
                const periodic::ContactPatch &patch,
-               const ModeSearch   &search,
-               MPI_Comm            comm,
-               bool                show_progress,
-               bool                couple_damping = true);
+               const ModeSearch             &search,
+               MPI_Comm                      comm,
+               bool                          show_progress,
+               bool                          couple_damping = true);
 
     /// One wavenumber's ring modes at the points: per mode w [rad/s], the
     /// damping ratio and the shape (real and imaginary parts, [mode][point]).
@@ -108,10 +108,10 @@ namespace greentread
      * falls back to the diagonal form for the whole wavenumber.
      */
     PointModes
-    coupled_point_modes(const BlochModes   &modes,
+    coupled_point_modes(const BlochModes             &modes,
                         const periodic::PeriodicCell &cell,
                         const periodic::ContactPatch &patch,
-                        bool                couple);
+                        bool                          couple);
 
     /**
      * @brief The core of coupled_point_modes() for any ring: the modes'
@@ -135,8 +135,7 @@ namespace greentread
 
     /// One wavenumber's (or harmonic's) modes and their ring modes at the
     /// points.
-    using WavenumberModes =
-      std::function<std::pair<BlochModes, PointModes>(unsigned int k)>;
+    using WavenumberModes = std::function<std::pair<BlochModes, PointModes>(unsigned int k)>;
 
     /**
      * @brief The machinery of ring_modes() for any source of modes:
@@ -161,6 +160,8 @@ namespace greentread
      * a cos and a sin one otherwise. Returns [mode][point].
      */
     Eigen::MatrixXd
-    point_shapes(const BlochModes &modes, const periodic::PeriodicCell &cell, const periodic::ContactPatch &patch);
+    point_shapes(const BlochModes             &modes,
+                 const periodic::PeriodicCell &cell,
+                 const periodic::ContactPatch &patch);
   } // namespace synthesis
 } // namespace greentread
