@@ -1,7 +1,7 @@
 // Is the main job's ring converged? The main job (the default scene: the
 // section's circumferential harmonics on the quartic 8 mm section) against
 // the same job on the section twice as fine ('Mesh size' 4 mm), the test of
-// a converged default that issue 43 set. Everything else (roads, speeds,
+// a converged default. Everything else (roads, speeds,
 // contact grid, harmonic tolerance, cut-off) is the main job's; the finer
 // section's direct lines are every 1 kHz (they fit nothing: with the ring's
 // own modes they only check the synthesis).

@@ -1,4 +1,4 @@
-// The whole fast pipeline against the finite-element transient (issue 17):
+// The whole fast pipeline against the finite-element transient:
 // the rolling contact of a coarse ring, computed by GreenTread's fast paths
 // (a patch model, LSCE or the ring's own modes, with a convolution, direct
 // or modal-recursive) and by the reference, which uses none of them: the

@@ -17,7 +17,7 @@
 // Part 3: the graded levels once more, one step finer (8 mm, N = 256 to
 // 2 mm, N = 1024) at 0, 1, 2 and 4 kHz, from the centre point's column of g
 // alone (one load per wavenumber instead of the whole patch's): whether the
-// graded 4 mm, N = 512 ring is within issue 14's 2% of a ring twice as fine.
+// graded 4 mm, N = 512 ring is within 2% of a ring twice as fine.
 //
 // Part 4, at 0 Hz: the graded 4 mm, N = 512 ring refined in one direction at
 // a time (its section, its circumference), from the centre column alone.

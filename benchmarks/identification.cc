@@ -154,7 +154,7 @@ main(int argc, char **argv)
   std::printf("Largest relative error of an identified pole, over the modes below 3.6 kHz that\n"
               "carry at least 1%% of an FRF (first 200 FRFs): %.3g\n",
               pole_error);
-  std::printf("Target (issue 3): under 60 s on 2 cores.\n");
+  std::printf("Target: under 60 s on 2 cores.\n");
   std::printf(
     "\nThe first %zu FRFs one at a time, LSCE alone against LSCE with the pole refinement:\n"
     "  LSCE alone:       %8.2f ms per FRF, largest E %.3g, largest pole error %.3g\n"

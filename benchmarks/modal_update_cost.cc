@@ -105,7 +105,7 @@ main(int argc, char **argv)
           << difference / largest << '\n';
       worst = std::max(worst, difference / largest);
     }
-  std::printf("\nTarget (issue 2): at most 20 ns per step and per mode.\nWrote %s\n",
+  std::printf("\nTarget: at most 20 ns per step and per mode.\nWrote %s\n",
               (options.output / "modal_update_cost.csv").c_str());
   csv_file.commit();
   // The recursion against the direct sum of the same g(t): equal to round-off

@@ -9,7 +9,7 @@
 //    largest relative residual, and the largest relative difference of the
 //    frequencies from those of one slice (the reference: one shift below
 //    zero, no locking).
-// 2. The graded cells of the Green's functions' mesh study (issue 14; the
+// 2. The graded cells of the Green's functions' mesh study (the
 //    crown at half the mesh size, 'Crown refinement=2'): 8 mm with 256
 //    cells and 4 mm with 512, three wavenumbers each (0, N/8, N/2), the
 //    default search (three slices): the largest relative residual and the

@@ -1,4 +1,4 @@
-// Error against run time of the rolling contact of a whole patch (issue 6):
+// Error against run time of the rolling contact of a whole patch:
 // the same problem with the direct convolution (the reference) and the modal
 // recursion, side by side in one run: run time, time per step, the fraction
 // of the machine's peak floating-point rate the modal update reaches, and

@@ -1,5 +1,5 @@
 // The static Green's functions of the ring against CalculiX (Debian
-// calculix-ccx 2.20) on the exported ring (issue 14, item 5). The coarse
+// calculix-ccx 2.20) on the exported ring. The coarse
 // ring (2 cm mesh, 32 cells), rim clamped, no inflation (no Kp, nor any
 // pressure in CalculiX). Ours: the Bloch solver at w = 0, 3 x 2
 // tributary-area points on the crown, each rectangle one whole tread face

@@ -1,4 +1,4 @@
-// The fast pipeline against the finite-element transient (issue 17): the
+// The fast pipeline against the finite-element transient: the
 // full ring integrated by Newmark (reference/newmark_ring.h) is the
 // reference, which uses no Green's functions, no modal model and no
 // convolution. On the tests' coarse ring (4 cm mesh, 32 cells, 22,848

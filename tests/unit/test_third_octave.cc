@@ -231,7 +231,7 @@ BOOST_AUTO_TEST_CASE(welch_standard_errors_match_the_spread_over_independent_rec
   //    across some bands;
   //  - sparse impulses (0.2% of the samples), far from Gaussian: the
   //    segments' scatter must still give the spread.
-  // The bound is the factor 1.5 the error bars are held to (issue 45); the
+  // The bound is the factor 1.5 the error bars are held to; the
   // spread of 40 records is itself known to 11%.
   constexpr unsigned realisations = 40;
   const std::size_t  N            = 12800;

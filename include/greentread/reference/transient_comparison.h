@@ -16,7 +16,7 @@
 
 /**
  * @file
- * The fast pipeline against the finite-element transient (issue 17): one
+ * The fast pipeline against the finite-element transient: one
  * rolling case on a coarse ring, run by any fast path (a patch model and a
  * convolution) and by the reference reference::NewmarkRing, with the same
  * points, road, static start and contact law, and the difference of their
