@@ -35,6 +35,7 @@ packages=(
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
   libspectra-dev        # Spectra: shift-invert Lanczos for the section's harmonic modes
   libsiconos-numerics-dev # Siconos' LCP solvers: the reference of tests/unit/test_lcp.cc
+  clang-format          # the code's layout, checked by scripts/check_format.sh in CI
 )
 
 missing=()
