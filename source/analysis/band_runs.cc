@@ -30,6 +30,25 @@ namespace greentread
 
 
 
+    double
+    top_band_for_step(const double dt)
+    {
+      double top = 0.;
+      for (const auto &band : third_octave_bands(lowest_band, highest_band))
+        if (band.upper <= 0.5 / dt)
+          top = band.nominal;
+      if (top == 0.)
+        throw InputError(
+          "parameter 'Time stepping/Time step' = " + format_short(dt) +
+          " s: the spectra need frequencies up to at least " +
+          format_printf("%.0f", third_octave_bands(lowest_band, lowest_band)[0].upper) +
+          " Hz (the " + format_number(lowest_band) + " Hz band); allowed: a time step <= " +
+          format_short(0.5 / third_octave_bands(lowest_band, lowest_band)[0].upper) + " s");
+      return top;
+    }
+
+
+
     std::vector<BandRun>
     plan_band_runs(const SpectraParameters &spectra,
                    const double             V,

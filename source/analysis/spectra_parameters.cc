@@ -29,11 +29,12 @@ namespace greentread
           "The standard error each band's level should reach, from 'Target from' up. The run "
           "says which bands of each road and speed exceed it and the 'Rolling/Distance' that "
           "would meet it (the standard error falls as one over the square root of the record).");
-        prm.declare_entry("Target from", "250", base::RangePattern::closed(100., 5000., "Hz"),
+        prm.declare_entry("Target from", "250",
+                          base::RangePattern::closed(lowest_band, highest_band, "Hz"),
                           "The lowest one-third-octave band (its nominal centre) the standard "
                           "error target applies to.");
         prm.declare_entry(
-          "Low bands up to", "1000", base::RangePattern::closed(0., 5000., "Hz"),
+          "Low bands up to", "1000", base::RangePattern::closed(0., highest_band, "Hz"),
           "Multi-rate estimation: the bands up to this one (its nominal centre) come from a "
           "second run of each road and speed at 'Low-band time step', as long as 'Standard "
           "error target' needs in those bands from 'Target from' (at most 'Longest "
@@ -95,7 +96,7 @@ namespace greentread
                                     {"Low bands up to", low_bands_up_to}})
         {
           bool is_band = std::string(name) == "Low bands up to" && f == 0.;
-          for (const auto &band : third_octave_bands(100., 5000.))
+          for (const auto &band : third_octave_bands(lowest_band, highest_band))
             is_band = is_band || std::abs(band.nominal - f) < 1e-9 * f;
           if (!is_band)
             throw InputError("parameter 'Spectra/" + std::string(name) + "' = " + format_number(f) +

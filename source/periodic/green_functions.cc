@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/job_runner.h>
 #include <greentread/base/progress.h>
 #include <greentread/periodic/green_functions.h>
 

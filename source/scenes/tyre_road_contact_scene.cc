@@ -1,34 +1,28 @@
 #include <greentread/analysis/error_bars.h>
-#include <greentread/analysis/mode_output.h>
 #include <greentread/analysis/rolling_output.h>
+#include <greentread/analysis/study.h>
+#include <greentread/analysis/study_run.h>
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
+#include <greentread/base/job_runner.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
-#include <greentread/base/progress.h>
 #include <greentread/contact/contact_parameters.h>
-#include <greentread/contact/patch_contact.h>
 #include <greentread/contact/rolling.h>
-#include <greentread/modal/passivity.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/scenes/tyre_road_contact_scene.h>
-#include <greentread/synthesis/mode_stage.h>
 #include <greentread/synthesis/mode_synthesis.h>
-#include <greentread/synthesis/mode_truncation.h>
 
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <sstream>
 #include <tuple>
 
 namespace greentread
@@ -37,46 +31,20 @@ namespace greentread
   {
     namespace
     {
-      /**
-       * The highest band of a run's spectrum: 5 kHz, or the highest band
-       * below the Nyquist frequency 1 / (2 dt) of a coarser time step.
-       * @throws InputError naming 'Time stepping/Time step' if not even the 100 Hz
-       * band fits.
-       */
-      double
-      spectrum_top_band(const double dt)
-      {
-        double top = 0.;
-        for (const auto &band : analysis::third_octave_bands(100., 5000.))
-          if (band.upper <= 0.5 / dt)
-            top = band.nominal;
-        if (top == 0.)
-          throw InputError("parameter 'Time stepping/Time step' = " + format_short(dt) +
-                           " s: the spectra need frequencies up to at least 112 Hz (the 100 Hz "
-                           "band); allowed: a time step <= " +
-                           format_short(0.5 / analysis::third_octave_bands(100., 100.)[0].upper) +
-                           " s");
-        return top;
-      }
-
       /// The error bars' coarser contact grid ('Contact grid/Subdivisions'
-      /// halved), when some road and speed estimates the grid: its points'
-      /// lattice and tread heights too.
+      /// halved), when the study rolls on it: its points' lattice and tread
+      /// heights too.
       struct CoarserGrid
       {
         std::unique_ptr<contact::ContactGrid>   grid;
         std::unique_ptr<analysis::PatchLattice> lattice;
         Eigen::VectorXd                         tread;
 
-        CoarserGrid(const std::vector<std::array<double, 3>>              &coarse_points,
-                    const contact::ContactGrid                            &fine,
-                    const contact::ElasticLayer                           &layer,
-                    const std::vector<std::vector<analysis::EstimateRun>> &estimates)
+        CoarserGrid(const std::vector<std::array<double, 3>> &coarse_points,
+                    const contact::ContactGrid               &fine,
+                    const contact::ElasticLayer              &layer,
+                    const bool                                wanted)
         {
-          bool wanted = false;
-          for (const auto &of_run : estimates)
-            for (const auto &e : of_run)
-              wanted = wanted || e.what == analysis::Discretisation::contact_grid;
           if (!wanted)
             return;
           grid = std::make_unique<contact::ContactGrid>(coarse_points, fine.subdivisions / 2, layer,
@@ -86,6 +54,16 @@ namespace greentread
           tread = contact::tread_heights(grid->points);
         }
       };
+
+      /// Pointers to @p roads, for a RunLevel.
+      std::vector<const road::PatchRoad *>
+      pointers(const std::vector<std::unique_ptr<road::PatchRoad>> &roads)
+      {
+        std::vector<const road::PatchRoad *> p;
+        for (const auto &r : roads)
+          p.push_back(r.get());
+        return p;
+      }
     } // namespace
 
 
@@ -152,17 +130,15 @@ namespace greentread
       // The spectra of each run, checked now rather than after the run: the
       // time step must resolve the 100 Hz band, and the record must be long
       // enough for its Fourier lines to fall in that band.
-      const auto   lowest = analysis::third_octave_bands(100., 100.)[0];
+      const auto lowest =
+        analysis::third_octave_bands(analysis::lowest_band, analysis::lowest_band)[0];
       const double needed = 1. / (lowest.upper - lowest.lower);
       for (const auto &name : roads.roads)
         {
-          const auto   file    = texture_files.find(name);
-          const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
           for (const double speed_kmh : rolling.speeds)
             {
-              const double V  = speed_kmh / 3.6;
-              const double dt = rolling.time_step > 0. ? rolling.time_step : spacing / V;
-              spectrum_top_band(dt);
+              const double V = speed_kmh / 3.6;
+              analysis::top_band_for_step(rolling.time_step_for(road_spacing(name), V));
               if (rolling.distance / V < needed)
                 throw InputError(
                   "parameter 'Rolling/Distance' = " + format_short(rolling.distance) + " m lasts " +
@@ -195,24 +171,110 @@ namespace greentread
       const base::FrequencyResponseMatrix     G =
         green_stage(geometry, green, h5, green_key, record, tyre);
 
-      // Stage 4: modal, the patch model (saved too).
+      // Stage 4: modal, the patch model (saved too), and the error bars'
+      // coarser levels of the modes and of the ring's section.
       std::optional<CoarserModel> coarser_model;
       const modal::PatchModel     model =
         modal_stage(geometry, G, green_key, directory, record, tyre.get(), &coarser_model);
       tyre.reset();
-      // The error bars' coarser section: its own two stages.
       const std::optional<CoarserSection> section = coarser_section(directory, record);
 
-      // The contact grid (the Green's functions' points, or finer with the
-      // tread's layer below them), its lattice, the tread's own height (its
-      // curvature along x) and the structure's static compliance, which the
-      // static start uses.
+      // The contact grid, its lattice, the tread's own heights and the
+      // structure's static compliance, which the static start uses.
       const contact::ContactGrid grid(
-        model.points, contact_grid.subdivisions,
-        {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
+        model.points, contact_grid.subdivisions, tread_layer(),
         contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                  unsigned(model.points.size())),
         contact_grid.candidate_set(), contact_grid.tolerance);
+      report_contact_grid(grid);
+      const analysis::PatchLattice lattice(grid.points, h5.string());
+      const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
+      const Eigen::MatrixXd        G0    = synthesis::static_line(G);
+      std::cout << "  the model's static compliance differs from the structure's by "
+                << format_printf("%.2g", (model.static_compliance() - G0).cwiseAbs().maxCoeff() /
+                                           G0.cwiseAbs().maxCoeff())
+                << " (largest, relative)\n";
+
+      // The study: every road at every speed, and the error bars' levels.
+      std::map<analysis::Discretisation, double> factors;
+      if (coarser_model)
+        factors[analysis::Discretisation::mode_cutoff] = coarser_model->factor;
+      if (section)
+        factors[analysis::Discretisation::ring_section] = section->factor;
+      const analysis::Study study = analysis::plan_study(study_roads(grid), rolling, spectra,
+                                                         error_bars, grid.subdivisions, factors);
+
+      // Stage road: what each level's runs roll on.
+      const CoarserGrid                             coarser(model.points, grid, tread_layer(),
+                                                            study.needs(analysis::Discretisation::contact_grid));
+      std::vector<std::unique_ptr<road::PatchRoad>> fine_roads, coarser_roads;
+      make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads);
+      analysis::RunLevels levels;
+      levels.fine = {&model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+      if (coarser.grid)
+        levels.other[analysis::Discretisation::contact_grid] = {
+          &model,         coarser.grid.get(),    &G0,
+          &coarser.tread, coarser.lattice.get(), pointers(coarser_roads)};
+      if (coarser_model)
+        levels.other[analysis::Discretisation::mode_cutoff] = {
+          &coarser_model->model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+      if (section)
+        levels.other[analysis::Discretisation::ring_section] = {
+          &section->model, &grid, &section->G0, &tread, &lattice, pointers(fine_roads)};
+
+      // Stage contact: the runs are independent, so they go side by side,
+      // one per thread, each run's modal convolution on the threads left
+      // over (a run on one thread is memory- and FFT-bound: a second thread
+      // on its modal sums gained 10%).
+      const std::size_t  n_runs  = study.jobs.size();
+      const unsigned int threads = dealii::MultithreadInfo::n_threads();
+      const unsigned int side_by_side =
+        static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
+      if (side_by_side > 1)
+        std::cout << "  " << n_runs << " runs, " << side_by_side << " at a time\n";
+      const analysis::RunSettings        settings{rolling, spectra, directory, record,
+                                           global.print_timings};
+      std::vector<analysis::RunSpectrum> job_spectra(n_runs);
+      base::for_each_index(n_runs, side_by_side, [&](const std::size_t k, unsigned int) {
+        const analysis::StudyJob  &job = study.jobs[k];
+        const analysis::StudyCase &c   = study.cases[job.study_case];
+        job_spectra[k]                 = analysis::roll_run(
+                          levels.of(study.level_of(k)), c.road, study.roads[c.road].name, c.speed_kmh, job.run,
+                          settings, std::max(1u, threads / side_by_side), job.estimate < 0);
+      });
+
+      // Stage analysis: each band from the run that gives it, with its error
+      // bars; the spectra per road (speeds) and per speed (roads).
+      analysis::write_spectra(
+        directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
+        roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
+      if (global.print_timings)
+        std::cout << "Total run time " << format_printf("%.3g", base::seconds_since(start))
+                  << " s\n";
+    }
+
+
+
+    contact::ElasticLayer
+    TyreRoadContactScene::tread_layer() const
+    {
+      return {materials.tread_E, materials.tread_nu, geometry.tread_thickness};
+    }
+
+
+
+    double
+    TyreRoadContactScene::road_spacing(const std::string &road_name) const
+    {
+      const auto file = texture_files.find(road_name);
+      return file != texture_files.end() ? file->second.dx : roads.spacing;
+    }
+
+
+
+    void
+    TyreRoadContactScene::report_contact_grid(const contact::ContactGrid &grid) const
+    {
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
                   << " points, rectangles " << format_printf("%.3f", 1e3 * grid.dx) << " x "
@@ -224,119 +286,49 @@ namespace greentread
                     grid.candidate_set ? "projected CG on the candidate points (matrix-free)" :
                                          "projected CG on the whole grid (matrix-free)")
                 << " ('Contact grid/Solver' = " << contact_grid.solver << ")\n";
-      {
-        const double along =
-          spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;
-        const double across =
-          spectra.reporting_across > 0. ? spectra.reporting_across : grid.coarse_dy;
-        std::cout << "  the stress at the patch centre: the mean over a "
-                  << format_printf("%.3g", 1e3 * along) << " x "
-                  << format_printf("%.3g", 1e3 * across)
-                  << " mm cell ('Spectra/Reporting cell along', 'across'), nulls at V / "
-                  << format_printf("%.3g", 1e3 * along) << " mm\n";
-      }
-      const analysis::PatchLattice lattice(grid.points, h5.string());
-      const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
-      const Eigen::MatrixXd        G0    = synthesis::static_line(G);
-      const double                 static_mismatch =
-        (model.static_compliance() - G0).cwiseAbs().maxCoeff() / G0.cwiseAbs().maxCoeff();
-      std::cout << "  the model's static compliance differs from the structure's by "
-                << format_printf("%.2g", static_mismatch) << " (largest, relative)\n";
+      const double along = spectra.reporting_along > 0. ? spectra.reporting_along : grid.coarse_dx;
+      const double across =
+        spectra.reporting_across > 0. ? spectra.reporting_across : grid.coarse_dy;
+      std::cout << "  the stress at the patch centre: the mean over a "
+                << format_printf("%.3g", 1e3 * along) << " x "
+                << format_printf("%.3g", 1e3 * across)
+                << " mm cell ('Spectra/Reporting cell along', 'across'), nulls at V / "
+                << format_printf("%.3g", 1e3 * along) << " mm\n";
+    }
 
-      // Stages road and contact: every road at every speed. The roads are
-      // made first; the runs are independent, so they go side by side, one
-      // per thread (each run's modal convolution then on the threads left
-      // over), and their spectra are kept in the order of the roads and
-      // speeds. A run on one thread is memory- and FFT-bound, and a second
-      // thread on its modal sums gained 10% (1.1 cores used): two runs at
-      // once use both cores.
-      // A road's runs need its profiles under the points only, not the
-      // texture (6 MB per metre).
-      struct RoadOfRuns
-      {
-        std::string                      name;
-        road::PatchRoad                  patch_road;
-        std::unique_ptr<road::PatchRoad> coarser; ///< under the coarser grid's points
-      };
-      // Each road at each speed: the run at the scene's step and, for the
-      // low bands, a longer one at a coarser step (analysis::plan_band_runs()).
-      struct Job
-      {
-        std::size_t       road, speed;
-        analysis::BandRun run;
-        /// -1, or the index of the error bars' other level it is.
-        int estimate = -1;
-      };
-      std::vector<Job>                            jobs;
-      std::vector<std::vector<analysis::BandRun>> plans;
-      // The error bars' coarser levels of each road and speed's runs.
-      std::vector<std::vector<analysis::EstimateRun>> estimates;
-      std::vector<double>                             road_length(roads.roads.size(), 0.);
-      for (std::size_t r = 0; r < roads.roads.size(); ++r)
+
+
+    std::vector<analysis::StudyRoad>
+    TyreRoadContactScene::study_roads(const contact::ContactGrid &grid) const
+    {
+      std::vector<analysis::StudyRoad> study_roads;
+      for (const auto &name : roads.roads)
         {
-          const auto   file    = texture_files.find(roads.roads[r]);
-          const double spacing = file != texture_files.end() ? file->second.dx : roads.spacing;
-          // A texture file bounds the low-rate run by the length its points
-          // can roll over.
-          analysis::SpectraParameters limits = spectra;
-          if (file != texture_files.end())
-            limits.longest_distance =
-              std::min(spectra.longest_distance,
-                       road::PatchRoad(file->second, grid.points, roads.sampling, roads.roads[r])
-                         .usable_length());
-          for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
-            {
-              const double V  = rolling.speeds[v] / 3.6;
-              const double dt = rolling.time_step > 0. ? rolling.time_step : spacing / V;
-              plans.push_back(
-                analysis::plan_band_runs(limits, V, dt, rolling.distance, spectrum_top_band(dt)));
-              for (const auto &run : plans.back())
-                {
-                  if (run.target_out_of_reach)
-                    std::cout << "  " << roads.roads[r] << " at "
-                              << format_number(rolling.speeds[v])
-                              << " km/h: the low-rate run stops at " << format_short(run.distance)
-                              << " m ('Spectra/Longest distance'"
-                              << (file != texture_files.end() ? ", or the texture file's length" :
-                                                                "")
-                              << "), short of the standard error target\n";
-                  jobs.push_back({r, v, run});
-                  // As long as the run may extend to ('Spectra/Extend runs').
-                  road_length[r] =
-                    std::max({road_length[r], run.distance, run.longest_steps * V * run.time_step});
-                }
-              estimates.push_back(analysis::plan_estimate_runs(
-                plans.back(), error_bars, spectra.target_from, V, grid.subdivisions));
-              auto &e = estimates.back();
-              e.erase(std::remove_if(e.begin(), e.end(),
-                                     [&](const analysis::EstimateRun &x) {
-                                       return (x.what == analysis::Discretisation::mode_cutoff &&
-                                               !coarser_model) ||
-                                              (x.what == analysis::Discretisation::ring_section &&
-                                               !section);
-                                     }),
-                      e.end());
-              for (std::size_t k = 0; k < e.size(); ++k)
-                {
-                  if (e[k].what == analysis::Discretisation::mode_cutoff)
-                    e[k].factor = coarser_model->factor;
-                  if (e[k].what == analysis::Discretisation::ring_section)
-                    e[k].factor = section->factor;
-                  if (e[k].run.steps > 0)
-                    jobs.push_back({r, v, e[k].run, int(k)});
-                }
-            }
+          const auto file = texture_files.find(name);
+          // A texture file bounds the runs by the length its points can roll.
+          const double longest =
+            file == texture_files.end() ?
+              spectra.longest_distance :
+              std::min(
+                spectra.longest_distance,
+                road::PatchRoad(file->second, grid.points, roads.sampling, name).usable_length());
+          study_roads.push_back({name, road_spacing(name), longest, file != texture_files.end()});
         }
-      // The error bars' coarser grid (its road under its own points).
-      const CoarserGrid coarser(model.points, grid,
-                                {materials.tread_E, materials.tread_nu, geometry.tread_thickness},
-                                estimates);
-      // The longest runs first, so that two threads end together.
-      std::stable_sort(jobs.begin(), jobs.end(), [](const Job &a, const Job &b) {
-        return a.run.steps > b.run.steps;
-      });
+      return study_roads;
+    }
 
-      std::vector<std::unique_ptr<RoadOfRuns>> road_list;
+
+
+    void
+    TyreRoadContactScene::make_roads(
+      const analysis::Study                         &study,
+      const contact::ContactGrid                    &grid,
+      const contact::ContactGrid                    *coarser,
+      const std::filesystem::path                   &directory,
+      const base::ParameterRecord                   &record,
+      std::vector<std::unique_ptr<road::PatchRoad>> &fine_roads,
+      std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads) const
+    {
       for (std::size_t r = 0; r < roads.roads.size(); ++r)
         {
           const std::string &road_name = roads.roads[r];
@@ -345,137 +337,20 @@ namespace greentread
           // longest run needs (the patch and a margin of 0.1 m beyond it).
           const double width = green.patch.width + 0.03;
           std::cout << "Road '" << road_name << "'\n";
-          const auto    file = texture_files.find(road_name);
-          road::Texture texture =
+          const auto          file = texture_files.find(road_name);
+          const road::Texture texture =
             file != texture_files.end() ?
               file->second :
-              roads.make(road_name, width, road_length[r] + green.patch.length + 0.1);
-          road::PatchRoad patch_road(texture, grid.points, roads.sampling, road_name);
+              roads.make(road_name, width, study.road_length[r] + green.patch.length + 0.1);
+          // A road's runs need its profiles under the points only, not the
+          // texture (6 MB per metre).
+          fine_roads.push_back(
+            std::make_unique<road::PatchRoad>(texture, grid.points, roads.sampling, road_name));
           analysis::write_road_report(directory, road_name, texture, record);
-          road_list.push_back(std::make_unique<RoadOfRuns>(
-            RoadOfRuns{road_name, std::move(patch_road),
-                       coarser.grid ? std::make_unique<road::PatchRoad>(
-                                        texture, coarser.grid->points, roads.sampling, road_name) :
-                                      nullptr}));
+          if (coarser != nullptr)
+            coarser_roads.push_back(std::make_unique<road::PatchRoad>(texture, coarser->points,
+                                                                      roads.sampling, road_name));
         }
-      const std::size_t  n_runs  = jobs.size();
-      const unsigned int threads = dealii::MultithreadInfo::n_threads();
-      const unsigned int side_by_side =
-        static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
-      std::vector<analysis::RunSpectrum> job_spectra(n_runs);
-      std::vector<std::exception_ptr>    failures(n_runs);
-      std::atomic<std::size_t>           next{0};
-      std::atomic<unsigned int>          done{0};
-      std::atomic<bool>                  failed{false};
-      if (side_by_side > 1)
-        std::cout << "  " << n_runs << " runs, " << side_by_side << " at a time\n";
-      base::run_on_threads(
-        side_by_side,
-        [&]() {
-          for (std::size_t k; !failed && (k = next++) < n_runs;)
-            {
-              const RoadOfRuns &r = *road_list[jobs[k].road];
-              try
-                {
-                  const Job &job = jobs[k];
-                  // The discretisation this run is the other level of, if any.
-                  const auto is = [&](const analysis::Discretisation d) {
-                    return job.estimate >= 0 &&
-                           estimates[job.road * rolling.speeds.size() + job.speed][job.estimate]
-                               .what == d;
-                  };
-                  const bool on_coarser_grid    = is(analysis::Discretisation::contact_grid);
-                  const bool on_coarser_section = is(analysis::Discretisation::ring_section);
-                  job_spectra[k]                = roll(
-                                   is(analysis::Discretisation::mode_cutoff) ? coarser_model->model :
-                                   on_coarser_section                        ? section->model :
-                                                                               model,
-                    on_coarser_grid ? *coarser.grid : grid, on_coarser_section ? section->G0 : G0,
-                    on_coarser_grid ? coarser.tread : tread,
-                    on_coarser_grid ? *coarser.lattice : lattice,
-                    on_coarser_grid ? *r.coarser : r.patch_road, r.name, rolling.speeds[job.speed],
-                    job.run, directory, record, std::max(1u, threads / side_by_side),
-                    job.estimate < 0);
-                }
-              catch (...)
-                {
-                  failures[k] = std::current_exception();
-                  failed      = true;
-                }
-              ++done;
-            }
-        },
-        done, n_runs, nullptr,
-        [&]() {
-          return failed.load();
-        });
-      for (const auto &f : failures)
-        if (f)
-          std::rethrow_exception(f);
-
-      // Each band from the run that fits it, in the order of the roads and speeds.
-      std::vector<analysis::RunSpectrum> run_spectra;
-      for (std::size_t r = 0; r < roads.roads.size(); ++r)
-        for (std::size_t v = 0; v < rolling.speeds.size(); ++v)
-          {
-            const auto job_of = [&](const std::string &name) {
-              return std::find_if(jobs.begin(), jobs.end(),
-                                  [&](const Job &j) {
-                                    return j.road == r && j.speed == v && j.run.name == name;
-                                  }) -
-                     jobs.begin();
-            };
-            analysis::RunSpectrum merged = job_spectra[job_of("")];
-            const auto           &plan   = plans[r * rolling.speeds.size() + v];
-            std::vector<bool>     used(plan.size(), true);
-            for (std::size_t i = 1; i < plan.size(); ++i)
-              {
-                const auto &low = job_spectra[job_of(plan[i].name)];
-                std::string disagreement =
-                  analysis::low_rate_disagreement(merged.spectrum, low.spectrum, plan[i]);
-                if (disagreement.empty())
-                  disagreement = analysis::low_rate_disagreement(merged.force_spectrum,
-                                                                 low.force_spectrum, plan[i]);
-                if (!disagreement.empty())
-                  {
-                    std::cout << "Warning: " << roads.roads[r] << " at "
-                              << format_number(rolling.speeds[v]) << " km/h: the low-rate run ("
-                              << format_short(1e6 * plan[i].time_step)
-                              << " us, 'Spectra/Low-band time step') disagrees with the run at "
-                                 "the scene's step in "
-                              << disagreement
-                              << "; its bands are not used (a smaller 'Spectra/Low-band time "
-                                 "step' may suit this contact)\n";
-                    used[i] = false;
-                    continue;
-                  }
-                merged.spectrum =
-                  analysis::merge_band_spectra(merged.spectrum, low.spectrum, plan[i]);
-                merged.force_spectrum =
-                  analysis::merge_band_spectra(merged.force_spectrum, low.force_spectrum, plan[i]);
-              }
-            analysis::add_error_bars(
-              merged, estimates[r * rolling.speeds.size() + v], plan, used,
-              [&](const std::string &name) -> const analysis::RunSpectrum & {
-                return job_spectra[job_of(name)];
-              },
-              rolling.stress_reference, spectra.lines_per_segment);
-            run_spectra.push_back(std::move(merged));
-          }
-
-      // Stage analysis: the spectra per road (speeds) and per speed (roads).
-      analysis::write_spectra(directory, run_spectra, roads.roads, rolling.speeds,
-                              rolling.stress_reference, model.f_max, spectra, record);
-      if (global.print_timings)
-        std::cout
-          << "Total run time "
-          << format_printf(
-               "%.3g",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
-          << " s\n";
     }
-
-
-
   } // namespace scenes
 } // namespace greentread

@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/job_runner.h>
 #include <greentread/base/progress.h>
 #include <greentread/base/serial_blas.h>
 #include <greentread/synthesis/ring_modes.h>
@@ -93,7 +94,7 @@ namespace greentread
       /// a(r, q): Bloch mode r seen by the unit load of point q,
       /// sum over q's entries (n, s, w) of w e^{i phi n} psi_r(s).
       Eigen::MatrixXcd
-      bloch_point_values(const BlochModes             &modes,
+      bloch_point_values(const WavenumberModes        &modes,
                          const periodic::PeriodicCell &cell,
                          const periodic::ContactPatch &patch)
       {
@@ -110,7 +111,7 @@ namespace greentread
 
 
     Eigen::MatrixXd
-    point_shapes(const BlochModes             &modes,
+    point_shapes(const WavenumberModes        &modes,
                  const periodic::PeriodicCell &cell,
                  const periodic::ContactPatch &patch)
     {
@@ -139,7 +140,7 @@ namespace greentread
 
 
     PointModes
-    coupled_point_modes(const BlochModes             &modes,
+    coupled_point_modes(const WavenumberModes        &modes,
                         const periodic::PeriodicCell &cell,
                         const periodic::ContactPatch &patch,
                         const bool                    couple)
@@ -152,7 +153,7 @@ namespace greentread
 
 
     PointModes
-    coupled_point_modes(const BlochModes       &modes,
+    coupled_point_modes(const WavenumberModes  &modes,
                         const Eigen::MatrixXcd &a,
                         const double            N,
                         const bool              real,
@@ -283,7 +284,7 @@ namespace greentread
       /// coupled (0 or 1), the number of ring modes r, then per ring mode
       /// w, xi, its P shape values and their P imaginary parts.
       void
-      pack(const BlochModes &modes, const PointModes &ring, std::vector<double> &out)
+      pack(const WavenumberModes &modes, const PointModes &ring, std::vector<double> &out)
       {
         out.push_back(modes.wavenumber);
         out.push_back(modes.omega.size());
@@ -319,8 +320,8 @@ namespace greentread
       return gather_ring_modes(
         cell.n_cells / 2 + 1, patch.points.size(),
         [&](const unsigned int k) {
-          BlochModes modes  = bloch_modes(cell, k, search);
-          PointModes points = coupled_point_modes(modes, cell, patch, couple_damping);
+          WavenumberModes modes  = bloch_modes(cell, k, search);
+          PointModes      points = coupled_point_modes(modes, cell, patch, couple_damping);
           // Moved, not copied: the shapes over [L, I] are megabytes per wavenumber.
           return std::make_pair(std::move(modes), std::move(points));
         },
@@ -330,13 +331,13 @@ namespace greentread
 
 
     RingModes
-    gather_ring_modes(const unsigned int     n_k,
-                      const unsigned int     P,
-                      const WavenumberModes &modes_of,
-                      const std::string     &what,
-                      const MPI_Comm         comm,
-                      const bool             show_progress,
-                      const bool             couple_damping)
+    gather_ring_modes(const unsigned int       n_k,
+                      const unsigned int       P,
+                      const ModesOfWavenumber &modes_of,
+                      const std::string       &what,
+                      const MPI_Comm           comm,
+                      const bool               show_progress,
+                      const bool               couple_damping)
     {
       const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);

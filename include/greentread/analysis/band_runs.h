@@ -30,7 +30,7 @@ namespace greentread
       double       distance  = 0.; ///< rolled [m]
       unsigned int steps     = 0;  ///< contact::steps_to_cover(distance, V, time_step)
       /// The nominal centres of the bands this run gives the merged spectrum.
-      double f_low = 100., f_high = 5000.;
+      double f_low = lowest_band, f_high = highest_band;
       /// The target is not met, by the prediction, within the longest
       /// distance allowed ('Spectra/Longest distance').
       bool target_out_of_reach = false;
@@ -38,6 +38,16 @@ namespace greentread
       /// errors miss the target ('Spectra/Extend runs'); 0: no extension.
       unsigned int longest_steps = 0;
     };
+
+    /**
+     * @brief The highest band of a run's spectrum at time step @p dt [s]:
+     * highest_band, or the highest band below the Nyquist frequency
+     * 1 / (2 dt) of a coarser step.
+     * @throws InputError naming 'Time stepping/Time step' if not even the
+     * lowest band fits.
+     */
+    double
+    top_band_for_step(double dt);
 
     /**
      * @brief How many more steps a run of @p steps_done steps needs so that

@@ -19,7 +19,8 @@
  * What the tyre-road-contact scene writes for people to look at: the report
  * of each road, the outputs of each rolling run (time histories, a VTU time
  * series of the contact stress for ParaView, plots) and the spectra of all
- * runs. Implemented in source/analysis/rolling_output.cc.
+ * runs. Implemented in source/analysis/rolling_output.cc, and write_spectra()
+ * in source/analysis/spectra_output.cc.
  */
 
 namespace greentread

@@ -35,6 +35,11 @@ namespace greentread
       double upper;   ///< upper edge centre x 10^(+1/20) [Hz], not in it
     };
 
+    /// The range of every spectrum of a rolling run: the bands of tyre/road
+    /// noise, from 100 Hz to 5 kHz (nominal centres) [Hz].
+    constexpr double lowest_band  = 100.;
+    constexpr double highest_band = 5000.;
+
     /**
      * @brief The base-10 one-third-octave bands whose nominal centres lie in
      * [@p f_low, @p f_high] [Hz] (both inclusive, to a relative 1e-9), in
@@ -44,7 +49,7 @@ namespace greentread
      * finite and at least one nominal centre lies between them.
      */
     std::vector<FrequencyBand>
-    third_octave_bands(double f_low = 100., double f_high = 5000.);
+    third_octave_bands(double f_low = lowest_band, double f_high = highest_band);
 
     /**
      * @brief The level given to a band whose rms is at most 1e-10 times the
@@ -154,8 +159,8 @@ namespace greentread
     third_octave_spectrum(const std::vector<double> &x,
                           double                     dt,
                           double                     reference,
-                          double                     f_low  = 100.,
-                          double                     f_high = 5000.);
+                          double                     f_low  = lowest_band,
+                          double                     f_high = highest_band);
 
     /**
      * @brief The one-third-octave band spectrum of x_n = x(n dt) averaged
@@ -195,8 +200,8 @@ namespace greentread
     welch_band_spectrum(const std::vector<double> &x,
                         double                     dt,
                         double                     reference,
-                        double                     f_low             = 100.,
-                        double                     f_high            = 5000.,
+                        double                     f_low             = lowest_band,
+                        double                     f_high            = highest_band,
                         unsigned int               lines_per_segment = 8);
 
     /**

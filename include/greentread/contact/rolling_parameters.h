@@ -28,6 +28,14 @@ namespace greentread
       unsigned int frames           = 40;
       double       stress_reference = 100.;
 
+      /// The time step at @p speed [m/s] on a road sampled every @p spacing
+      /// [m]: 'Time stepping/Time step', or (0) one road sample per step.
+      double
+      time_step_for(const double spacing, const double speed) const
+      {
+        return time_step > 0. ? time_step : spacing / speed;
+      }
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

@@ -4,8 +4,10 @@
 #include <greentread/analysis/error_bar_parameters.h>
 #include <greentread/analysis/rolling_output.h>
 #include <greentread/analysis/spectra_parameters.h>
+#include <greentread/analysis/study.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/contact_grid.h>
+#include <greentread/contact/elastic_layer.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/contact/rolling_parameters.h>
 #include <greentread/fe/material.h>
@@ -106,28 +108,36 @@ namespace greentread
       coarser_section(const std::filesystem::path &directory,
                       const base::ParameterRecord &record) const;
 
-      /// One run: road @p road_name at @p speed_kmh, at the time step and over
-      /// the distance of @p band_run, on the contact points of
-      /// @p grid, from the static contact (the structure's static
-      /// compliance @p G0 between the Green's functions' points, which the
-      /// grid splits), with its outputs; returns its spectrum. Its modal
-      /// convolution runs on @p threads threads. Runs may go side by side:
-      /// a run prints its lines in whole blocks. Without @p write_outputs (a
-      /// coarser run of the error bars) it keeps its histories only.
-      analysis::RunSpectrum
-      roll(const modal::PatchModel      &model,
-           const contact::ContactGrid   &grid,
-           const Eigen::MatrixXd        &G0,
-           const Eigen::VectorXd        &tread,
-           const analysis::PatchLattice &lattice,
-           const road::PatchRoad        &patch_road,
-           const std::string            &road_name,
-           double                        speed_kmh,
-           const analysis::BandRun      &band_run,
-           const std::filesystem::path  &directory,
-           const base::ParameterRecord  &record,
-           unsigned int                  threads,
-           bool                          write_outputs = true) const;
+      /// The tread's layer under the contact points ('Materials/Tread ...',
+      /// 'Geometry/Tread thickness').
+      contact::ElasticLayer
+      tread_layer() const;
+
+      /// The spacing of road @p road_name's samples [m]: a texture file's,
+      /// or 'Road texture/Spacing'.
+      double
+      road_spacing(const std::string &road_name) const;
+
+      /// Prints the contact grid, its solver and the reporting cell.
+      void
+      report_contact_grid(const contact::ContactGrid &grid) const;
+
+      /// The roads of the study, with how far their runs may roll on @p grid.
+      std::vector<analysis::StudyRoad>
+      study_roads(const contact::ContactGrid &grid) const;
+
+      /// Stage road: each road of @p study (a texture file, or made as long
+      /// as its runs need), its report written in @p directory, and its
+      /// profiles under @p grid's points (in @p fine_roads) and, when
+      /// @p coarser, under its points too (in @p coarser_roads).
+      void
+      make_roads(const analysis::Study                         &study,
+                 const contact::ContactGrid                    &grid,
+                 const contact::ContactGrid                    *coarser,
+                 const std::filesystem::path                   &directory,
+                 const base::ParameterRecord                   &record,
+                 std::vector<std::unique_ptr<road::PatchRoad>> &fine_roads,
+                 std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads) const;
 
       dealii::ParameterHandler       &prm;
       GlobalParameters                global;
