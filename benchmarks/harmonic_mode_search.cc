@@ -142,12 +142,12 @@ main(int argc, char **argv)
       unsigned int column = 1;
       for (const unsigned int S : {24u, 48u, 96u})
         {
-          synthesis::BlochModes modes;
-          const double          t = seconds_of([&] {
+          synthesis::WavenumberModes modes;
+          const double               t = seconds_of([&] {
             modes = synthesis::harmonic_modes(section, n, cutoff, S);
           });
-          const double          d = largest_difference(modes.omega, w1);
-          worst                   = std::max(worst, d);
+          const double               d = largest_difference(modes.omega, w1);
+          worst                        = std::max(worst, d);
           std::printf(" %5.2f s, %6.1e, %5.0e |", t, modes.max_residual, d);
           csv << n << ',' << modes.omega.size() << ",standard S=" << S << ',' << t << ','
               << modes.max_residual << ',' << d << '\n';
@@ -156,14 +156,14 @@ main(int argc, char **argv)
       synthesis::ModeSearch search;
       search.cutoff = cutoff;
       using C       = std::complex<double>;
-      synthesis::BlochModes own;
-      const double          t3 = seconds_of([&] {
+      synthesis::WavenumberModes own;
+      const double               t3 = seconds_of([&] {
         own = synthesis::hermitian_modes(section.stiffness(n).cast<C>(),
-                                                  section.damping(n).cast<C>(), section.mass().cast<C>(), n,
-                                                  "harmonic " + std::to_string(n), search);
+                                                       section.damping(n).cast<C>(), section.mass().cast<C>(), n,
+                                                       "harmonic " + std::to_string(n), search);
       });
-      const double          d3 = largest_difference(own.omega, w1);
-      worst                    = std::max(worst, d3);
+      const double               d3 = largest_difference(own.omega, w1);
+      worst                         = std::max(worst, d3);
       std::printf(" %6.2f s, %6.1e, %5.0e\n", t3, own.max_residual, d3);
       csv << n << ',' << own.omega.size() << ",own block Krylov," << t3 << ',' << own.max_residual
           << ',' << d3 << '\n';

@@ -44,8 +44,8 @@ namespace
   /// search and of the damping's coupling (its result is not kept).
   struct TimedSearch
   {
-    synthesis::BlochModes modes;
-    double                search = 0., coupling = 0.;
+    synthesis::WavenumberModes modes;
+    double                     search = 0., coupling = 0.;
   };
 
   TimedSearch

@@ -450,7 +450,7 @@ namespace greentread
 
 
 
-    BlochModes
+    WavenumberModes
     bloch_modes(const periodic::PeriodicCell &cell, const unsigned int k, const ModeSearch &search)
     {
       const double        phi = 2. * M_PI * k / cell.n_cells;
@@ -466,7 +466,7 @@ namespace greentread
 
 
 
-    BlochModes
+    WavenumberModes
     hermitian_modes(periodic::SparseComplex K,
                     periodic::SparseComplex C,
                     periodic::SparseComplex M,
@@ -506,7 +506,7 @@ namespace greentread
       const double        cut2 = search.cutoff * search.cutoff;
       Dense               locked(problem.M.rows(), 0), mass_locked(problem.M.rows(), 0);
       std::vector<double> theta;
-      BlochModes          modes;
+      WavenumberModes     modes;
       modes.wavenumber = k;
       for (unsigned int s = 0; s < search.slices; ++s)
         {

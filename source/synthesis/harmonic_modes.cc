@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/job_runner.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/progress.h>
 #include <greentread/synthesis/harmonic_modes.h>
@@ -170,13 +171,111 @@ namespace greentread
 
 
 
-    BlochModes
+    namespace
+    {
+      /**
+       * The modes of harmonic @p n in the slice (@p low, @p top] of w^2
+       * [rad^2/s^2], which the inertia counts @p wanted: their eigenvalues in
+       * @p slice_lambda and their shapes returned, one column each. The
+       * first slice (@p first) is shifted below zero, so that its lowest
+       * modes keep small relative residuals; the others to their middle.
+       * A count a search misses is searched again with what it found
+       * projected out (Deflated), twice at most. Adds its solves and Krylov
+       * dimensions to @p modes' counters.
+       */
+      Eigen::MatrixXd
+      search_slice(const fe::HarmonicSection          &section,
+                   const unsigned int                  n,
+                   const bool                          first,
+                   const double                        low,
+                   const double                        top,
+                   const double                        cut2,
+                   const unsigned int                  wanted,
+                   Eigen::SimplicialLDLT<Sparse>      &ldlt,
+                   bool                               &analysed,
+                   const Eigen::SimplicialLLT<Sparse> &mass,
+                   WavenumberModes                    &modes,
+                   std::vector<double>                &slice_lambda)
+      {
+        const Eigen::Index size  = section.size();
+        const double       shift = first ? -cut2 / 400. : 0.5 * (low + top);
+        factorise_shifted(section, n, shift, ldlt, analysed);
+        StandardShiftInvert op(ldlt, mass);
+        // The slice's modes in standard form (the deflation's Y) and as
+        // shapes. A first search asks for the count (and a few more in a
+        // slice shifted to its middle); a count it misses is searched
+        // again with what it found projected out (Deflated), twice at most.
+        Eigen::MatrixXd Y(size, 0);
+        slice_lambda.clear();
+        for (unsigned int pass = 0; pass < 3 && slice_lambda.size() < wanted; ++pass)
+          {
+            const unsigned int missing = wanted - slice_lambda.size();
+            const Eigen::Index extra   = std::min<Eigen::Index>(
+              first && pass == 0 ? 0 : missing / 4 + 4, size - Y.cols() - missing - 2);
+            const Eigen::Index nev = missing + std::max<Eigen::Index>(extra, 0);
+            const Eigen::Index ncv = std::min<Eigen::Index>(
+              size - Y.cols(), std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+            const auto found = [&](auto &solver) {
+              solver.init();
+              solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11,
+                             Spectra::SortRule::LargestAlge);
+              if (solver.info() != Spectra::CompInfo::Successful)
+                throw NumericalError("the modes of harmonic " + std::to_string(n) +
+                                     ": Spectra's shift-invert Lanczos did not converge on " +
+                                     std::to_string(nev) + " modes near " +
+                                     format_short(std::sqrt(std::max(shift, 0.)) / (2. * M_PI)) +
+                                     " Hz");
+              modes.n_solves += static_cast<unsigned int>(solver.num_operations());
+              modes.krylov_dimension += static_cast<unsigned int>(ncv);
+              const Eigen::VectorXd nu = solver.eigenvalues();
+              const Eigen::MatrixXd y  = solver.eigenvectors();
+              for (Eigen::Index r = 0; r < nu.size(); ++r)
+                {
+                  if (nu(r) == 0.)
+                    continue;
+                  const double l = shift + 1. / nu(r);
+                  if (!(l > low && l <= top * (1. + 1e-12)) || slice_lambda.size() == wanted)
+                    continue;
+                  Y.conservativeResize(Eigen::NoChange, Y.cols() + 1);
+                  Y.col(Y.cols() - 1) = y.col(r);
+                  slice_lambda.push_back(l);
+                }
+            };
+            if (pass == 0)
+              {
+                Spectra::SymEigsSolver<StandardShiftInvert> solver(op, nev, ncv);
+                found(solver);
+              }
+            else
+              {
+                // Y's columns from separate searches: orthonormal again.
+                const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+                const Eigen::MatrixXd                       Q =
+                  qr.householderQ() * Eigen::MatrixXd::Identity(size, Y.cols());
+                Deflated                         deflated(op, Q);
+                Spectra::SymEigsSolver<Deflated> solver(deflated, nev, ncv);
+                found(solver);
+              }
+          }
+        if (slice_lambda.size() != wanted)
+          throw NumericalError("the modes of harmonic " + std::to_string(n) + ": " +
+                               std::to_string(slice_lambda.size()) + " eigenvalues found in (" +
+                               format_short(std::max(low, 0.)) + ", " + format_short(top) +
+                               "] rad^2/s^2 after three searches, where the inertia counts " +
+                               std::to_string(wanted));
+        return op.shapes(Y);
+      }
+    } // namespace
+
+
+
+    WavenumberModes
     harmonic_modes(const fe::HarmonicSection &section,
                    const unsigned int         n,
                    const double               cutoff,
                    const unsigned int         modes_per_slice)
     {
-      BlochModes modes;
+      WavenumberModes modes;
       modes.wavenumber                   = n;
       const Sparse                  K    = section.stiffness(n);
       const Sparse                 &M    = section.mass();
@@ -224,80 +323,16 @@ namespace greentread
           factorise_shifted(section, n, top[j], ldlt, analysed);
           below[j + 1] = negative_pivots(ldlt);
         }
-      std::vector<double> lambda;
+      std::vector<double> lambda, slice_lambda;
       Eigen::MatrixXd     U(size, m);
       for (unsigned int j = 0; j < slices; ++j)
         {
           const unsigned int wanted = below[j + 1] - below[j];
           if (wanted == 0)
             continue;
-          const double low   = j == 0 ? -cut2 : top[j - 1];
-          const double shift = j == 0 ? -cut2 / 400. : 0.5 * (low + top[j]);
-          factorise_shifted(section, n, shift, ldlt, analysed);
-          StandardShiftInvert op(ldlt, mass);
-          // The slice's modes in standard form (the deflation's Y) and as
-          // shapes. A first search asks for the count (and a few more in a
-          // slice shifted to its middle); a count it misses is searched
-          // again with what it found projected out (Deflated), twice at most.
-          Eigen::MatrixXd     Y(size, 0);
-          std::vector<double> slice_lambda;
-          for (unsigned int pass = 0; pass < 3 && slice_lambda.size() < wanted; ++pass)
-            {
-              const unsigned int missing = wanted - slice_lambda.size();
-              const Eigen::Index extra   = std::min<Eigen::Index>(
-                j == 0 && pass == 0 ? 0 : missing / 4 + 4, size - Y.cols() - missing - 2);
-              const Eigen::Index nev = missing + std::max<Eigen::Index>(extra, 0);
-              const Eigen::Index ncv = std::min<Eigen::Index>(
-                size - Y.cols(), std::max<Eigen::Index>(2 * nev + 1, nev + 20));
-              const auto found = [&](auto &solver) {
-                solver.init();
-                solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-11,
-                               Spectra::SortRule::LargestAlge);
-                if (solver.info() != Spectra::CompInfo::Successful)
-                  throw NumericalError("the modes of harmonic " + std::to_string(n) +
-                                       ": Spectra's shift-invert Lanczos did not converge on " +
-                                       std::to_string(nev) + " modes near " +
-                                       format_short(std::sqrt(std::max(shift, 0.)) / (2. * M_PI)) +
-                                       " Hz");
-                modes.n_solves += static_cast<unsigned int>(solver.num_operations());
-                modes.krylov_dimension += static_cast<unsigned int>(ncv);
-                const Eigen::VectorXd nu = solver.eigenvalues();
-                const Eigen::MatrixXd y  = solver.eigenvectors();
-                for (Eigen::Index r = 0; r < nu.size(); ++r)
-                  {
-                    if (nu(r) == 0.)
-                      continue;
-                    const double l = shift + 1. / nu(r);
-                    if (!(l > low && l <= top[j] * (1. + 1e-12)) || slice_lambda.size() == wanted)
-                      continue;
-                    Y.conservativeResize(Eigen::NoChange, Y.cols() + 1);
-                    Y.col(Y.cols() - 1) = y.col(r);
-                    slice_lambda.push_back(l);
-                  }
-              };
-              if (pass == 0)
-                {
-                  Spectra::SymEigsSolver<StandardShiftInvert> solver(op, nev, ncv);
-                  found(solver);
-                }
-              else
-                {
-                  // Y's columns from separate searches: orthonormal again.
-                  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
-                  const Eigen::MatrixXd                       Q =
-                    qr.householderQ() * Eigen::MatrixXd::Identity(size, Y.cols());
-                  Deflated                         deflated(op, Q);
-                  Spectra::SymEigsSolver<Deflated> solver(deflated, nev, ncv);
-                  found(solver);
-                }
-            }
-          if (slice_lambda.size() != wanted)
-            throw NumericalError("the modes of harmonic " + std::to_string(n) + ": " +
-                                 std::to_string(slice_lambda.size()) + " eigenvalues found in (" +
-                                 format_short(std::max(low, 0.)) + ", " + format_short(top[j]) +
-                                 "] rad^2/s^2 after three searches, where the inertia counts " +
-                                 std::to_string(wanted));
-          const Eigen::MatrixXd slice_u = op.shapes(Y);
+          const Eigen::MatrixXd slice_u =
+            search_slice(section, n, j == 0, j == 0 ? -cut2 : top[j - 1], top[j], cut2, wanted,
+                         ldlt, analysed, mass, modes, slice_lambda);
           for (unsigned int r = 0; r < wanted && lambda.size() < m; ++r)
             {
               U.col(lambda.size()) = slice_u.col(r);
@@ -387,7 +422,7 @@ namespace greentread
       return gather_ring_modes(
         n_k, P,
         [&](const unsigned int n) {
-          BlochModes            modes = harmonic_modes(ring.section, n, cutoff);
+          WavenumberModes       modes = harmonic_modes(ring.section, n, cutoff);
           const double          s     = std::sqrt(ring.weight(n));
           Eigen::MatrixXcd      a(modes.omega.size(), P);
           const Eigen::MatrixXd seen =

@@ -214,11 +214,11 @@ BOOST_AUTO_TEST_CASE(coupled_modes_equal_the_direct_solve_in_their_subspace)
     synthesis::ring_modes(tyre.periodic_cell, tyre.patch, search, MPI_COMM_SELF, false);
   BOOST_TEST_REQUIRE(modes.uncoupled == 0u);
   BOOST_TEST_REQUIRE(modes.shapes_imag.size() > 0);
-  const auto                         model = synthesis_of(tyre, modes);
-  const Eigen::Index                 P     = tyre.patch.points.size();
-  std::vector<synthesis::BlochModes> bloch;
-  std::vector<Eigen::MatrixXcd>      A;
-  double                             coupling = 0.;
+  const auto                              model = synthesis_of(tyre, modes);
+  const Eigen::Index                      P     = tyre.patch.points.size();
+  std::vector<synthesis::WavenumberModes> bloch;
+  std::vector<Eigen::MatrixXcd>           A;
+  double                                  coupling = 0.;
   for (unsigned int k = 0; k < N; ++k)
     {
       bloch.push_back(synthesis::bloch_modes(tyre.periodic_cell, k, search));

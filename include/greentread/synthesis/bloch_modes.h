@@ -1,6 +1,7 @@
 #pragma once
 
 #include <greentread/periodic/periodic_cell.h>
+#include <greentread/synthesis/wavenumber_modes.h>
 
 #include <Eigen/Dense>
 
@@ -20,27 +21,6 @@ namespace greentread
 {
   namespace synthesis
   {
-    /// The modes of one wavenumber below a cut-off.
-    struct BlochModes
-    {
-      unsigned int wavenumber = 0;
-      /// Natural angular frequencies w_r [rad/s], ascending.
-      Eigen::VectorXd omega;
-      /// psi_r^H C_phi psi_r / (2 w_r): each mode's viscous damping ratio
-      /// from the cell's damping C, its diagonal in the modal basis.
-      Eigen::VectorXd damping_ratio;
-      /// Psi^H C_phi Psi: the damping in the modal basis, whole (its
-      /// diagonal is 2 xi_r w_r). A damping that is not proportional
-      /// couples the modes through its off-diagonal terms.
-      Eigen::MatrixXcd modal_damping;
-      /// The mass-normalised shapes psi_r over [L, I], one column each.
-      Eigen::MatrixXcd shapes;
-      /// How the search went: sparse solves, Krylov dimension, and the
-      /// largest relative residual |K psi - w^2 M psi| / |K psi| kept.
-      unsigned int n_solves = 0, krylov_dimension = 0;
-      double       max_residual = 0.;
-    };
-
     /// How far and how tightly bloch_modes() searches.
     struct ModeSearch
     {
@@ -104,7 +84,7 @@ namespace greentread
      * be computed, or the search does not converge within the size of the
      * cell, naming the wavenumber.
      */
-    BlochModes
+    WavenumberModes
     bloch_modes(const periodic::PeriodicCell &cell, unsigned int k, const ModeSearch &search);
 
     /**
@@ -113,7 +93,7 @@ namespace greentread
      * and M share one pattern; @p k seeds the start blocks and is stored as
      * the wavenumber, @p which names the problem in errors.
      */
-    BlochModes
+    WavenumberModes
     hermitian_modes(periodic::SparseComplex K,
                     periodic::SparseComplex C,
                     periodic::SparseComplex M,

@@ -51,7 +51,7 @@ namespace greentread
      * @brief The modes of harmonic @p n of @p section below @p cutoff
      * [rad/s]: frequencies, damping ratios, the damping in the modal basis
      * and the M-normalised shapes over the section's unknowns (real, held
-     * as complex for BlochModes).
+     * as complex for WavenumberModes).
      *
      * Spectra's Lanczos (SymEigsSolver) on the shift-invert operator in
      * standard form, B^T (K_n - s M)^{-1} B with M = B B^T (no products with
@@ -63,7 +63,7 @@ namespace greentread
      * @throws NumericalError naming the harmonic if a factorisation or a
      *         search fails, or a slice's count is not met.
      */
-    BlochModes
+    WavenumberModes
     harmonic_modes(const fe::HarmonicSection &section,
                    unsigned int               n,
                    double                     cutoff,

@@ -108,7 +108,7 @@ namespace greentread
      * falls back to the diagonal form for the whole wavenumber.
      */
     PointModes
-    coupled_point_modes(const BlochModes             &modes,
+    coupled_point_modes(const WavenumberModes        &modes,
                         const periodic::PeriodicCell &cell,
                         const periodic::ContactPatch &patch,
                         bool                          couple);
@@ -122,7 +122,7 @@ namespace greentread
      * ring (synthesis/harmonic_modes.h), 1 for n = 0 and 2 otherwise.
      */
     PointModes
-    coupled_point_modes(const BlochModes       &modes,
+    coupled_point_modes(const WavenumberModes  &modes,
                         const Eigen::MatrixXcd &a,
                         double                  N,
                         bool                    real,
@@ -135,7 +135,7 @@ namespace greentread
 
     /// One wavenumber's (or harmonic's) modes and their ring modes at the
     /// points.
-    using WavenumberModes = std::function<std::pair<BlochModes, PointModes>(unsigned int k)>;
+    using ModesOfWavenumber = std::function<std::pair<WavenumberModes, PointModes>(unsigned int k)>;
 
     /**
      * @brief The machinery of ring_modes() for any source of modes:
@@ -146,13 +146,13 @@ namespace greentread
      * @throws NumericalError on every rank if any fails.
      */
     RingModes
-    gather_ring_modes(unsigned int           n_k,
-                      unsigned int           P,
-                      const WavenumberModes &modes_of,
-                      const std::string     &what,
-                      MPI_Comm               comm,
-                      bool                   show_progress,
-                      bool                   couple_damping);
+    gather_ring_modes(unsigned int             n_k,
+                      unsigned int             P,
+                      const ModesOfWavenumber &modes_of,
+                      const std::string       &what,
+                      MPI_Comm                 comm,
+                      bool                     show_progress,
+                      bool                     couple_damping);
 
     /**
      * @brief The real ring modes that one Bloch wavenumber's @p modes give
@@ -160,7 +160,7 @@ namespace greentread
      * a cos and a sin one otherwise. Returns [mode][point].
      */
     Eigen::MatrixXd
-    point_shapes(const BlochModes             &modes,
+    point_shapes(const WavenumberModes        &modes,
                  const periodic::PeriodicCell &cell,
                  const periodic::ContactPatch &patch);
   } // namespace synthesis
