@@ -1,4 +1,5 @@
 #include <greentread/scenes/global_parameters.h>
+#include <greentread/scenes/scene.h>
 #include <greentread/scenes/scene_input.h>
 
 #include <iostream>
@@ -10,20 +11,19 @@ namespace greentread
     void
     GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Scene", "tyre-road-contact",
-                        dealii::Patterns::Selection(
-                          "sdof|identify|geometry-study|tyre-cell|tyre-green|tyre-road-contact|"
-                          "tire-cell|tire-green|tire-road-contact"),
-                        "What to compute. 'sdof': the 1-DoF oscillator rolling over a "
-                        "sinusoidal road (paper, Section 3), with its exact solution. "
-                        "'identify': modal identification (LSCE, Appendix A) of FRFs. "
-                        "'geometry-study': the tyre section and cell, masses and inflation. "
-                        "'tyre-cell': the same and the cell matrices K, M, C, Kp. "
-                        "'tyre-green': the Green's functions of the inflated ring at the "
-                        "contact points (Section 4.2), over the MPI ranks. "
-                        "'tyre-road-contact': the whole pipeline, geometry to the contact "
-                        "stresses and their spectra on road textures (Section 5). The "
-                        "spellings 'tire-cell', 'tire-green' and 'tire-road-contact' are "
+      // The scenes from the registry, and the deprecated spellings
+      // 'tire-...' of the 'tyre-...' ones.
+      std::string pattern, documentation = "What to compute.", deprecated;
+      for (const auto &entry : scene_registry())
+        {
+          pattern += (pattern.empty() ? "" : "|") + entry.name;
+          documentation += " '" + entry.name + "': " + entry.description + ".";
+          if (entry.name.rfind("tyre-", 0) == 0)
+            deprecated += "|tire-" + entry.name.substr(5);
+        }
+      prm.declare_entry(
+        "Scene", "tyre-road-contact", dealii::Patterns::Selection(pattern + deprecated),
+        documentation + " The spellings 'tire-cell', 'tire-green' and 'tire-road-contact' are "
                         "deprecated: still read, with a warning, in this release.");
       prm.declare_entry("Output directory", "output", dealii::Patterns::DirectoryName(),
                         "Directory for every output file; created if missing. Relative "
@@ -37,6 +37,17 @@ namespace greentread
                         "Print run times, and the progress of long loops, on screen. "
                         "Regression tests switch this off so that their output is "
                         "reproducible.");
+    }
+
+
+
+    std::string
+    GlobalParameters::scene_names()
+    {
+      std::string names;
+      for (const auto &entry : scene_registry())
+        names += (names.empty() ? "" : ", ") + entry.name;
+      return names;
     }
 
 

@@ -50,38 +50,80 @@ namespace greentread
 
 
 
+    namespace
+    {
+      template <class SceneClass>
+      std::unique_ptr<Scene>
+      make(dealii::ParameterHandler &prm, const GlobalParameters &global)
+      {
+        return std::make_unique<SceneClass>(prm, global);
+      }
+    } // namespace
+
+
+
+    const std::vector<SceneEntry> &
+    scene_registry()
+    {
+      static const std::vector<std::string> tyre_cell = {"Geometry", "Materials", "Inflation"};
+      static const std::vector<SceneEntry>  registry  = {
+          {"sdof",
+           "the 1-DoF oscillator rolling over a sinusoidal road (paper, Section 3), with its "
+             "exact solution",
+           {"Oscillator", "Road", "Contact", "Time stepping", "Convolution/Method",
+            "Convolution/Truncation threshold", "Identification"},
+           false,
+           make<SdofScene>},
+          {"identify",
+           "modal identification (LSCE, Appendix A) of FRFs",
+           {"Identification"},
+           false,
+           make<IdentifyScene>},
+          {"geometry-study", "the tyre section and cell, masses and inflation", tyre_cell, false,
+           make<TyreCellScene>},
+          {"tyre-cell", "the same and the cell matrices K, M, C, Kp", tyre_cell, false,
+           make<TyreCellScene>},
+          {"tyre-green",
+           "the Green's functions of the inflated ring at the contact points (Section 4.2), "
+             "over the MPI ranks",
+           {"Geometry", "Materials", "Inflation", "Green's functions"},
+           true,
+           make<GreenScene>},
+          {"tyre-road-contact",
+           "the whole pipeline, geometry to the contact stresses and their spectra on road "
+             "textures (Section 5)",
+           {"Geometry", "Materials", "Inflation", "Green's functions", "Identification",
+            "Patch model", "Road texture", "Road/Sinusoid", "Rolling", "Contact grid",
+            "Time stepping/Time step", "Convolution/Method", "Convolution/Shape precision", "Spectra",
+            "Error bars"},
+           false,
+           make<TyreRoadContactScene>}};
+      return registry;
+    }
+
+
+
+    namespace
+    {
+      const SceneEntry &
+      entry_of(const std::string &scene)
+      {
+        for (const auto &entry : scene_registry())
+          if (entry.name == scene)
+            return entry;
+        // The 'Scene' parameter's pattern, made from the registry, has
+        // refused any other name already.
+        throw InputError("parameter 'Scene' = " + scene +
+                         "; allowed: " + GlobalParameters::scene_names());
+      }
+    } // namespace
+
+
+
     std::vector<std::string>
     subsections_read(const std::string &scene)
     {
-      if (scene == "sdof")
-        return {"Oscillator",
-                "Road",
-                "Contact",
-                "Time stepping",
-                "Convolution/Method",
-                "Convolution/Truncation threshold",
-                "Identification"};
-      if (scene == "identify")
-        return {"Identification"};
-      if (scene == "geometry-study" || scene == "tyre-cell")
-        return {"Geometry", "Materials", "Inflation"};
-      if (scene == "tyre-green")
-        return {"Geometry", "Materials", "Inflation", "Green's functions"};
-      return {"Geometry",
-              "Materials",
-              "Inflation",
-              "Green's functions",
-              "Identification",
-              "Patch model",
-              "Road texture",
-              "Road/Sinusoid",
-              "Rolling",
-              "Contact grid",
-              "Time stepping/Time step",
-              "Convolution/Method",
-              "Convolution/Shape precision",
-              "Spectra",
-              "Error bars"};
+      return entry_of(scene).reads;
     }
 
 
@@ -135,22 +177,19 @@ namespace greentread
       global.parse_parameters(prm);
       check_subsections(prm, global.scene);
       resolve_input_files(prm, scene_file, subsections_read(global.scene));
-      // Only the Green's functions are spread over MPI ranks.
+      const SceneEntry  &entry   = entry_of(global.scene);
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      if (n_ranks > 1 && global.scene != "tyre-green")
-        throw InputError("scene '" + global.scene + "' runs on one process, and this run has " +
-                         std::to_string(n_ranks) +
-                         " MPI ranks: run it without mpirun (only 'tyre-green' uses MPI)");
-      if (global.scene == "tyre-green")
-        return std::make_unique<GreenScene>(prm, global);
-      // The Selection pattern has rejected any other name.
-      if (global.scene == "tyre-road-contact")
-        return std::make_unique<TyreRoadContactScene>(prm, global);
-      if (global.scene == "identify")
-        return std::make_unique<IdentifyScene>(prm, global);
-      if (global.scene == "geometry-study" || global.scene == "tyre-cell")
-        return std::make_unique<TyreCellScene>(prm, global);
-      return std::make_unique<SdofScene>(prm, global);
+      if (n_ranks > 1 && !entry.mpi)
+        {
+          std::string mpi_scenes;
+          for (const auto &e : scene_registry())
+            if (e.mpi)
+              mpi_scenes += (mpi_scenes.empty() ? "'" : ", '") + e.name + "'";
+          throw InputError("scene '" + global.scene + "' runs on one process, and this run has " +
+                           std::to_string(n_ranks) + " MPI ranks: run it without mpirun (only " +
+                           mpi_scenes + " uses MPI)");
+        }
+      return entry.create(prm, global);
     }
   } // namespace scenes
 } // namespace greentread

@@ -27,6 +27,10 @@ namespace greentread
       bool        print_timings    = true;
       bool        reuse            = true;
 
+      /// The scenes' names, from scene_registry(), as a list for messages.
+      static std::string
+      scene_names();
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,32 @@ namespace greentread
       virtual void
       run() = 0;
     };
+
+    /**
+     * @brief A scene the program knows: the one place a scene is registered.
+     * The 'Scene' parameter's allowed values and documentation, the
+     * subsections each scene reads and create_scene() all come from
+     * scene_registry().
+     */
+    struct SceneEntry
+    {
+      /// Its value of 'Scene'.
+      std::string name;
+      /// What it computes, for the documentation of 'Scene'.
+      std::string description;
+      /// The subsections it reads, in the order of its stages, and the
+      /// single entries ("Section/Name") it reads from subsections it
+      /// shares with others.
+      std::vector<std::string> reads;
+      /// Whether it may run on more than one MPI rank.
+      bool mpi = false;
+      std::function<std::unique_ptr<Scene>(dealii::ParameterHandler &, const GlobalParameters &)>
+        create;
+    };
+
+    /// Every scene, in the order the documentation lists them.
+    const std::vector<SceneEntry> &
+    scene_registry();
 
     /**
      * @brief Declare the top-level parameters and every stage's subsection.
