@@ -9,6 +9,7 @@
 #include <greentread/base/blas_kernels.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
+#include <greentread/base/revision.h>
 #include <greentread/config.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/scene_input.h>
@@ -73,8 +74,9 @@ main(int argc, char **argv)
             }
           else if (arg == "--version")
             {
-              std::cout << "greentread " << GREENTREAD_VERSION << " (" << GREENTREAD_GIT_REVISION
-                        << ", " << GREENTREAD_BUILD_TYPE << ")\n"
+              std::cout << "greentread " << GREENTREAD_VERSION << " ("
+                        << greentread::base::git_revision() << ", " << GREENTREAD_BUILD_TYPE
+                        << ")\n"
                         << "deal.II " << DEAL_II_PACKAGE_VERSION << ", Eigen "
                         << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.'
                         << EIGEN_MINOR_VERSION << ", Boost " << BOOST_VERSION / 100000 << '.'

@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
+#include <greentread/base/revision.h>
 #include <greentread/config.h>
 
 #include <unistd.h>
@@ -19,8 +20,8 @@ namespace greentread
                           const std::vector<std::string> &prefixes)
     {
       ParameterRecord record;
-      record.header = std::string("greentread ") + GREENTREAD_VERSION + " (" +
-                      GREENTREAD_GIT_REVISION + "), scene " + scene;
+      record.header = std::string("greentread ") + GREENTREAD_VERSION + " (" + git_revision() +
+                      "), scene " + scene;
       for (const auto &e : list_parameters(prm))
         {
           bool used = prefixes.empty();
