@@ -22,7 +22,7 @@ program=${2:-build/greentread}
 shift $(( $# < 2 ? $# : 2 ))
 grids=("$@")
 (( ${#grids[@]} > 0 )) || grids=(4 8)
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_solvers.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

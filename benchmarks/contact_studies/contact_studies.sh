@@ -16,7 +16,7 @@ set -euo pipefail
 
 saved=${1:-output}
 program=${2:-build/greentread}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_studies.sh
 
 work=$(mktemp -d)

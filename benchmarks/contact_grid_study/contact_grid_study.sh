@@ -26,7 +26,7 @@ shift $(( $# < 3 ? $# : 3 ))
 grids=("$@")
 (( ${#grids[@]} > 0 )) || grids=(1 2 4 8 12 16)
 solver=${SOLVER:-projected CG}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_grid_study.sh
 if [[ -n "$keep" ]]; then
   work=$keep

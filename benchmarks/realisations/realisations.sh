@@ -20,7 +20,7 @@ road=${3:-road-A}
 speed=${4:-90}
 n=${5:-10}
 distance=${6:-2}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages realisations.sh
 (( n >= 3 )) || { echo "realisations.sh: N = $n; allowed: 3 or more realisations" >&2; exit 1; }
 

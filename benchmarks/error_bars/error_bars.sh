@@ -45,7 +45,7 @@ saved=${1:-output}
 program=${2:-build/greentread}
 cases=${3:-default texture-file load}
 discretisations=${4:-time_step contact_grid}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages error_bars.sh
 # needs_stages DISCRETISATION DIR VARIABLE: refuse a refined level without its stages.
 needs_stages() {

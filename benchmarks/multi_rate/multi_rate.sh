@@ -20,7 +20,7 @@ saved=${1:-output}
 program=${2:-build/greentread}
 speed=${3:-90}
 roads=${4:-road-A road-B}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages multi_rate.sh
 
 work=$(mktemp -d)
