@@ -11,7 +11,7 @@
 # The candidate set runs twice: at the default 'Contact grid/Tolerance'
 # (1e-6) and at 1e-10, the tolerance before it.
 #
-#   bash benchmarks/contact_solvers.sh [main job's output] [program] [subdivisions...]
+#   bash benchmarks/contact_solvers/contact_solvers.sh [main job's output] [program] [subdivisions...]
 #
 # defaults: output/, build/greentread, subdivisions 4 8. About 8 minutes on
 # this 2-core machine (pivoting at 7680 points is most of it).
