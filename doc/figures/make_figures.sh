@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Remakes the figures of README.md and doc/ from the runs that make them.
+# Remakes the figures of README.md, doc/ and benchmarks/ from the runs that make them.
 #
 #   bash doc/figures/make_figures.sh [BUILD_DIR] [MAIN_JOB_OUTPUT]
 #
@@ -8,6 +8,7 @@
 # writes output/); without it the main job is run here (about 13 minutes on 2 cores).
 # QUICK=1 keeps green_functions.png instead of running the tyre-green scene
 # (its 257 lines take 5 to 12 minutes).
+# The benchmarks' figures are kept in their folders, benchmarks/<name>/.
 # converged_ring_road-A_90kmh.png comes from the converged_ring benchmark's
 # output (build/benchmark-output/converged_ring, about 70 minutes to make); it is
 # copied when that output exists and kept as it is otherwise.
@@ -23,6 +24,8 @@ cd "$top"
 
 # figure <file in doc/figures> <file written by the run>
 figure() { cp "$2" "$figures/$1"; echo "doc/figures/$1 <- $2"; }
+# benchmark_figure <benchmark> <file in benchmarks/<benchmark>> <file written by the run>
+benchmark_figure() { cp "$3" "$top/benchmarks/$1/$2"; echo "benchmarks/$1/$2 <- $3"; }
 
 # The 1-DoF scene (Section 3) and its time step study.
 "$program" prm/sdof_kinematic.prm --set "Output directory=$tmp/sdof_kinematic" > /dev/null
@@ -30,7 +33,7 @@ figure sdof_kinematic.png "$tmp/sdof_kinematic/time_history.png"
 "$program" prm/sdof_penalty_1e8.prm --set "Output directory=$tmp/sdof_penalty_1e8" > /dev/null
 figure sdof_penalty_1e8.png "$tmp/sdof_penalty_1e8/time_history.png"
 "$build/benchmarks/sdof_convergence" --output "$tmp/sdof_convergence" > /dev/null
-figure sdof_convergence.png "$tmp/sdof_convergence/sdof_convergence.png"
+benchmark_figure sdof_convergence sdof_convergence.png "$tmp/sdof_convergence/sdof_convergence.png"
 
 # LSCE identification of the shipped FRF (Appendix A, Figure A.10).
 "$program" prm/identify.prm --set "Output directory=$tmp/identify" > /dev/null
@@ -56,7 +59,7 @@ figure history_road-A_90kmh.png "$main_out/history_road-A_90kmh.png"
 
 converged="$build/benchmark-output/converged_ring/converged_ring_road-A_90kmh.png"
 if [[ -f "$converged" ]]; then
-  figure converged_ring_road-A_90kmh.png "$converged"
+  benchmark_figure converged_ring converged_ring_road-A_90kmh.png "$converged"
 else
-  echo "doc/figures/converged_ring_road-A_90kmh.png kept: run build/benchmarks/converged_ring first"
+  echo "benchmarks/converged_ring/converged_ring_road-A_90kmh.png kept: run build/benchmarks/converged_ring first"
 fi

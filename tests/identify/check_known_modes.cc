@@ -1,11 +1,11 @@
 // The identify scene's poles against the known modes of the FRF it was given:
 // prm/example_frf.csv is the driving point g_00 of the synthetic tyre-like
-// matrix (benchmarks/synthetic_green.h), whose modes are known exactly. For
-// every known mode below 3.6 kHz (the band's edge rings at 4 kHz) that
-// carries at least 1% of the FRF (the L1 norm of its own response over the
-// band against the FRF's, as benchmarks/identification.cc counts it), the
-// nearest identified pole in the scene's modal_parameters.csv, relative to
-// |lambda|.
+// matrix (benchmarks/common/synthetic_green.h), whose modes are known
+// exactly. For every known mode below 3.6 kHz (the band's edge rings at 4 kHz)
+// that carries at least 1% of the FRF (the L1 norm of its own response over
+// the band against the FRF's, as benchmarks/identification/identification.cc
+// counts it), the nearest identified pole in the scene's modal_parameters.csv,
+// relative to |lambda|.
 //
 //   check_known_modes MODAL_PARAMETERS_CSV BOUND
 //
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "../../benchmarks/synthetic_green.h"
+#include "../../benchmarks/common/synthetic_green.h"
 
 int
 main(int argc, char **argv)

@@ -50,7 +50,7 @@ BOOST_AUTO_TEST_CASE(kinematic_converges_for_every_step_from_1us_to_1ms)
   // reports 2.00; a rule that fell to first order would fail here). Where an
   // event falls inside its step makes the error of one dt jump by a factor of
   // 100 (an impact on the fallback branch), so the error at dt is the worst
-  // of dt, 1.1 dt and 1.21 dt, as in benchmarks/sdof_convergence.cc.
+  // of dt, 1.1 dt and 1.21 dt, as in benchmarks/sdof_convergence/sdof_convergence.cc.
   std::vector<double> dts = {1e-3, 3.7e-4, 1.37e-4, 3.7e-5, 1.37e-5, 3.7e-6, 1e-6};
   std::vector<double> errors, penetrations;
   for (const double dt : dts)

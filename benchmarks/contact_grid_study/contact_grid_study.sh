@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The contact grid's convergence study (doc/benchmarks.md, contact_grid_study.sh):
+# The contact grid's convergence study (benchmarks/contact_grid_study/README.md):
 # road-A and road-B at 90 km/h over 1.2 m on the main job's saved stages, the
 # Green's functions' 10 x 12 rectangles split into s x s contact rectangles
 # ('Contact grid/Subdivisions'), and the paper's sub-grid rule 'point' beside
@@ -9,13 +9,13 @@
 # the reporting cell) and of the total force against the next finer grid and
 # the finest; then both spectra band by band on the two finest grids.
 #
-#   bash benchmarks/contact_grid_study.sh [main job's output] [program] [runs directory] [subdivisions...]
+#   bash benchmarks/contact_grid_study/contact_grid_study.sh [main job's output] [program] [runs directory] [subdivisions...]
 #
 # defaults: output/, build/greentread, a temporary directory removed at the end,
 # and subdivisions 1 2 4 8 12 16. Every run uses the matrix-free solver
 # ('Contact grid/Solver' = projected CG; SOLVER=pivoting in the environment
 # for the dense one, up to s = 8), which gives the same levels as pivoting to
-# 2e-5 dB (doc/benchmarks.md). About 20 minutes on this 2-core machine (each run also
+# 2e-5 dB (benchmarks/contact_solvers/README.md). About 20 minutes on this 2-core machine (each run also
 # checks the reused modal model against the Green's functions, about 40 s).
 set -euo pipefail
 
@@ -26,7 +26,7 @@ shift $(( $# < 3 ? $# : 3 ))
 grids=("$@")
 (( ${#grids[@]} > 0 )) || grids=(1 2 4 8 12 16)
 solver=${SOLVER:-projected CG}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_grid_study.sh
 if [[ -n "$keep" ]]; then
   work=$keep

@@ -11,7 +11,7 @@
 # The candidate set runs twice: at the default 'Contact grid/Tolerance'
 # (1e-6) and at 1e-10, the tolerance before it.
 #
-#   bash benchmarks/contact_solvers.sh [main job's output] [program] [subdivisions...]
+#   bash benchmarks/contact_solvers/contact_solvers.sh [main job's output] [program] [subdivisions...]
 #
 # defaults: output/, build/greentread, subdivisions 4 8. About 8 minutes on
 # this 2-core machine (pivoting at 7680 points is most of it).
@@ -22,7 +22,7 @@ program=${2:-build/greentread}
 shift $(( $# < 2 ? $# : 2 ))
 grids=("$@")
 (( ${#grids[@]} > 0 )) || grids=(4 8)
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_solvers.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

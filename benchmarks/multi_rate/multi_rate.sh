@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Multi-rate estimation against brute force, on the main job's saved stages
-# (doc/benchmarks.md, multi_rate.sh). For each road at 90 km/h, the main
+# (benchmarks/multi_rate/README.md). For each road at 90 km/h, the main
 # job's multi-rate estimate (the bands up to 'Spectra/Low bands up to' from a
 # long run at 'Low-band time step', the bands above from the
 # 2 m run at the step) against one run at the step over the low-rate run's
@@ -10,7 +10,7 @@
 # agree within two combined standard errors, and the contact stage's cost of
 # each estimate.
 #
-#   bash benchmarks/multi_rate.sh [output directory of the main job] [program] [speed km/h] [roads]
+#   bash benchmarks/multi_rate/multi_rate.sh [output directory of the main job] [program] [speed km/h] [roads]
 #
 # defaults: output/, build/greentread, 90, "road-A road-B". About 12 minutes
 # on this 2-core machine (the brute-force runs are the longest).
@@ -20,7 +20,7 @@ saved=${1:-output}
 program=${2:-build/greentread}
 speed=${3:-90}
 roads=${4:-road-A road-B}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages multi_rate.sh
 
 work=$(mktemp -d)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The discretisation error bars against the truth, on the main job's saved
-# stages (doc/benchmarks.md, error_bars.sh). For each case, one run with the
+# stages (benchmarks/error_bars/README.md). For each case, one run with the
 # error bars (analysis/error_bars.h: one other level per discretisation, the
 # step halved and the subdivisions halved, the difference scaled by the
 # order) against runs refined further in each discretisation on the same
@@ -15,7 +15,7 @@
 # bands the estimates cover), the bands within a factor 2, and the ratio of
 # the rms over the bands (a single band's difference can pass through zero).
 #
-#   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] [COARSER_CUTOFF=DIR] bash benchmarks/error_bars.sh \
+#   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] [COARSER_CUTOFF=DIR] bash benchmarks/error_bars/error_bars.sh \
 #     [output directory of the main job] [program] [cases] [discretisations]
 #
 # cases: any of "default texture-file load" (default: all three):
@@ -28,7 +28,7 @@
 #   mode_cutoff needs FINER_CUTOFF: the output directory of a run of the
 #   program with 'Patch model/Mode cutoff' = 10000 on a copy of the main
 #   job's green_functions.h5 ('Error bars/Estimates' empty and one short
-#   run, as doc/benchmarks.md gives it: about 5 minutes). With
+#   run, as benchmarks/error_bars/README.md gives it: about 5 minutes). With
 #   COARSER_CUTOFF, the same with 'Mode cutoff' = 6000, each case also rolls
 #   at 6 kHz with its own estimate (from 4.5 kHz), and the script prints how
 #   the levels converge over 4.5, 6, 8 and 10 kHz, and the estimate a
@@ -45,7 +45,7 @@ saved=${1:-output}
 program=${2:-build/greentread}
 cases=${3:-default texture-file load}
 discretisations=${4:-time_step contact_grid}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages error_bars.sh
 # needs_stages DISCRETISATION DIR VARIABLE: refuse a refined level without its stages.
 needs_stages() {

@@ -19,9 +19,10 @@ main(int argc, char **argv)
   const std::string                        file = argc > 1 ? argv[1] : "prm/example_frf.csv";
   const benchmark::SyntheticGreen          green;
   greentread::base::ParameterRecord        record;
-  record.header = "synthetic tyre-like Green's function g_00 (benchmarks/synthetic_green.h): " +
-                  std::to_string(green.frequency.size()) +
-                  " modes from 80 Hz, 1-3% damping; 1001 lines, df = 4 Hz";
+  record.header =
+    "synthetic tyre-like Green's function g_00 (benchmarks/common/synthetic_green.h): " +
+    std::to_string(green.frequency.size()) +
+    " modes from 80 Hz, 1-3% damping; 1001 lines, df = 4 Hz";
   greentread::base::write_frf_csv(file, green.frf(0, 0, 4., 1001), record);
   std::cout << "wrote " << file << "\n";
   return 0;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The standard errors against the spread over independent realisations of a
-# road, on the main job's saved stages (doc/benchmarks.md, realisations.sh).
+# road, on the main job's saved stages (benchmarks/realisations/README.md).
 # One road at one speed rolled on N realisations ('Road texture/Seed' = 1 to
 # N: the same texture spectrum, independent textures, each from its own
 # static start), one rate over 'Rolling/Distance', no error bars. Per band:
@@ -8,7 +8,7 @@
 # standard errors the N records predict for themselves, for the stress and
 # the force; the error bars should hold the spread within a factor 1.5.
 #
-#   bash benchmarks/realisations.sh [output directory of the main job] [program] [road] [speed] [N] [distance]
+#   bash benchmarks/realisations/realisations.sh [output directory of the main job] [program] [road] [speed] [N] [distance]
 #
 # defaults: output/, build/greentread, road-A, 90, 10, 2. About 10 minutes
 # on this 2-core machine (two runs at a time).
@@ -20,7 +20,7 @@ road=${3:-road-A}
 speed=${4:-90}
 n=${5:-10}
 distance=${6:-2}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages realisations.sh
 (( n >= 3 )) || { echo "realisations.sh: N = $n; allowed: 3 or more realisations" >&2; exit 1; }
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The contact scene's time-step study and its stiff and extreme cases, on the
-# main job's saved stages (doc/benchmarks.md, contact_studies.sh: the tables "Time step"
+# main job's saved stages (benchmarks/contact_studies/README.md: the tables "Time step"
 # and "Stiff and extreme cases"). Each run reuses green_functions.h5 and the
 # patch model from a copy of the main job's output directory, so only the
 # rolling is timed.
 #
-#   bash benchmarks/contact_studies.sh [output directory of the main job] [program]
+#   bash benchmarks/contact_studies/contact_studies.sh [output directory of the main job] [program]
 #
 # defaults: output/ and build/greentread. The runs go to a temporary directory,
 # removed at the end. About 27 minutes on this 2-core machine with the default
@@ -16,7 +16,7 @@ set -euo pipefail
 
 saved=${1:-output}
 program=${2:-build/greentread}
-source "$(dirname "${BASH_SOURCE[0]}")/saved_stages.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 check_saved_stages contact_studies.sh
 
 work=$(mktemp -d)
