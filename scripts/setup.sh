@@ -2,6 +2,7 @@
 # Set up GreenTread on a Debian 12 machine and either run the default scene
 # or the whole test suite.
 #
+#   bash scripts/setup.sh first  # install, build the program, run the 1-DoF scene (seconds)
 #   bash scripts/setup.sh run    # install, build, run the built-in default scene
 #   bash scripts/setup.sh test   # install, build, run every test through ctest
 #   bash scripts/setup.sh build  # install and build only
@@ -11,8 +12,9 @@ set -euo pipefail
 
 mode="${1:-run}"
 case "$mode" in
-  run|test|build) ;;
-  *) echo "usage: bash scripts/setup.sh run|test|build" >&2; exit 2 ;;
+  first|run|test|build) ;;
+  *) echo "setup.sh: mode '$mode' is not one of first, run, test, build" >&2
+     echo "usage: bash scripts/setup.sh first|run|test|build" >&2; exit 2 ;;
 esac
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -59,14 +61,22 @@ echo "== configuring in $build_dir (Release)"
 mkdir -p "$build_dir"
 cmake -S "$top" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$build_dir/configure.log" 2>&1 || {
   cat "$build_dir/configure.log"; exit 1; }
-# The main job needs the program only; the tests need everything.
+# The scenes need the program, and the worked example of
+# doc/getting-started.md the tool that writes its road; the tests need
+# everything.
 echo "== building with $jobs jobs"
 case "$mode" in
-  run) cmake --build "$build_dir" -j "$jobs" --target greentread ;;
-  *)   cmake --build "$build_dir" -j "$jobs" ;;
+  first|run) cmake --build "$build_dir" -j "$jobs" --target greentread make_example_road ;;
+  *)         cmake --build "$build_dir" -j "$jobs" ;;
 esac
 
 case "$mode" in
+  first)
+    echo "== running the 1-DoF scene (the paper's Section 3), writing to output/sdof_kinematic/"
+    cd "$top"
+    "$build_dir/greentread" prm/sdof_kinematic.prm --set "Output directory=output/sdof_kinematic"
+    echo "== next: bash scripts/setup.sh run (the main job), or see doc/getting-started.md"
+    ;;
   run)
     echo "== running the built-in default scene, the main job (tyre on road-A and road-B, 50-90 km/h)"
     echo "   (the same as greentread prm/tyre_road_contact.prm, writing to output/)"
