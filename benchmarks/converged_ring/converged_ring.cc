@@ -36,6 +36,8 @@
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/plot.h>
+#include <greentread/base/revision.h>
+#include <greentread/config.h>
 #include <greentread/scenes/scene.h>
 
 #include <algorithm>
@@ -373,7 +375,10 @@ main(int argc, char **argv)
               q(a, "force_") + " skip 2 using 1:6 with linespoints lw 2 title 'force, " +
               rings[0].title + "', " + q(b, "force_") +
               " skip 2 using 1:6 with linespoints lw 2 title 'force, " + rings[1].title + "'\n",
-            base::ParameterRecord{"converged_ring", {}});
+            base::ParameterRecord{std::string("greentread ") + GREENTREAD_VERSION + " (" +
+                                    base::git_revision() + "), benchmark converged_ring" +
+                                    (options.quick ? " (--quick)" : ""),
+                                  {}});
         }
       std::printf("\nSpectra: largest difference in the bands within 20 dB of the highest, "
                   "100 Hz to 5 kHz, over every run: %.2f dB (the test: within 1 dB): %s\n",

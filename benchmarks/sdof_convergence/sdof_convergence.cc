@@ -12,6 +12,8 @@
 
 #include <greentread/base/exceptions.h>
 #include <greentread/base/plot.h>
+#include <greentread/base/revision.h>
+#include <greentread/config.h>
 #include <greentread/sdof/sdof_solver.h>
 
 #include <algorithm>
@@ -202,7 +204,9 @@ main(int argc, char **argv)
                 "' ? $3 : NaN) " + styles[c] + " title '" + configurations[c].label + "'";
   commands += ", 1e-3*x*x/1e-6 with lines dt 3 lc rgb 'gray' title 'slope 2'\n";
   base::ParameterRecord record;
-  record.header = "sdof_convergence benchmark (Table A.1 oscillator, 0.2 s)";
+  record.header = std::string("greentread ") + GREENTREAD_VERSION + " (" + base::git_revision() +
+                  "), benchmark sdof_convergence (Table A.1 oscillator, 0.2 s" +
+                  (options.quick ? ", --quick)" : ")");
   base::plot_png(options.output / "sdof_convergence.png", commands, record);
   std::printf("Wrote %s and sdof_convergence.png\n",
               (options.output / "sdof_convergence.csv").c_str());
