@@ -55,6 +55,19 @@ namespace greentread
         }
       };
 
+      /// @p level with another patch model (and static compliance).
+      analysis::RunLevel
+      with_model(const analysis::RunLevel &level,
+                 const modal::PatchModel  &model,
+                 const Eigen::MatrixXd    *G0 = nullptr)
+      {
+        analysis::RunLevel other = level;
+        other.model              = &model;
+        if (G0 != nullptr)
+          other.G0 = G0;
+        return other;
+      }
+
       /// Pointers to @p roads, for a RunLevel.
       std::vector<const road::PatchRoad *>
       pointers(const std::vector<std::unique_ptr<road::PatchRoad>> &roads)
@@ -186,14 +199,10 @@ namespace greentread
         contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                  unsigned(model.points.size())),
         contact_grid.candidate_set(), contact_grid.tolerance);
-      report_contact_grid(grid);
       const analysis::PatchLattice lattice(grid.points, h5.string());
       const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
       const Eigen::MatrixXd        G0    = synthesis::static_line(G);
-      std::cout << "  the model's static compliance differs from the structure's by "
-                << format_printf("%.2g", (model.static_compliance() - G0).cwiseAbs().maxCoeff() /
-                                           G0.cwiseAbs().maxCoeff())
-                << " (largest, relative)\n";
+      report_contact_setup(grid, model, G0);
 
       // The study: every road at every speed, and the error bars' levels.
       std::map<analysis::Discretisation, double> factors;
@@ -204,28 +213,50 @@ namespace greentread
       const analysis::Study study = analysis::plan_study(study_roads(grid), rolling, spectra,
                                                          error_bars, grid.subdivisions, factors);
 
-      // Stage road: what each level's runs roll on.
+      // Stage road, and what each level's runs roll on.
       const CoarserGrid                             coarser(model.points, grid, tread_layer(),
                                                             study.needs(analysis::Discretisation::contact_grid));
       std::vector<std::unique_ptr<road::PatchRoad>> fine_roads, coarser_roads;
       make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads);
-      analysis::RunLevels levels;
-      levels.fine = {&model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+      const analysis::RunLevel fine{&model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+      analysis::RunLevels      levels{fine, {}};
       if (coarser.grid)
         levels.other[analysis::Discretisation::contact_grid] = {
           &model,         coarser.grid.get(),    &G0,
           &coarser.tread, coarser.lattice.get(), pointers(coarser_roads)};
       if (coarser_model)
-        levels.other[analysis::Discretisation::mode_cutoff] = {
-          &coarser_model->model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+        levels.other[analysis::Discretisation::mode_cutoff] =
+          with_model(fine, coarser_model->model);
       if (section)
-        levels.other[analysis::Discretisation::ring_section] = {
-          &section->model, &grid, &section->G0, &tread, &lattice, pointers(fine_roads)};
+        levels.other[analysis::Discretisation::ring_section] =
+          with_model(fine, section->model, &section->G0);
 
-      // Stage contact: the runs are independent, so they go side by side,
-      // one per thread, each run's modal convolution on the threads left
-      // over (a run on one thread is memory- and FFT-bound: a second thread
-      // on its modal sums gained 10%).
+      // Stage contact: the runs, side by side (base::for_each_index()).
+      const std::vector<analysis::RunSpectrum> job_spectra =
+        roll_study(study, levels, directory, record);
+
+      // Stage analysis: each band from the run that gives it, with its error
+      // bars; the spectra per road (speeds) and per speed (roads).
+      analysis::write_spectra(
+        directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
+        roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
+      if (global.print_timings)
+        std::cout << "Total run time " << format_printf("%.3g", base::seconds_since(start))
+                  << " s\n";
+    }
+
+
+
+    std::vector<analysis::RunSpectrum>
+    TyreRoadContactScene::roll_study(const analysis::Study       &study,
+                                     const analysis::RunLevels   &levels,
+                                     const std::filesystem::path &directory,
+                                     const base::ParameterRecord &record) const
+    {
+      // The runs are independent, so they go side by side, one per thread,
+      // each run's modal convolution on the threads left over (a run on one
+      // thread is memory- and FFT-bound: a second thread on its modal sums
+      // gained 10%). Each run's spectrum goes in its place in the list.
       const std::size_t  n_runs  = study.jobs.size();
       const unsigned int threads = dealii::MultithreadInfo::n_threads();
       const unsigned int side_by_side =
@@ -242,15 +273,7 @@ namespace greentread
                           levels.of(study.level_of(k)), c.road, study.roads[c.road].name, c.speed_kmh, job.run,
                           settings, std::max(1u, threads / side_by_side), job.estimate < 0);
       });
-
-      // Stage analysis: each band from the run that gives it, with its error
-      // bars; the spectra per road (speeds) and per speed (roads).
-      analysis::write_spectra(
-        directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
-        roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
-      if (global.print_timings)
-        std::cout << "Total run time " << format_printf("%.3g", base::seconds_since(start))
-                  << " s\n";
+      return job_spectra;
     }
 
 
@@ -273,7 +296,9 @@ namespace greentread
 
 
     void
-    TyreRoadContactScene::report_contact_grid(const contact::ContactGrid &grid) const
+    TyreRoadContactScene::report_contact_setup(const contact::ContactGrid &grid,
+                                               const modal::PatchModel    &model,
+                                               const Eigen::MatrixXd      &G0) const
     {
       if (grid.subdivisions > 1)
         std::cout << "Contact grid: " << grid.nx << " x " << grid.ny << " = " << grid.n_points()
@@ -294,6 +319,10 @@ namespace greentread
                 << format_printf("%.3g", 1e3 * across)
                 << " mm cell ('Spectra/Reporting cell along', 'across'), nulls at V / "
                 << format_printf("%.3g", 1e3 * along) << " mm\n";
+      std::cout << "  the model's static compliance differs from the structure's by "
+                << format_printf("%.2g", (model.static_compliance() - G0).cwiseAbs().maxCoeff() /
+                                           G0.cwiseAbs().maxCoeff())
+                << " (largest, relative)\n";
     }
 
 

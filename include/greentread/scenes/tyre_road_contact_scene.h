@@ -118,9 +118,20 @@ namespace greentread
       double
       road_spacing(const std::string &road_name) const;
 
-      /// Prints the contact grid, its solver and the reporting cell.
+      /// Prints the contact grid, its solver, the reporting cell, and how far
+      /// @p model's static compliance is from the structure's @p G0.
       void
-      report_contact_grid(const contact::ContactGrid &grid) const;
+      report_contact_setup(const contact::ContactGrid &grid,
+                           const modal::PatchModel    &model,
+                           const Eigen::MatrixXd      &G0) const;
+
+      /// Stage contact: every job of @p study on its level of @p levels,
+      /// side by side on the threads; their spectra in the order of the jobs.
+      std::vector<analysis::RunSpectrum>
+      roll_study(const analysis::Study       &study,
+                 const analysis::RunLevels   &levels,
+                 const std::filesystem::path &directory,
+                 const base::ParameterRecord &record) const;
 
       /// The roads of the study, with how far their runs may roll on @p grid.
       std::vector<analysis::StudyRoad>
