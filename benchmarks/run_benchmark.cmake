@@ -25,7 +25,8 @@
 # Those columns of those rows are written to OUTPUT/key_numbers.csv, and with
 # REFERENCE compared with it by numdiff column by column (text columns
 # exactly). Spaces and commas inside a text field become '_' so that a field
-# is one column for numdiff.
+# is one column for numdiff. benchmarks/update_tables.sh writes the same file
+# as the table of the benchmark's README.
 
 cmake_minimum_required(VERSION 3.13) # lists keep their empty elements (empty CSV fields)
 if(NOT PROGRAM OR NOT OUTPUT)
