@@ -132,7 +132,8 @@ main(int argc, char **argv)
                     1e6 * m(centre, centre + 1),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * worst).c_str(),
                     &m == &reference ? "" : format_printf("%.1f%%", 100. * frob).c_str(), seconds);
-        csv << level << ',' << name << ',' << 1e6 * m(centre, centre) << ','
+        // The model's name has commas: quoted, as a CSV field must be.
+        csv << level << ",\"" << name << "\"," << 1e6 * m(centre, centre) << ','
             << 1e6 * m(centre, centre + grid.ny) << ',' << 1e6 * m(centre, centre + 1) << ','
             << worst << ',' << frob << '\n';
       };

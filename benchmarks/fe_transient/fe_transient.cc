@@ -111,7 +111,7 @@ main(int argc, char **argv)
                 for (std::size_t m = 0; m < e.size(); ++m)
                   {
                     std::printf(" %39.3e", e[m]);
-                    csv << "structure," << damping << ",pulse," << models[m].name << ','
+                    csv << "structure," << damping << ",pulse,\"" << models[m].name << "\","
                         << models[m].model.n_terms() << ',' << 1e6 * dt << ',' << took << ','
                         << e[m] << ",,,,,,\n";
                   }
@@ -186,7 +186,8 @@ main(int argc, char **argv)
                                     format_printf("  (%g failed steps)", run.failed_steps).c_str() :
                                     "");
                 std::fflush(stdout);
-                csv << "rolling,per-layer," << road << ',' << path << ',' << modes << ','
+                // The path's name has commas: quoted, as a CSV field must be.
+                csv << "rolling,per-layer," << road << ",\"" << path << "\"," << modes << ','
                     << 1e6 * dt << ',' << run.seconds << ',' << d.force << ',' << d.stress << ','
                     << d.force_band << ',' << d.stress_band << ',' << mean(run.force) << ','
                     << run.step_compliance << ',' << d.force_rms << '\n';
@@ -224,7 +225,7 @@ main(int argc, char **argv)
                               road.c_str(), d.force, d.stress, d.force_band, d.stress_band,
                               reference.step_compliance, run.step_compliance, d.force_rms);
                   std::fflush(stdout);
-                  csv << "rolling half dt,per-layer," << road << ',' << model.name << ','
+                  csv << "rolling half dt,per-layer," << road << ",\"" << model.name << "\","
                       << model.model.n_terms() << ',' << 1e6 * half << ',' << run.seconds << ','
                       << d.force << ',' << d.stress << ',' << d.force_band << ',' << d.stress_band
                       << ",," << run.step_compliance << ',' << d.force_rms << '\n';
@@ -302,8 +303,8 @@ main(int argc, char **argv)
                                     1e6 * step, name.c_str(), run.seconds, d.force, d.stress,
                                     d.force_band, d.stress_band, mean(run.force),
                                     run.step_compliance, moved_by.c_str(), d.force_rms);
-                        csv << "rolling surface mass inward," << damping << ',' << road << ','
-                            << name << ',' << (r == 0 ? 0u : moved_models[r - 1].model.n_terms())
+                        csv << "rolling surface mass inward," << damping << ',' << road << ",\""
+                            << name << "\"," << (r == 0 ? 0u : moved_models[r - 1].model.n_terms())
                             << ',' << 1e6 * step << ',' << run.seconds << ',' << d.force << ','
                             << d.stress << ',' << d.force_band << ',' << d.stress_band << ','
                             << mean(run.force) << ',' << run.step_compliance << ',' << d.force_rms

@@ -129,7 +129,8 @@ namespace
               std::printf(" | %9.4g um/N", 1e6 * std::abs(g));
               if (l + 1 < levels.size())
                 std::printf(" (%6.2f%%)", 100. * d);
-              csv << title << ',' << levels[l].mesh_size << ',' << levels[l].degree << ','
+              // The title has commas: quoted, as a CSV field must be.
+              csv << '"' << title << "\"," << levels[l].mesh_size << ',' << levels[l].degree << ','
                   << frequencies[f] << ',' << names[k] << ',' << g.real() << ',' << g.imag() << ','
                   << d << '\n';
             }
