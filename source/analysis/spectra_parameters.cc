@@ -45,7 +45,8 @@ namespace greentread
           "Low-band time step", "7.68e-05", base::RangePattern::closed(1e-7, 1e-3, "s"),
           "The low-rate run's time step (the scene's step if that is coarser: then no "
           "low-rate run). Its error in a band grows as (f dt)^2, whatever the speed: the "
-          "default, 76.8 us (5 road samples at 90 km/h), is the step benchmarks/multi_rate.sh "
+          "default, 76.8 us (5 road samples at 90 km/h), is the step "
+          "benchmarks/multi_rate/multi_rate.sh "
           "measured against the scene's step on the same road (doc/benchmarks.md).");
         prm.declare_entry("Longest distance", "50", base::RangePattern::closed(0.1, 200., "m"),
                           "The longest run: the low-rate run's planned record, and any run's "

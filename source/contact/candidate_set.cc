@@ -14,7 +14,7 @@ namespace greentread
       /// products cost |N|^2, the whole grid's FFT products about n log n.
       /// Chosen on the main job's 7680-point grid, where the crossover was
       /// near |N| = 510 (CHANGELOG.md); the runs of
-      /// benchmarks/contact_solvers.sh (doc/benchmarks.md) show both sides.
+      /// benchmarks/contact_solvers/contact_solvers.sh show both sides.
       constexpr double dense_limit = 34.;
     } // namespace
 

@@ -11,17 +11,16 @@ namespace greentread
     ContactGridParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact grid");
-      prm.declare_entry(
-        "Subdivisions", "8", dealii::Patterns::Integer(1, 32),
-        "Contact points per Green's-function rectangle along each direction: "
-        "s splits each rectangle ('Green's functions/Patch length' / 'Points "
-        "along' x 'Patch width' / 'Points across') into s x s contact "
-        "rectangles. The finite-element Green's functions carry the "
-        "compliance at the rectangles' scale, an elastic layer (the tread's "
-        "rubber and thickness on a rigid belt) what lies below it. 1: the "
-        "Green's functions' points (the paper's grid). The default 8 (0.75 x "
-        "0.83 mm on the default patch, 7680 points) comes from the "
-        "convergence study in doc/benchmarks.md (benchmarks/contact_grid_study.sh).");
+      prm.declare_entry("Subdivisions", "8", dealii::Patterns::Integer(1, 32),
+                        "Contact points per Green's-function rectangle along each direction: "
+                        "s splits each rectangle ('Green's functions/Patch length' / 'Points "
+                        "along' x 'Patch width' / 'Points across') into s x s contact "
+                        "rectangles. The finite-element Green's functions carry the "
+                        "compliance at the rectangles' scale, an elastic layer (the tread's "
+                        "rubber and thickness on a rigid belt) what lies below it. 1: the "
+                        "Green's functions' points (the paper's grid). The default 8 (0.75 x "
+                        "0.83 mm on the default patch, 7680 points) comes from the "
+                        "convergence study benchmarks/contact_grid_study (its README).");
       prm.declare_entry(
         "Solver", "auto",
         dealii::Patterns::Selection("auto|pivoting|projected CG|projected CG on the whole grid"),
