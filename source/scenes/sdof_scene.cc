@@ -5,6 +5,7 @@
 #include <greentread/sdof/exact_solution.h>
 #include <greentread/sdof/sdof_solver.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,65 @@ namespace greentread
 
 
 
+    namespace
+    {
+      /// What the scene rolls: the oscillator, the road, the time stepping.
+      void
+      print_setup(const sdof::Oscillator     &osc,
+                  const road::RoadParameters &road,
+                  const double                speed,
+                  const double                dt,
+                  const unsigned int          n_steps)
+      {
+        std::cout << "GreenTread: scene 'sdof', a 1-DoF oscillator on a sinusoidal road "
+                     "(Meftah et al. 2013, Section 3)\n"
+                  << "  oscillator: M = " << format_number(osc.mass())
+                  << " kg, K = " << format_number(osc.stiffness())
+                  << " N/m, xi = " << format_number(osc.damping_ratio())
+                  << ", f0 = " << format_printf("%.4g", osc.natural_frequency() / (2 * M_PI))
+                  << " Hz\n"
+                  << "  road: A0 = " << format_number(road.amplitude)
+                  << " m, lambda_r = " << format_number(road.wavelength)
+                  << " m, V0 = " << format_number(speed) << " m/s\n"
+                  << "  time: dt = " << format_number(dt) << " s, " << n_steps << " steps\n";
+      }
+
+      /// The largest |u - u'| between @p run and the same run with the
+      /// oscillator's exact modal form: the round trip through LSCE [m].
+      double
+      round_trip_error(const sdof::Oscillator                   &osc,
+                       const road::RoadTrack                    &track,
+                       const sdof::SdofRun                      &run,
+                       const convolution::ConvolutionParameters &convolution,
+                       const contact::ContactParameters         &contact,
+                       const double                              dt,
+                       const unsigned int                        n_steps)
+      {
+        auto       exact_conv = sdof::make_convolution(osc, convolution, dt, n_steps);
+        const auto reference  = sdof::solve(osc, track, *exact_conv, contact, false);
+        double     error      = 0.;
+        for (unsigned int n = 0; n <= n_steps; ++n)
+          error = std::max(error, std::abs(run.u[n] - reference.u[n]));
+        return error;
+      }
+
+      /// The kinematic rule's steps by branch, when it counted them.
+      void
+      print_branches(const sdof::SdofRun &run)
+      {
+        if (run.branches)
+          {
+            std::cout << "  contact steps by branch:";
+            for (unsigned int b = 1; b < run.branch_count.size(); ++b)
+              std::cout << ' ' << contact::to_string(static_cast<contact::KinematicBranch>(b))
+                        << ' ' << run.branch_count[b];
+            std::cout << '\n';
+          }
+      }
+    } // namespace
+
+
+
     void
     SdofScene::run()
     {
@@ -44,17 +104,7 @@ namespace greentread
       const double           dt      = contact.time_step;
       const unsigned int     n_steps = contact.n_steps();
 
-      std::cout << "GreenTread: scene 'sdof', a 1-DoF oscillator on a sinusoidal road "
-                   "(Meftah et al. 2013, Section 3)\n"
-                << "  oscillator: M = " << format_number(osc.mass())
-                << " kg, K = " << format_number(osc.stiffness())
-                << " N/m, xi = " << format_number(osc.damping_ratio())
-                << ", f0 = " << format_printf("%.4g", osc.natural_frequency() / (2 * M_PI))
-                << " Hz\n"
-                << "  road: A0 = " << format_number(road.amplitude)
-                << " m, lambda_r = " << format_number(road.wavelength)
-                << " m, V0 = " << format_number(oscillator.speed) << " m/s\n"
-                << "  time: dt = " << format_number(dt) << " s, " << n_steps << " steps\n";
+      print_setup(osc, road, oscillator.speed, dt, n_steps);
 
       // The round trip: the Green's function from LSCE of the oscillator's FRF.
       std::unique_ptr<sdof::IdentifiedGreen> identified;
@@ -79,17 +129,10 @@ namespace greentread
       std::cout << "  contact: " << contact.describe() << "; convolution: " << conv->name() << " ("
                 << size_name << " = " << conv->size() << ")\n";
 
-      const sdof::SdofRun run        = sdof::solve(osc, track, *conv, contact);
-      double              round_trip = NAN;
-      if (identified)
-        {
-          // The same run with the exact modal form, for the round trip.
-          auto       exact_conv = sdof::make_convolution(osc, convolution, dt, n_steps);
-          const auto reference  = sdof::solve(osc, track, *exact_conv, contact, false);
-          round_trip            = 0.;
-          for (unsigned int n = 0; n <= n_steps; ++n)
-            round_trip = std::max(round_trip, std::abs(run.u[n] - reference.u[n]));
-        }
+      const sdof::SdofRun run = sdof::solve(osc, track, *conv, contact);
+      // The same run with the exact modal form, for the round trip.
+      const double round_trip =
+        identified ? round_trip_error(osc, track, run, convolution, contact, dt, n_steps) : NAN;
 
       const auto                exact_start = std::chrono::steady_clock::now();
       const sdof::ExactSolution exact(osc, track, n_steps * dt);
@@ -118,14 +161,7 @@ namespace greentread
         std::cout << "  max |u - u(exact modal form)|  = "
                   << format_printf("%.4g", 1e9 * round_trip)
                   << " nm (the round trip through LSCE)\n";
-      if (run.branches)
-        {
-          std::cout << "  contact steps by branch:";
-          for (unsigned int b = 1; b < run.branch_count.size(); ++b)
-            std::cout << ' ' << contact::to_string(static_cast<contact::KinematicBranch>(b)) << ' '
-                      << run.branch_count[b];
-          std::cout << '\n';
-        }
+      print_branches(run);
       if (global.print_timings)
         std::cout << "Run time: " << format_printf("%.4g", run.run_time) << " s for the time loop ("
                   << format_printf("%.3g", 1e9 * run.run_time / n_steps) << " ns per step), "
