@@ -1,6 +1,7 @@
 // greentread: run a scene.
 //
 //   greentread [SCENE.prm] [--set "Section/Name=value"]...
+//   greentread [SCENE.prm] [--set ...]... --print-parameters=scene
 //   greentread --print-parameters[=markdown] | --help | --version
 //
 // Everything else lives in the greentread_core library, so that the tests and
@@ -33,6 +34,7 @@ namespace
     "Usage:\n"
     "  greentread [SCENE.prm] [--set \"Section/Name=value\"]...\n"
     "  greentread --print-parameters[=markdown]\n"
+    "  greentread [SCENE.prm] [--set \"Section/Name=value\"]... --print-parameters=scene\n"
     "  greentread --help | --version\n"
     "\n"
     "Runs the scene SCENE.prm (relative input files are looked for beside it,\n"
@@ -44,7 +46,9 @@ namespace
     "  --set \"Path=value\"   override one parameter after the file is read, e.g.\n"
     "                       --set \"Time stepping/Time step=1e-4\"; may be repeated\n"
     "  --print-parameters   every parameter with its default, allowed values, unit\n"
-    "                       and meaning; =markdown gives doc/parameters.md\n"
+    "                       and meaning; =markdown gives doc/parameters.md;\n"
+    "                       =scene prints \"Path = value\" for every parameter as\n"
+    "                       SCENE.prm and the --set options give it, and runs nothing\n"
     "  --help               this text\n"
     "  --version            versions of GreenTread and of the libraries it uses\n"
     "\n"
@@ -88,6 +92,8 @@ main(int argc, char **argv)
             print_parameters = "text";
           else if (arg == "--print-parameters=markdown")
             print_parameters = "markdown";
+          else if (arg == "--print-parameters=scene")
+            print_parameters = "scene";
           else if (arg == "--set")
             {
               if (i + 1 >= argc)
@@ -124,6 +130,12 @@ main(int argc, char **argv)
       for (const auto &assignment : overrides)
         greentread::base::apply_override(prm, assignment);
       greentread::scenes::apply_renamed_parameters(prm, std::cerr);
+      if (print_parameters == "scene")
+        {
+          for (const auto &e : greentread::base::list_parameters(prm))
+            std::cout << e.path << " = " << e.value << '\n';
+          return 0;
+        }
 
       auto scene = greentread::scenes::create_scene(prm, scene_file);
       scene->run();
