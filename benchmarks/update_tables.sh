@@ -17,6 +17,8 @@
 #   <!-- table:end -->
 #
 # replacing what was there. BUILD_DIR (default build/) holds the benchmarks.
+# A benchmark that is a script (benchmarks/NAME/NAME.sh) runs the program of
+# BUILD_DIR (GREENTREAD_PROGRAM).
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 name="${1:-}"
@@ -29,6 +31,10 @@ config="$folder/reference_quick.cmake"
 readme="$folder/README.md"
 build="${BUILD_DIR:-$top/build}"
 program="$build/benchmarks/$name"
+if [[ -f "$folder/$name.sh" ]]; then
+  program="$folder/$name.sh"
+  export GREENTREAD_PROGRAM="$build/greentread"
+fi
 [[ -f "$config" ]] || { echo "update_tables.sh: $name has no reference_quick.cmake (no key numbers)" >&2; exit 1; }
 [[ -x "$program" ]] || { echo "update_tables.sh: $program not found: cmake --build $build --target $name" >&2; exit 1; }
 if ! grep -q '^<!-- table:begin -->$' "$readme" || ! grep -q '^<!-- table:end -->$' "$readme"; then
