@@ -1,6 +1,7 @@
 # Run PROGRAM with ARGS in a fresh WORKDIR, writing to out/ unless ARGS sets
 # another output directory (overrides apply in order, the file first), and
-# check: non-zero exit, standard error matching EXPECT, nothing left in
+# check: exit status 2 (bad input, as the manual's exit codes say; 1 is an
+# internal error, 3 a numerical failure), standard error matching EXPECT, nothing left in
 # WORKDIR (an empty out/ at most), and the file UNCHANGED, if given, as it
 # was: for a case whose output directory lies elsewhere, what it names.
 file(REMOVE_RECURSE ${WORKDIR})
@@ -16,6 +17,9 @@ execute_process(
   ERROR_VARIABLE err)
 if(status EQUAL 0)
   message(FATAL_ERROR "expected a failure, but greentread succeeded:\n${out}")
+endif()
+if(NOT status EQUAL 2)
+  message(FATAL_ERROR "expected exit status 2 (bad input), got ${status}:\n${err}")
 endif()
 string(REGEX REPLACE "\n" " " err_line "${err}")
 if(NOT err_line MATCHES "${EXPECT}")
