@@ -2,8 +2,12 @@
 # Remakes every figure that README.md, doc/ and benchmarks/ show, from the runs
 # that make them, with the program and benchmarks of BUILD_DIR:
 #
-#   bash doc/figures/make_figures.sh [BUILD_DIR] [MAIN_JOB_OUTPUT]
+#   bash doc/figures/make_figures.sh [--scenes-only] [BUILD_DIR] [MAIN_JOB_OUTPUT]
 #
+# --scenes-only remakes the figures of scenes alone (those README.md and doc/
+# show; about 15 minutes on 2 cores, most of it the main job), not the
+# benchmarks' (their READMEs show them): after a change to the program that
+# moves no benchmark's reference numbers (tests/layout/check_figures.sh).
 # BUILD_DIR (default build/) holds greentread and the benchmarks.
 # MAIN_JOB_OUTPUT is the output folder of a main job run by this build
 # (build/greentread writes output/); without it the main job is run here.
@@ -17,6 +21,11 @@
 # before making the figures, so that the revision they record names it.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+benchmarks=true
+if [[ "${1:-}" == --scenes-only ]]; then
+  benchmarks=false
+  shift
+fi
 build="$(cd "${1:-$top/build}" && pwd)"
 main_out="${2:-}"
 figures="$top/doc/figures"
@@ -50,10 +59,6 @@ place() {
   echo "$1 <- $2 ($revision)"
 }
 
-# The 1-DoF scene's time step study (Section 3).
-"$build/benchmarks/sdof_convergence" --output "$tmp/sdof_convergence" > /dev/null
-place benchmarks/sdof_convergence/sdof_convergence.png "$tmp/sdof_convergence/sdof_convergence.png"
-
 # The ring's Green's functions (Figure A.9).
 "$program" prm/tyre_green.prm --set "Output directory=$tmp/tyre_green" > /dev/null
 place doc/figures/green_functions.png "$tmp/tyre_green/green_functions.png"
@@ -64,6 +69,15 @@ if [[ -z "$main_out" ]]; then
   "$program" --set "Output directory=$main_out"
 fi
 place doc/figures/spectra_road-A.png "$main_out/spectra_road-A.png"
+
+if ! $benchmarks; then
+  bash "$top/tests/layout/check_figures.sh" "$top" "$program"
+  exit
+fi
+
+# The 1-DoF scene's time step study (Section 3).
+"$build/benchmarks/sdof_convergence" --output "$tmp/sdof_convergence" > /dev/null
+place benchmarks/sdof_convergence/sdof_convergence.png "$tmp/sdof_convergence/sdof_convergence.png"
 
 # The default section against the one twice as fine.
 converged_out="$build/benchmark-output/converged_ring"
@@ -80,3 +94,7 @@ if [[ ! -f "$converged" || "$(recorded "$converged")" != "$revision" ]]; then
   "$build/benchmarks/converged_ring" --output "$converged_out"
 fi
 place benchmarks/converged_ring/converged_ring_road-A_90kmh.png "$converged"
+
+# Every figure of doc/figures/figures.list, each from this build's revision
+# (the code behind them is committed, so they are current once committed).
+bash "$top/tests/layout/check_figures.sh" "$top" "$program"

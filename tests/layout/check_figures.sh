@@ -10,10 +10,17 @@
 #
 # - its 'parameters' text chunk names the revision that made it, from a clean
 #   tree ("greentread 0.1.0 (abc1234)"), and that commit is in the history;
-# - the code behind it (the program's: source, include, cmake,
-#   CMakeLists.txt, prm, geometry; and the folders the list adds) is the same
-#   in that commit as in the work tree: a change to it since makes the figure
-#   stale, even one that moves no number, because no one has looked;
+# - the code behind it is the same in that commit as in the work tree: a
+#   change to it since makes the figure stale, even one that moves no number,
+#   because no one has looked. For a scene's figure (those README.md and doc/
+#   show) that is the program's code (source, include, cmake, CMakeLists.txt,
+#   prm, geometry) and the files the list adds. For a benchmark's figure (its
+#   README shows it) it is the benchmark's own code, the list's files: a change
+#   to the program that moves the benchmark's numbers fails its test
+#   benchmark-smoke/<name>, which compares them with its reference_quick.csv,
+#   and the one who updates that reference remakes the figure
+#   (CONTRIBUTING.md). The full runs behind those figures take over an hour;
+#   they are not remade for every change to the program;
 # - it was made by what the list says: a benchmark's figure names the
 #   benchmark, and not its --quick run; a scene's figure names the scene, and
 #   every parameter it records (but its output directory) has the value that
@@ -84,12 +91,13 @@ while read -r figure scene code; do
     fail "$figure was made by revision $revision, which is not in this history"
     continue
   fi
-  paths=("${program_code[@]}")
+  paths=()
+  [[ "$scene" != benchmark ]] && paths=("${program_code[@]}")
   if [[ "$code" != "-" ]]; then
     IFS=, read -r -a more <<< "$code"
     paths+=("${more[@]}")
   fi
-  if ! git -C "$top" diff --quiet "$revision" -- "${paths[@]}"; then
+  if ((${#paths[@]} > 0)) && ! git -C "$top" diff --quiet "$revision" -- "${paths[@]}"; then
     fail "$figure was made by revision $revision; the code behind it changed since:
 $(git -C "$top" diff --stat "$revision" -- "${paths[@]}" | tail -15)
   remake it: bash doc/figures/make_figures.sh"
