@@ -16,7 +16,7 @@
 # the rms over the bands (a single band's difference can pass through zero).
 #
 #   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] [COARSER_CUTOFF=DIR] bash benchmarks/error_bars/error_bars.sh \
-#     [output directory of the main job] [program] [cases] [discretisations]
+#     [--quick] [--output DIR] [output directory of the main job] [program] [cases] [discretisations]
 #
 # cases: any of "default texture-file load" (default: all three):
 #   default       road-A at 90 km/h, 600 N (the main job's first road)
@@ -39,20 +39,65 @@
 #   bars/Estimates' saves it).
 # About 30 minutes on this 2-core machine for the first two (the refined
 # grid, 16 subdivisions on 30,720 points, is most of it), 5 for the other two.
+# The program: the second positional argument, else $GREENTREAD_PROGRAM, else
+# build/greentread.
+#
+# --quick makes its own stages on the coarse ring (common/saved_stages.sh) in
+# DIR/stages, and those of the mode cut-off's refined level (5 kHz against
+# the ring's 4 kHz, as 10 kHz against the default 8 kHz) in DIR/finer_cutoff;
+# its cases default to 'default' and its discretisations to "time_step
+# contact_grid mode_cutoff", the contact grid refined from 2 to 4
+# subdivisions (ring_section and COARSER_CUTOFF are not allowed with it).
+# Every run writes the tables as DIR/error_bars.csv (DIR:
+# build/benchmark-output/error_bars): the rows 'band', one per band, and
+# 'rms', the line under each table; a figure a row does not have is 'none'.
 set -euo pipefail
 
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
+parse_options error_bars.sh "$@"
+set -- "${arguments[@]}"
+(( $# <= 4 )) || input_error "error_bars.sh: $# positional arguments ($*); allowed: at most 4, [main job's output] [program] [cases] [discretisations]"
 saved=${1:-output}
-program=${2:-build/greentread}
+program_argument error_bars.sh "${2:-}"
 cases=${3:-default texture-file load}
 discretisations=${4:-time_step contact_grid}
-source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
+# The refined contact grid's subdivisions and the refined mode cut-off [Hz].
+refined_subdivisions=16 refined_cutoff=10000
+if $quick; then
+  cases=${3:-default}
+  discretisations=${4:-time_step contact_grid mode_cutoff}
+  refined_subdivisions=4 refined_cutoff=5000
+fi
+for c in $cases; do
+  [[ " default texture-file load " == *" $c "* ]] ||
+    input_error "error_bars.sh: case '$c' (the third positional argument); allowed: default, texture-file, load"
+done
+allowed="time_step contact_grid mode_cutoff ring_section"
+$quick && allowed="time_step contact_grid mode_cutoff"
+for d in $discretisations; do
+  [[ " $allowed " == *" $d "* ]] ||
+    input_error "error_bars.sh: discretisation '$d' (the fourth positional argument); allowed$($quick && echo " with --quick"): ${allowed// /, }"
+done
+[[ -n "${cases// /}" && -n "${discretisations// /}" ]] ||
+  input_error "error_bars.sh: cases = '$cases', discretisations = '$discretisations'; allowed: one or more of each"
+if $quick; then
+  [[ -z "${COARSER_CUTOFF:-}" ]] || input_error "error_bars.sh: COARSER_CUTOFF = '$COARSER_CUTOFF'; allowed with --quick: unset"
+  saved=$output/stages
+  make_quick_stages "$saved"
+  if [[ " $discretisations " == *" mode_cutoff "* ]]; then
+    FINER_CUTOFF=$output/finer_cutoff
+    mkdir -p "$FINER_CUTOFF"
+    cp "$saved/green_functions.h5" "$FINER_CUTOFF"/
+    make_quick_stages "$FINER_CUTOFF" --set "Patch model/Mode cutoff=$refined_cutoff"
+  fi
+fi
 check_saved_stages error_bars.sh
 # needs_stages DISCRETISATION DIR VARIABLE: refuse a refined level without its stages.
 needs_stages() {
   if [[ " $discretisations " == *" $1 "* && ( -z "$2" || ! -f "$2/green_functions.h5" ) ]]; then
     echo "error_bars.sh: $1 needs $3, the output directory of the refined level's run" \
          "(see this script's header); '$2' holds no green_functions.h5" >&2
-    exit 1
+    exit 2
   fi
 }
 needs_stages ring_section "${FINER_SECTION:-}" FINER_SECTION
@@ -60,7 +105,7 @@ needs_stages mode_cutoff "${FINER_CUTOFF:-}" FINER_CUTOFF
 if [[ -n "${COARSER_CUTOFF:-}" && ! -f "$COARSER_CUTOFF/green_functions.h5" ]]; then
   echo "error_bars.sh: COARSER_CUTOFF='$COARSER_CUTOFF' holds no green_functions.h5:" \
        "the output directory of the run with 'Patch model/Mode cutoff' = 6000 (this script's header)" >&2
-  exit 1
+  exit 2
 fi
 # The mode cut-off's four levels: with mode_cutoff and COARSER_CUTOFF.
 four_levels=false
@@ -68,7 +113,7 @@ four_levels=false
 if [[ " $discretisations " == *" ring_section "* && ! -f "$saved/coarser_section/green_functions.h5" ]]; then
   echo "error_bars.sh: '$saved' holds no coarser_section/: run the main job with the" \
        "default 'Error bars/Estimates' first" >&2
-  exit 1
+  exit 2
 fi
 
 work=$(mktemp -d)
@@ -94,13 +139,13 @@ run_case() {
       --set "Time stepping/Time step=$(awk -v d="$dt" 'BEGIN { printf "%.6e", d / 4 }')"
   [[ " $discretisations " == *" contact_grid "* ]] &&
     run_saved "${name}_contact_grid" "${common[@]}" --set "Error bars/Estimates=" \
-      --set "Contact grid/Subdivisions=16"
+      --set "Contact grid/Subdivisions=$refined_subdivisions"
   [[ " $discretisations " == *" ring_section "* ]] &&
     saved=$FINER_SECTION run_saved "${name}_ring_section" "${common[@]}" \
       --set "Error bars/Estimates=" --set "Geometry/Mesh size=0.004"
   [[ " $discretisations " == *" mode_cutoff "* ]] &&
     saved=$FINER_CUTOFF run_saved "${name}_mode_cutoff" "${common[@]}" \
-      --set "Error bars/Estimates=" --set "Patch model/Mode cutoff=10000"
+      --set "Error bars/Estimates=" --set "Patch model/Mode cutoff=$refined_cutoff"
   $four_levels &&
     saved=$COARSER_CUTOFF run_saved "${name}_cutoff_6k" "${common[@]}" \
       --set "Error bars/Estimates=mode cutoff" --set "Patch model/Mode cutoff=6000"
@@ -159,7 +204,7 @@ compare() {
       echo
       echo "| band [Hz] | level | standard error | estimate | refined level | measured difference | estimate / measured |"
       echo "| --- | --- | --- | --- | --- | --- | --- |"
-      awk -F, -v column="${column}_dB" '
+      awk -F, -v column="${column}_dB" -v csv="$csv" -v prefix="$name,$quantity,$column" '
         FNR == 1 { file++ }
         file == 1 && /^road,/ { for (i = 1; i <= NF; i++) if ($i == column) c = i }
         /^[a-zA-Z0-9_.\/-]+,[0-9.]+,[0-9]/ {
@@ -173,14 +218,21 @@ compare() {
             k = order[i]
             if (k < 250) continue
             m = l[k] - r[k]; m = m < 0 ? -m : m
-            if (e[k] == "" || e[k] == "nan") { printf "| %g | %.2f | %.2f | not estimated | %.2f | %.3f | |\n", k, l[k], se[k], r[k], m; continue }
+            if (e[k] == "" || e[k] == "nan") {
+              printf "| %g | %.2f | %.2f | not estimated | %.2f | %.3f | |\n", k, l[k], se[k], r[k], m
+              printf "%s,band,%g,%.6f,%.6f,none,%.6f,%.6f,none,none,none\n", prefix, k, l[k], se[k], r[k], m >> csv
+              continue
+            }
             ratio = m > 0 ? e[k] / m : 0
             counted++; if (ratio >= 0.5 && ratio <= 2) within++
             se2 += e[k] * e[k]; sm2 += m * m
             printf "| %g | %.2f | %.2f | %.3f | %.2f | %.3f | %.2f |\n", k, l[k], se[k], e[k], r[k], m, ratio
+            printf "%s,band,%g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,none,none\n", prefix, k, l[k], se[k], e[k], r[k], m, ratio >> csv
           }
           printf "\nbands within a factor 2: %d of %d; rms over the bands: estimate %.3f dB, measured %.3f dB, ratio %.2f\n",
                  within, counted, sqrt(se2 / counted), sqrt(sm2 / counted), sqrt(se2 / sm2)
+          printf "%s,rms,none,none,none,%.6f,none,%.6f,%.6f,%d,%d\n", prefix, sqrt(se2 / counted),
+                 sqrt(sm2 / counted), sqrt(se2 / sm2), within, counted >> csv
         }' "$work/${name}_estimated/$quantity.csv" "$work/${name}_${refined}/$quantity.csv"
     done
   done
@@ -190,6 +242,8 @@ compare() {
   fi
 }
 
+csv=$work/table.csv
+echo "case,quantity,discretisation,row,band_Hz,level_dB,standard_error_dB,estimate_dB,refined_level_dB,measured_difference_dB,estimate_over_measured,bands_within_factor_2,bands_estimated" > "$csv"
 for c in $cases; do
   case $c in
     default)
@@ -202,6 +256,6 @@ for c in $cases; do
     load)
       run_case load road-B 50 900 3.84e-4 "$(awk -v w="$window" 'BEGIN { printf "%.4f", w * 50 / 3.6 }')"
       compare load "road-B at 50 km/h, 900 N" ;;
-    *) echo "error_bars.sh: unknown case '$c' (allowed: default, texture-file, load)" >&2; exit 1 ;;
   esac
 done
+write_csv "$output/error_bars.csv" < "$csv"

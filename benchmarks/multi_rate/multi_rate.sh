@@ -10,17 +10,36 @@
 # agree within two combined standard errors, and the contact stage's cost of
 # each estimate.
 #
-#   bash benchmarks/multi_rate/multi_rate.sh [output directory of the main job] [program] [speed km/h] [roads]
+#   bash benchmarks/multi_rate/multi_rate.sh [--quick] [--output DIR] \
+#     [output directory of the main job] [program] [speed km/h] [roads]
 #
-# defaults: output/, build/greentread, 90, "road-A road-B". About 12 minutes
-# on this 2-core machine (the brute-force runs are the longest).
+# defaults: output/, $GREENTREAD_PROGRAM else build/greentread, 90,
+# "road-A road-B". About 12 minutes on this 2-core machine (the brute-force
+# runs are the longest). --quick makes its own stages on the coarse ring
+# (common/saved_stages.sh) in DIR/stages and compares on road-A only, the
+# run at the step over 1.2 m and the low-rate run over at most 3.6 m
+# ('Spectra/Longest distance'), without the error bars' runs. Every run
+# writes the tables as DIR/multi_rate.csv (DIR: build/benchmark-output/multi_rate).
 set -euo pipefail
 
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
+parse_options multi_rate.sh "$@"
+set -- "${arguments[@]}"
+(( $# <= 4 )) || input_error "multi_rate.sh: $# positional arguments ($*); allowed: at most 4, [main job's output] [program] [speed km/h] [roads]"
 saved=${1:-output}
-program=${2:-build/greentread}
+program_argument multi_rate.sh "${2:-}"
 speed=${3:-90}
 roads=${4:-road-A road-B}
-source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
+check_number multi_rate.sh speed "$speed" number
+# The quick run's shorter records.
+shorter=()
+if $quick; then
+  roads=${4:-road-A}
+  shorter=(--set "Rolling/Distance=1.2" --set "Spectra/Longest distance=3.6" --set "Error bars/Estimates=")
+  saved=$output/stages
+  make_quick_stages "$saved"
+fi
+[[ -n "${roads// /}" ]] || input_error "multi_rate.sh: roads = '$roads'; allowed: one or more roads, e.g. \"road-A road-B\""
 check_saved_stages multi_rate.sh
 
 work=$(mktemp -d)
@@ -32,8 +51,10 @@ run_seconds() {
     awk '{s += $2} END {printf "%.0f", s}'
 }
 
+csv=$work/table.csv
+echo "road,speed_kmh,quantity,band_Hz,multi_rate_dB,multi_rate_standard_error_dB,from_time_step_us,from_record_m,one_rate_dB,one_rate_standard_error_dB,difference_dB,difference_over_combined_standard_error,within_2_combined_standard_errors,low_rate_distance_m,multi_rate_contact_s,one_rate_contact_s" > "$csv"
 for road in $roads; do
-  common=(--set "Road texture/Roads=$road" --set "Rolling/Speeds (kph)=$speed")
+  common=(--set "Road texture/Roads=$road" --set "Rolling/Speeds (kph)=$speed" "${shorter[@]}")
   run_saved "multi_$road" "${common[@]}"
   low=$(grep -oE "run [^ ]+_low-rate: V0 = [0-9.]+ km/h, dt = [0-9.]+ us, [0-9.]+ m, [0-9]+ steps" \
           "$work/multi_$road.log" | head -1)
@@ -56,7 +77,8 @@ for road in $roads; do
     echo
     echo "| band [Hz] | multi-rate | from | one rate | difference | within 2 combined SE |"
     echo "| --- | --- | --- | --- | --- | --- |"
-    awk -F, '
+    awk -F, -v csv="$csv" -v prefix="$road,$speed,$quantity" \
+        -v suffix="$distance,$t_multi,$t_brute" '
       FNR == 1 { file++ }
       /^[a-zA-Z0-9_.\/-]+,[0-9.]+,[0-9]/ {
         key = $3
@@ -74,8 +96,11 @@ for road in $roads; do
           if (ad / se > worst) worst = ad / se
           printf "| %g | %.2f +- %.2f | %.0f us, %.2f m | %.2f +- %.2f | %+.2f | %s |\n",
                  k, m[k], ms[k], step[k], rec[k], b[k], bs[k], d, ok
+          printf "%s,%g,%.6f,%.6f,%g,%g,%.6f,%.6f,%.6f,%.6f,%s,%s\n", prefix, k, m[k], ms[k], step[k],
+                 rec[k], b[k], bs[k], d, ad / se, ok, suffix >> csv
         }
         printf "\nbands outside two combined standard errors: %d; largest difference %.2f combined standard errors\n\n", missed, worst
       }' "$work/multi_$road/$quantity.csv" "$work/brute_$road/$quantity.csv"
   done
 done
+write_csv "$output/multi_rate.csv" < "$csv"
