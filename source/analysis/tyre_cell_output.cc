@@ -25,6 +25,7 @@ namespace greentread
         out.attach_triangulation(cell.section());
         out.add_data_vector(material, "material_id");
         out.build_patches();
+        out.set_flags(base::undated_vtk_flags());
         base::AtomicFile vtu(directory / "section.vtu");
         out.write_vtu(vtu.stream());
         vtu.commit();

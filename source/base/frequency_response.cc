@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/frequency_response.h>
+#include <greentread/base/hdf5_writer.h>
 #include <greentread/base/parameters.h>
 
 #include <deal.II/base/hdf5.h>
@@ -353,19 +354,18 @@ namespace greentread
 
 
     void
-    write_hdf5_stage(const std::filesystem::path                     &file,
-                     const std::vector<std::array<double, 3>>        &points,
-                     const base::ParameterRecord                     &record,
-                     const std::string                               &stage_key,
-                     const std::function<void(dealii::HDF5::File &)> &fill)
+    write_hdf5_stage(const std::filesystem::path              &file,
+                     const std::vector<std::array<double, 3>> &points,
+                     const base::ParameterRecord              &record,
+                     const std::string                        &stage_key,
+                     const std::function<void(Hdf5Writer &)>  &fill)
     {
       // HDF5 writes through its own file handle: reserve the temporary name
       // with an AtomicFile, let HDF5 fill it, then rename.
       base::AtomicFile target(file, std::ios::binary);
       target.stream().close();
       {
-        dealii::HDF5::File h5(target.temporary_path().string(),
-                              dealii::HDF5::File::FileAccessMode::create);
+        Hdf5Writer h5(target.temporary_path().string());
         fill(h5);
         std::vector<double> p;
         for (const auto &x : points)
@@ -386,7 +386,7 @@ namespace greentread
                      const base::ParameterRecord   &record,
                      const std::string             &stage_key)
     {
-      write_hdf5_stage(file, green.points, record, stage_key, [&](dealii::HDF5::File &h5) {
+      write_hdf5_stage(file, green.points, record, stage_key, [&](Hdf5Writer &h5) {
         std::vector<double> f(green.n_lines);
         for (unsigned int k = 0; k < green.n_lines; ++k)
           f[k] = k * green.df;

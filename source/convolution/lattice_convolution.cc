@@ -17,10 +17,14 @@ namespace greentread
      * 2 ny). The 2D transform is done as its two passes, so that the rows
      * known to be zero are skipped: the padding rows i >= nx of the input
      * (their row transforms are zero) and of the output (never read). That
-     * is half the row transforms each way. The plans are measured once
-     * (FFTW_MEASURE), not estimated: with FFTW_ESTIMATE's plan of the whole
-     * 2D transform, FFTW took 57% of a rolling run of the main job, much of
-     * it in its buffer copies (fftw_cpy2d).
+     * is half the row transforms each way. The plans are estimated
+     * (FFTW_ESTIMATE), not measured: a measured plan depends on the timings
+     * of the moment, so its round-off changed from run to run and with the
+     * thread count. Every transform is out of place: FFTW_ESTIMATE's plan of
+     * an in-place column transform buffers its data (its plan of the whole 2D
+     * transform took 57% of a rolling run of the main job, much of it in
+     * buffer copies, fftw_cpy2d); out of place, its plans cost what measured
+     * ones do (benchmarks/lattice_fft).
      */
     namespace
     {
@@ -36,7 +40,7 @@ namespace greentread
       {
         std::array<unsigned int, 4> shape{{0, 0, 0, 0}}; // nx, ny, mx, my
         double                     *input = nullptr, *output = nullptr;
-        fftw_complex               *rows = nullptr, *spectrum = nullptr;
+        fftw_complex               *rows = nullptr, *spectrum = nullptr, *back = nullptr;
 
         void
         reserve(const unsigned int nx,
@@ -54,7 +58,8 @@ namespace greentread
           output                      = fftw_alloc_real(n_real);
           rows                        = fftw_alloc_complex(n_complex);
           spectrum                    = fftw_alloc_complex(n_complex);
-          if (!input || !output || !rows || !spectrum)
+          back                        = fftw_alloc_complex(n_complex);
+          if (!input || !output || !rows || !spectrum || !back)
             {
               release();
               throw NumericalError("lattice convolution: cannot allocate the FFT buffers of " +
@@ -72,9 +77,10 @@ namespace greentread
           fftw_free(output);
           fftw_free(rows);
           fftw_free(spectrum);
+          fftw_free(back);
           input = output = nullptr;
-          rows = spectrum = nullptr;
-          shape           = {{0, 0, 0, 0}};
+          rows = spectrum = back = nullptr;
+          shape                  = {{0, 0, 0, 0}};
         }
 
         ~Work()
@@ -89,9 +95,9 @@ namespace greentread
     struct LatticeConvolution::Plans
     {
       unsigned int nx = 0, mx = 0, my = 0, my_c = 0; // the period, and ny's half spectrum
-      /// Row r2c on the first nx rows (input to rows); column DFTs forward
-      /// out of place (rows to spectrum) and backward in place on all my_c
-      /// columns; row c2r on the first nx rows (spectrum to output).
+      /// Row r2c on the first nx rows (input to rows); column DFTs on all
+      /// my_c columns, forward (rows to spectrum) and backward (spectrum to
+      /// back); row c2r on the first nx rows (back to output).
       fftw_plan rows_forward = nullptr, columns_forward = nullptr, columns_backward = nullptr,
                 rows_backward = nullptr;
       std::vector<double> kernel_spectrum; // real: the kernel is even
@@ -102,20 +108,19 @@ namespace greentread
           , my(2 * ny)
           , my_c(ny + 1)
       {
-        // Planned on a work set of their own (FFTW_MEASURE overwrites the
-        // arrays), executed on each thread's.
+        // Planned on a work set of their own, executed on each thread's.
         Work w;
         w.reserve(nx, ny, mx, my);
         const int      n_row = my, n_column = mx;
-        const unsigned flags = FFTW_MEASURE;
+        const unsigned flags = FFTW_ESTIMATE;
         rows_forward     = fftw_plan_many_dft_r2c(1, &n_row, nx, w.input, nullptr, 1, my, w.rows,
                                                   nullptr, 1, my_c, flags);
         columns_forward  = fftw_plan_many_dft(1, &n_column, my_c, w.rows, nullptr, my_c, 1,
                                               w.spectrum, nullptr, my_c, 1, FFTW_FORWARD, flags);
         columns_backward = fftw_plan_many_dft(1, &n_column, my_c, w.spectrum, nullptr, my_c, 1,
-                                              w.spectrum, nullptr, my_c, 1, FFTW_BACKWARD, flags);
-        rows_backward    = fftw_plan_many_dft_c2r(1, &n_row, nx, w.spectrum, nullptr, 1, my_c,
-                                                  w.output, nullptr, 1, my, flags);
+                                              w.back, nullptr, my_c, 1, FFTW_BACKWARD, flags);
+        rows_backward    = fftw_plan_many_dft_c2r(1, &n_row, nx, w.back, nullptr, 1, my_c, w.output,
+                                                  nullptr, 1, my, flags);
         if (!rows_forward || !columns_forward || !columns_backward || !rows_backward)
           throw NumericalError("lattice convolution: FFTW could not plan the transforms of " +
                                std::to_string(mx) + " x " + std::to_string(my) + " points");
@@ -195,8 +200,8 @@ namespace greentread
           w.spectrum[k][0] *= p.kernel_spectrum[k];
           w.spectrum[k][1] *= p.kernel_spectrum[k];
         }
-      fftw_execute_dft(p.columns_backward, w.spectrum, w.spectrum);
-      fftw_execute_dft_c2r(p.rows_backward, w.spectrum, w.output);
+      fftw_execute_dft(p.columns_backward, w.spectrum, w.back);
+      fftw_execute_dft_c2r(p.rows_backward, w.back, w.output);
       y.resize(x.size());
       for (unsigned int i = 0; i < nx; ++i)
         std::copy(w.output + std::size_t(i) * p.my, w.output + std::size_t(i) * p.my + ny,

@@ -123,16 +123,26 @@ namespace greentread
               slot[g]                = n_loads;
               loads_t.row(n_loads++) = load.component[g].transpose().template cast<Shape>();
             }
-          end_load             = load.component[2];
+          end_load = load.component[2];
+          // Two halves summed, on two threads or one: the sum is split the
+          // same way whatever the thread count, so its bytes do not depend on it.
           const Eigen::Index m = hr.size(), half = m / 2;
-          if (threads > 1 && half > 64)
+          if (half > 64)
             {
               Eigen::MatrixXd first(n_p, 2);
-              auto            task = dealii::Threads::new_task([&]() {
-                sweep(0, half, first);
-              });
-              sweep(half, m, uv);
-              task.join();
+              if (threads > 1)
+                {
+                  auto task = dealii::Threads::new_task([&]() {
+                    sweep(0, half, first);
+                  });
+                  sweep(half, m, uv);
+                  task.join();
+                }
+              else
+                {
+                  sweep(0, half, first);
+                  sweep(half, m, uv);
+                }
               uv += first;
             }
           else
@@ -363,16 +373,25 @@ namespace greentread
         void
         block_pass(const bool next)
         {
+          // Split as history() splits its sum, whatever the thread count.
           const Eigen::Index m = hr.size(), half = m / 2;
-          if (threads > 1 && half > 64)
+          if (half > 64)
             {
               Eigen::MatrixXd first = Eigen::MatrixXd::Zero(n_p, J);
-              auto            task  = dealii::Threads::new_task([&]() {
-                block_sweep(0, half, next, first);
-              });
               block_hist.setZero(n_p, J);
-              block_sweep(half, m, next, block_hist);
-              task.join();
+              if (threads > 1)
+                {
+                  auto task = dealii::Threads::new_task([&]() {
+                    block_sweep(0, half, next, first);
+                  });
+                  block_sweep(half, m, next, block_hist);
+                  task.join();
+                }
+              else
+                {
+                  block_sweep(0, half, next, first);
+                  block_sweep(half, m, next, block_hist);
+                }
               block_hist += first;
             }
           else

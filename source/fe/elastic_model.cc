@@ -499,6 +499,7 @@ namespace greentread
       out.add_data_vector(u, names, DataOut<3>::type_dof_data, kinds);
       out.add_data_vector(u, stress_output);
       out.build_patches(map, fe.degree, DataOut<3>::curved_inner_cells);
+      out.set_flags(base::undated_vtk_flags());
       base::AtomicFile vtu(file);
       out.write_vtu(vtu.stream());
       vtu.commit();

@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/hdf5_writer.h>
 #include <greentread/modal/patch_model.h>
 
 #include <deal.II/base/hdf5.h>
@@ -29,7 +30,7 @@ namespace greentread
       if (model.is_rank_one())
         throw NumericalError("write_patch_model: a model from the ring's modes is saved as "
                              "modal_model.h5 (write_modal_model), not as a patch model");
-      write_hdf5_stage(file, model.points, record, stage_key, [&](dealii::HDF5::File &h5) {
+      write_hdf5_stage(file, model.points, record, stage_key, [&](base::Hdf5Writer &h5) {
         const std::size_t n = model.n_points(), m = model.n_terms();
         h5.create_dataset<std::complex<double>>("lambda", {m}).write(model.lambda);
         std::vector<int> real(model.real.begin(), model.real.end());

@@ -143,6 +143,7 @@ namespace greentread
                           dealii::DataOut<3>::type_dof_data, vector);
       out.add_data_vector(scalar_handler, amplitude, "amplitude");
       out.build_patches();
+      out.set_flags(base::undated_vtk_flags());
       base::AtomicFile vtu(file);
       out.write_vtu(vtu.stream());
       vtu.commit();

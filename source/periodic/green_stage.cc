@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/parameters.h>
 #include <greentread/base/progress.h>
+#include <greentread/base/serial_deal_ii.h>
 #include <greentread/config.h>
 #include <greentread/green_sources_digest.h>
 #include <greentread/periodic/green_stage.h>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -60,9 +62,13 @@ namespace greentread
         throw InputError("parameter 'Materials/Tread pattern/Surface mass' = inward is not "
                          "allowed with 'Green's functions/Method' = harmonic; allowed there: "
                          "consistent");
-      auto start   = std::chrono::steady_clock::now();
-      cell         = std::make_unique<geometry::TyreCell>(geometry);
-      mesh_seconds = base::seconds_since(start);
+      // The finite-element set-up with deal.II on one thread (its round-off
+      // then does not depend on the thread count), up to the harmonic ring,
+      // whose harmonics go on GreenTread's threads.
+      std::optional<base::SerialDealII> serial(std::in_place);
+      auto                              start = std::chrono::steady_clock::now();
+      cell                                    = std::make_unique<geometry::TyreCell>(geometry);
+      mesh_seconds                            = base::seconds_since(start);
 
       // With the harmonic method the 3D cell only places the points: it
       // keeps quadratic elements whatever the section's degree.
@@ -90,6 +96,7 @@ namespace greentread
           section = std::make_unique<fe::HarmonicSection>(cell->section(), materials.materials(),
                                                           geometry.section_degree());
           section->inflate(inflation.pressure);
+          serial.reset();
           harmonic = std::make_unique<HarmonicRing>(*section, patch, harmonic_options->tolerance,
                                                     harmonic_options->max_omega);
           if (harmonic_options->mode_cutoff > 0.)

@@ -22,34 +22,36 @@ namespace greentread
   {
     namespace
     {
-      /// The worker threads for @p n_lines lines (at least one).
-      unsigned int
-      line_threads(const unsigned int n_lines)
-      {
-        return std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), n_lines));
-      }
+      /// The lanes of for_each_line(): a fixed number, whatever the thread
+      /// count, so that sums kept per lane and added in lane order give the
+      /// same bytes with any number of threads.
+      constexpr unsigned int n_lanes = 16;
 
-      /// line(l, t) for the lines @p first to @p n_lines - 1, line l on thread
-      /// t = (l - first) mod @p n_threads, so that per-thread sums added in
-      /// thread order give the same figures for the same number of threads.
-      /// A failure on any thread is thrown as "@p what: message".
+      /// line(l, s) for the lines @p first to @p n_lines - 1, line l in lane
+      /// s = (l - first) mod n_lanes, each lane's lines in increasing order on
+      /// one thread; the lanes are shared among the threads
+      /// (DEAL_II_NUM_THREADS). A failure on any thread is thrown as
+      /// "@p what: message".
       template <typename Line>
       void
       for_each_line(const unsigned int first,
                     const unsigned int n_lines,
-                    const unsigned int n_threads,
                     const std::string &what,
                     const Line        &line)
       {
-        std::atomic<unsigned int> done{first}, next_thread{0};
+        const unsigned int lanes =
+          std::min(n_lanes, std::max(1u, n_lines - std::min(first, n_lines)));
+        const unsigned int n_threads =
+          std::max(1u, std::min<unsigned int>(dealii::MultithreadInfo::n_threads(), lanes));
+        std::atomic<unsigned int> done{first}, next_lane{0};
         std::mutex                mutex;
         std::string               failure;
         const auto                work = [&]() {
-          const unsigned int t = next_thread++;
           try
             {
-              for (unsigned int l = first + t; l < n_lines; l += n_threads, ++done)
-                line(l, t);
+              for (unsigned int s = next_lane++; s < lanes; s = next_lane++)
+                for (unsigned int l = first + s; l < n_lines; l += n_lanes, ++done)
+                  line(l, s);
             }
           catch (const std::exception &e)
             {
@@ -172,11 +174,10 @@ namespace greentread
            near)
           .push_back(k);
       std::vector<Eigen::MatrixXcd> g(n_lines);
-      const unsigned int            n_threads = line_threads(n_lines);
       // Interpolating pays only with fewer nodes than lines.
       if (far.empty() || n_lines <= Q + 1)
         {
-          for_each_line(0, n_lines, n_threads, "the modes at every line",
+          for_each_line(0, n_lines, "the modes at every line",
                         [&](const unsigned int l, const unsigned int) {
                           g[l] = modes_at(2. * M_PI * l * df);
                         });
@@ -191,7 +192,7 @@ namespace greentread
       const Eigen::VectorXd f_near  = entries(frequency_hz, near),
                             xi_near = entries(damping_ratio, near);
       const Eigen::MatrixXd A_near = rows(shapes, near), B_near = rows(shapes_imag, near);
-      for_each_line(0, n_lines, n_threads, "the modes at every line",
+      for_each_line(0, n_lines, "the modes at every line",
                     [&](const unsigned int l, const unsigned int) {
                       g[l] = modal_part(f_near, xi_near, A_near, B_near, 2. * M_PI * l * df);
                     });
@@ -203,31 +204,29 @@ namespace greentread
       std::vector<Eigen::MatrixXcd> at_node(Q + 1);
       for (unsigned int q = 0; q <= Q; ++q)
         node(q) = std::cos(M_PI * q / Q);
-      for_each_line(0, Q + 1, line_threads(Q + 1), "the modes above the lines",
-                    [&](const unsigned int q, const unsigned int) {
-                      at_node[q] =
-                        modal_part(f_far, xi_far, A_far, B_far, 0.5 * omega_max * (1. + node(q)));
-                    });
+      for_each_line(
+        0, Q + 1, "the modes above the lines", [&](const unsigned int q, const unsigned int) {
+          at_node[q] = modal_part(f_far, xi_far, A_far, B_far, 0.5 * omega_max * (1. + node(q)));
+        });
       // The barycentric formula of the second kind (weights (-1)^q, halved at
       // the ends); a line on a node takes the node's value.
-      for_each_line(0, n_lines, n_threads, "the modes above the lines",
-                    [&](const unsigned int l, const unsigned int) {
-                      const double    x = 2. * (2. * M_PI * l * df) / omega_max - 1.;
-                      Eigen::VectorXd weight(Q + 1);
-                      for (unsigned int q = 0; q <= Q; ++q)
-                        {
-                          if (x == node(q))
-                            {
-                              g[l] += at_node[q];
-                              return;
-                            }
-                          weight(q) =
-                            ((q % 2) ? -1. : 1.) * ((q == 0 || q == Q) ? 0.5 : 1.) / (x - node(q));
-                        }
-                      weight /= weight.sum();
-                      for (unsigned int q = 0; q <= Q; ++q)
-                        g[l] += weight(q) * at_node[q];
-                    });
+      for_each_line(
+        0, n_lines, "the modes above the lines", [&](const unsigned int l, const unsigned int) {
+          const double    x = 2. * (2. * M_PI * l * df) / omega_max - 1.;
+          Eigen::VectorXd weight(Q + 1);
+          for (unsigned int q = 0; q <= Q; ++q)
+            {
+              if (x == node(q))
+                {
+                  g[l] += at_node[q];
+                  return;
+                }
+              weight(q) = ((q % 2) ? -1. : 1.) * ((q == 0 || q == Q) ? 0.5 : 1.) / (x - node(q));
+            }
+          weight /= weight.sum();
+          for (unsigned int q = 0; q <= Q; ++q)
+            g[l] += weight(q) * at_node[q];
+        });
       return g;
     }
 
@@ -292,10 +291,9 @@ namespace greentread
       // R = g - (modes) at each line; R (1 + j w beta) = G_r in the least-squares
       // sense over every pair and line, which is linear in beta:
       // beta = -Re sum conj(j w R) (R - G_r) / sum |w R|^2.
-      const unsigned int  n_threads = line_threads(direct.n_lines);
-      std::vector<double> numerator(n_threads, 0.), denominator(n_threads, 0.);
+      std::vector<double> numerator(n_lanes, 0.), denominator(n_lanes, 0.);
       for_each_line(
-        1, direct.n_lines, n_threads, "fit_residual_relaxation",
+        1, direct.n_lines, "fit_residual_relaxation",
         [&](const unsigned int l, const unsigned int t) {
           const double               omega = 2. * M_PI * l * direct.df;
           const Eigen::MatrixXcd     modal = kept ? lines->g[l] : model.modes_at(omega);
@@ -310,7 +308,7 @@ namespace greentread
               }
         });
       double sum_numerator = 0., sum_denominator = 0.;
-      for (unsigned int t = 0; t < n_threads; ++t)
+      for (unsigned int t = 0; t < n_lanes; ++t)
         {
           sum_numerator += numerator[t];
           sum_denominator += denominator[t];
@@ -390,13 +388,12 @@ namespace greentread
         throw NumericalError("compare: the model has " + std::to_string(model.shapes.cols()) +
                              " points, the Green's functions " + std::to_string(P));
       // Trapezoidal sums of |g - g_model| and |g| over the lines, each
-      // thread's added in thread order (for_each_line). One line costs a few
+      // lane's added in lane order (for_each_line). One line costs a few
       // GFLOP with tens of thousands of modes.
-      const unsigned int           n_threads = line_threads(L);
-      std::vector<Eigen::MatrixXd> difference(n_threads, Eigen::MatrixXd::Zero(P, P)),
+      std::vector<Eigen::MatrixXd> difference(n_lanes, Eigen::MatrixXd::Zero(P, P)),
         size = difference;
-      std::vector<double> passivity(n_threads, 1.), passivity_omega(n_threads, 0.);
-      for_each_line(0, L, n_threads, "compare", [&](const unsigned int l, const unsigned int t) {
+      std::vector<double> passivity(n_lanes, 1.), passivity_omega(n_lanes, 0.);
+      for_each_line(0, L, "compare", [&](const unsigned int l, const unsigned int t) {
         const double           weight = (l == 0 || l + 1 == L) ? 0.5 : 1.;
         const double           omega  = 2. * M_PI * l * direct.df;
         const Eigen::MatrixXcd g_model =
@@ -417,7 +414,7 @@ namespace greentread
             passivity_omega[t] = omega;
           }
       });
-      for (unsigned int t = 1; t < n_threads; ++t)
+      for (unsigned int t = 1; t < n_lanes; ++t)
         {
           difference[0] += difference[t];
           size[0] += size[t];

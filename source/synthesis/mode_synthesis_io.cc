@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/hdf5_writer.h>
 #include <greentread/synthesis/mode_synthesis.h>
 
 #include <deal.II/base/hdf5.h>
@@ -134,7 +135,7 @@ namespace greentread
                       const base::ParameterRecord &record,
                       const std::string           &stage_key)
     {
-      write_hdf5_stage(file, synthesis.points, record, stage_key, [&](dealii::HDF5::File &h5) {
+      write_hdf5_stage(file, synthesis.points, record, stage_key, [&](base::Hdf5Writer &h5) {
         const std::size_t   m = synthesis.n_modes(), n = synthesis.shapes.cols();
         std::vector<double> f(synthesis.frequency_hz.data(), synthesis.frequency_hz.data() + m);
         h5.create_dataset<double>("frequency_hz", {m}).write(f);

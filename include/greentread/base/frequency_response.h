@@ -16,18 +16,12 @@
  * \f$\hat g(\omega) = \int_0^\infty g(t) e^{-j\omega t} dt\f$.
  */
 
-namespace dealii
-{
-  namespace HDF5
-  {
-    class File;
-  }
-} // namespace dealii
-
 namespace greentread
 {
   namespace base
   {
+    class Hdf5Writer;
+
     /**
      * @brief One FRF: values at \f$f_k = k\,\Delta f\f$, k = 0 .. n-1.
      */
@@ -135,13 +129,15 @@ namespace greentread
      * ("points", n x 3), the attribute `parameters` and, unless empty, the
      * attribute `stage_key` are added, and the file is renamed to @p file.
      * A file left unfinished has no key, and is never under its final name.
+     * No object carries a time (base::Hdf5Writer): the same stage writes the
+     * same bytes.
      */
     void
-    write_hdf5_stage(const std::filesystem::path                     &file,
-                     const std::vector<std::array<double, 3>>        &points,
-                     const base::ParameterRecord                     &record,
-                     const std::string                               &stage_key,
-                     const std::function<void(dealii::HDF5::File &)> &fill);
+    write_hdf5_stage(const std::filesystem::path              &file,
+                     const std::vector<std::array<double, 3>> &points,
+                     const base::ParameterRecord              &record,
+                     const std::string                        &stage_key,
+                     const std::function<void(Hdf5Writer &)>  &fill);
 
     /**
      * @brief The `stage_key` attribute of any stage's HDF5 file, or an empty

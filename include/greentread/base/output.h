@@ -2,6 +2,8 @@
 
 #include <greentread/base/parameters.h>
 
+#include <deal.II/base/data_out_base.h>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -46,6 +48,16 @@ namespace greentread
       std::string
       text() const;
     };
+
+    /// deal.II's VTU flags without the date it writes by default: the same
+    /// run then writes the same bytes.
+    inline dealii::DataOutBase::VtkFlags
+    undated_vtk_flags()
+    {
+      dealii::DataOutBase::VtkFlags flags;
+      flags.print_date_and_time = false;
+      return flags;
+    }
 
     /**
      * @brief A file written under a temporary name in the same directory and
