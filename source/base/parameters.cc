@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -163,6 +164,56 @@ namespace greentread
 
 
 
+      /**
+       * Refuse a scene text that sets one parameter twice: deal.II would keep
+       * the last value without a word. Lines continued by a backslash are
+       * joined first, as deal.II joins them.
+       */
+      void
+      check_no_entry_twice(const std::string &text, const std::string &source)
+      {
+        std::vector<std::string>            stack;
+        std::map<std::string, unsigned int> first_line;
+        std::istringstream                  in(text);
+        std::string                         line, joined;
+        unsigned int                        n = 0, start = 0;
+        while (std::getline(in, line))
+          {
+            ++n;
+            if (joined.empty())
+              start = n;
+            const std::string code = line.substr(0, line.find('#'));
+            if (!code.empty() && code.back() == '\\')
+              {
+                joined += code.substr(0, code.size() - 1);
+                continue;
+              }
+            joined += code;
+            const std::string entry = trim(joined);
+            joined.clear();
+            if (entry.rfind("subsection ", 0) == 0)
+              stack.push_back(trim(entry.substr(11)));
+            else if (entry == "end" && !stack.empty())
+              stack.pop_back();
+            else if (entry.rfind("set ", 0) == 0 && entry.find('=') != std::string::npos)
+              {
+                std::string path;
+                for (const auto &s : stack)
+                  path += s + "/";
+                path += collapse_whitespace(trim(entry.substr(4, entry.find('=') - 4)));
+                const auto [it, added] = first_line.emplace(path, start);
+                if (!added)
+                  throw InputError(source + ", line " + std::to_string(start) + ": parameter '" +
+                                   path + "' is set a second time (first on line " +
+                                   std::to_string(it->second) +
+                                   "); allowed: one 'set' per parameter in a scene file (a "
+                                   "--set option on the command line overrides it)");
+              }
+          }
+      }
+
+
+
       void
       parse_text(dealii::ParameterHandler &prm, const std::string &text, const std::string &source)
       {
@@ -296,6 +347,7 @@ namespace greentread
                          "' cannot be opened: it does not exist or is not readable");
       std::stringstream text;
       text << in.rdbuf();
+      check_no_entry_twice(text.str(), filename);
       parse_text(prm, text.str(), filename);
     }
 

@@ -58,9 +58,14 @@ namespace greentread
           throw InputError(
             "parameter 'Rolling/Speeds (kph)' is empty; allowed: a list of speeds in "
             "km/h from 1 to 400");
-        distance         = prm.get_double("Distance");
-        static_load      = prm.get_double("Static load");
-        indentation      = prm.get_double("Indentation");
+        distance    = prm.get_double("Distance");
+        static_load = prm.get_double("Static load");
+        indentation = prm.get_double("Indentation");
+        if (static_load == 0. && indentation == 0.)
+          throw InputError("parameter 'Rolling/Static load' = 0 with 'Rolling/Indentation' = 0 "
+                           "loads the tyre with nothing (the road only touches its lowest "
+                           "point); allowed: a load > 0 N, or 0 with an indentation other "
+                           "than 0");
         static_start     = prm.get_bool("Start from static equilibrium");
         direct_kernel    = prm.get_integer("Direct kernel length");
         frames           = prm.get_integer("Frames");

@@ -9,6 +9,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <regex>
@@ -491,6 +492,19 @@ namespace greentread
         gmsh::open(file);
       });
 
+      // The coordinates are in metres: a section drawn in millimetres would
+      // mesh without a word as a tyre a thousand times too large. Its largest
+      // radius (x; the axis is z) must be a tyre's.
+      {
+        double x0 = 0., y0 = 0., z0 = 0., x1 = 0., y1 = 0., z1 = 0.;
+        gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+        const double radius = std::max(std::abs(x0), std::abs(x1));
+        if (!(radius >= 0.05 && radius <= 2.))
+          throw InputError("geometry file '" + file + "': the section's largest radius is " +
+                           format_short(radius) +
+                           " (x, in the file's units); allowed: 0.05 to 2, the coordinates "
+                           "in metres (a section drawn in millimetres is 1000 times too large)");
+      }
       const PhysicalGroups        groups = read_physical_groups(file);
       gmsh::vectorpair            all_surfaces;
       std::map<int, unsigned int> material_of_surface;

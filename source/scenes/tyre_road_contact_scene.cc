@@ -102,6 +102,28 @@ namespace greentread
       contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                green.patch.points_along * green.patch.points_across);
 
+      // A run's files are named by its road's and speed's labels: two roads
+      // or two speeds with one label would overwrite each other's.
+      const auto once = [](const std::vector<std::string> &labels,
+                           const std::vector<std::string> &given, const std::string &parameter) {
+        for (std::size_t i = 0; i < labels.size(); ++i)
+          for (std::size_t j = 0; j < i; ++j)
+            if (labels[i] == labels[j])
+              throw InputError("parameter '" + parameter + "' gives '" + given[j] + "' and '" +
+                               given[i] + "', whose runs would write the same files (both '" +
+                               labels[i] + "'); allowed: each once");
+      };
+      std::vector<std::string> road_labels, speed_labels, speeds_given;
+      for (const auto &r : roads.roads)
+        road_labels.push_back(analysis::road_label(r));
+      for (const double v : rolling.speeds)
+        {
+          speed_labels.push_back(analysis::speed_label(v));
+          speeds_given.push_back(format_number(v));
+        }
+      once(road_labels, roads.roads, "Road texture/Roads");
+      once(speed_labels, speeds_given, "Rolling/Speeds (kph)");
+
       // The reporting cell must lie in the patch; checked now, not after the
       // Green's functions.
       for (const auto &[name, size, patch_size] :
