@@ -85,14 +85,13 @@ namespace test
     /// The step's LCP measured here from its matrix, demand and force (the
     /// worst over the steps, complementarity.h): the gap's lowest value and
     /// the largest complementarity residual.
+    /// Not measured: the sign of the step's mean force (RollingStep::force,
+    /// built from the LCP's forces and the load shapes, each clamped to 0 or
+    /// more) and what the projection onto z >= 0 removed
+    /// (LcpResult::projected, at most the tolerance by the pivoting solver's
+    /// own stopping rule): neither can fail. A projection that removed a real
+    /// negative force moves w = M z + q, which the two measures above see.
     double lcp_gap = 0., lcp_complementarity = 0.;
-    /// What the projection removed from a converged LCP iterate, at worst
-    /// (LcpResult::projected).
-    double projected = 0.;
-    /// Most negative mean contact force of a step that the program rebuilds
-    /// from the load shapes and their magnitudes (RollingStep::force),
-    /// relative to the largest.
-    double negative_force = 0.;
     /// Largest penetration max(d - u) of the synthesised displacement, and the
     /// largest |u - d| of a point that carries a force, relative to the
     /// largest displacement change max |u - u(0)|.
@@ -118,8 +117,6 @@ namespace test
     std::vector<Eigen::VectorXd> q(1), d(1);
     roll(
       [&](const greentread::contact::RollingStep &s) {
-        const double largest = std::max(s.force.maxCoeff(), 1e-300);
-        c.negative_force     = std::min(c.negative_force, s.force.minCoeff() / largest);
         if (s.report.lcp_matrix)
           {
             const Complementarity lcp =
@@ -127,7 +124,6 @@ namespace test
             c.lcp_gap             = std::min(c.lcp_gap, lcp.gap);
             c.lcp_complementarity = std::max({c.lcp_complementarity, lcp.natural, lcp.product});
           }
-        c.projected = std::max(c.projected, s.report.lcp_projected);
         q.push_back(s.report.lcp_z);
         d.push_back(s.d);
       },
@@ -155,10 +151,9 @@ namespace test
    * converge at every step, have every step's LCP complementary and its gap
    * non-negative when measured here from its matrix (to the pivoting
    * solver's tolerance, 1e-10 of the scale, twice: once for the accepted
-   * iterate, once for its projection), have no mean contact force of a step
-   * below -1e-12 of the largest, keep the synthesised displacement on or above the road and
-   * every loaded point on it (to @p tolerance of the displacement change),
-   * and have a finite mean force.
+   * iterate, once for its projection), keep the synthesised displacement on
+   * or above the road and every loaded point on it (to @p tolerance of the
+   * displacement change), and have a finite mean force.
    */
   inline void
   check_extreme_cases(const greentread::modal::PatchModel &model,
@@ -201,16 +196,12 @@ namespace test
                  << "% to " << 100. * s.max_contact_fraction << "%, mean force " << mean
                  << " N (static " << c.run.load << " N), failed steps " << s.failed_steps
                  << "; LCP measured here: gap down to " << checked.lcp_gap << ", complementarity "
-                 << checked.lcp_complementarity << ", projection " << checked.projected
-                 << "; step force down to " << checked.negative_force
-                 << " of the largest; synthesised displacement: penetration " << checked.penetration
-                 << ", loaded points off the road " << checked.gap_in_contact
+                 << checked.lcp_complementarity << "; synthesised displacement: penetration "
+                 << checked.penetration << ", loaded points off the road " << checked.gap_in_contact
                  << " of the displacement change");
         BOOST_TEST(s.failed_steps == 0u, "first failure: " << s.first_failure);
         BOOST_TEST(checked.lcp_gap >= -2e-10);
         BOOST_TEST(checked.lcp_complementarity <= 2e-10);
-        BOOST_TEST(checked.projected <= 1e-10);
-        BOOST_TEST(checked.negative_force >= -1e-12);
         BOOST_TEST(checked.penetration <= tolerance);
         BOOST_TEST(checked.gap_in_contact <= tolerance);
         BOOST_TEST(std::isfinite(mean));

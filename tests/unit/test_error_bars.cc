@@ -222,10 +222,11 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
                  boost::test_tools::tolerance(1e-12));
       BOOST_TEST(e.run.name == (e.of == 1 ? "low-rate_" : "") +
                                  std::string(step ? "finer_" : "coarser_") + label(e.what));
-      // The section's mesh size doubled: 1 / (2^p - 1) at its order.
+      // The section's mesh size doubled: 1 / (2^p - 1) at its order, 1.5
+      // (doc/methods/analysis.md: chosen from error_bars.sh's three cases,
+      // observed 0.86 to 1.62), written here and not taken from the program.
       if (e.what == analysis::Discretisation::ring_section)
-        BOOST_TEST(e.factor == 1. / (std::pow(2., analysis::ring_section_order) - 1.),
-                   boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(e.factor == 1. / (std::pow(2., 1.5) - 1.), boost::test_tools::tolerance(1e-12));
       else if (e.what != analysis::Discretisation::mode_cutoff)
         BOOST_TEST(e.factor == (step ? 4. / 3. : 1. / (std::pow(2., 1.5) - 1.)),
                    boost::test_tools::tolerance(1e-12));

@@ -26,6 +26,7 @@
 
 #include "csv_rows.h"
 #include "frequency_synthesis.h"
+#include "run_lines.h"
 #include "scratch.h"
 
 #include <greentread/analysis/error_bars.h>
@@ -151,7 +152,7 @@ BOOST_AUTO_TEST_CASE(twice_the_heights_is_six_decibels_where_contact_is_sustaine
                                                   "bars/Estimates=\" --set \"Road texture/Height scale=2\"");
   const fs::path &dir = run.dir;
   BOOST_TEST(run.reused == 2u, run.screen); // the Green's functions and the modes
-  BOOST_TEST(run.screen.find("did not converge: 0,") != std::string::npos, run.screen);
+  test::check_every_run_converged(run.screen, "doubled heights");
 
   const auto [centre, once] = stress_bands(stages);
   const auto [same, twice]  = stress_bands(dir);
@@ -190,9 +191,11 @@ BOOST_AUTO_TEST_CASE(each_band_has_its_error_bars)
       for (unsigned c = 12; c < 16; ++c)
         {
           BOOST_TEST(std::isnan(row[c]) == (f < 1250.), f << " Hz, column " << c);
+          // An estimate is factor |L_other - L_run|, not negative by
+          // construction: what can go wrong is a level that is not finite.
           if (!std::isnan(row[c]))
             {
-              BOOST_TEST(row[c] >= 0.);
+              BOOST_TEST(std::isfinite(row[c]), f << " Hz, column " << c);
               sum += row[c] * row[c];
             }
         }
@@ -224,7 +227,11 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
   const auto fine_rows   = test::read_csv(fine_run.dir / "spectrum_sinusoid_90kmh.csv");
   const auto coarse_rows = test::read_csv(coarse_run.dir / "spectrum_sinusoid_90kmh.csv");
   BOOST_TEST_REQUIRE(fine_rows.size() == coarse_rows.size());
-  const double factor  = analysis::richardson_factor(2., analysis::ring_section_order);
+  // Richardson's factor for the section's mesh size doubled at order 1.5,
+  // the order doc/methods/analysis.md gives the ring section (chosen from
+  // error_bars.sh's three cases, observed 0.86 to 1.62), written here and not
+  // taken from the program's constant, so that a change of it shows.
+  const double factor  = 1. / (std::pow(2., 1.5) - 1.);
   double       highest = -1e300;
   for (const auto &row : fine_rows)
     highest = std::max(highest, row[5]);
@@ -240,7 +247,9 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
           continue;
         }
       ++estimated;
-      BOOST_TEST(estimate >= 0., f << " Hz");
+      // Present and finite (factor |L_coarse - L_fine| is not negative by
+      // construction; its value is checked in the sinusoid's band below).
+      BOOST_TEST(std::isfinite(estimate), f << " Hz");
       const double difference = std::abs(fine_rows[b][5] - coarse_rows[b][5]);
       BOOST_TEST_MESSAGE(f << " Hz (" << fine_rows[b][5] - highest
                            << " dB from the highest): estimate " << estimate << " dB, " << factor

@@ -1,6 +1,7 @@
 // The patch model (shared poles, residues of every pair): fitted to the
 // frequency responses of a known modal system, it must give them back.
 
+#include "bounds.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/modal/patch_model.h>
@@ -164,7 +165,9 @@ BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovere
           }
       }
   BOOST_TEST_MESSAGE("instantaneous residual: worst |g_model - g| = " << worst << " of " << scale);
-  BOOST_TEST(worst < 1e-4 * scale);
+  // The system is one the model represents exactly: measured 3.8e-14 of the
+  // scale; round-off, which differs between machines, so 10 times that.
+  CHECK_BOUND(worst / scale, 4e-13);
 }
 
 BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)

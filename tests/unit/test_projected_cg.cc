@@ -22,6 +22,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "bounds.h"
 #include "complementarity.h"
 #include "contact_grid_fixture.h"
 #include "grid_roll.h"
@@ -147,7 +148,8 @@ BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
       BOOST_TEST(c.gap >= -1e-9);
       BOOST_TEST(c.natural <= 1e-9);
       BOOST_TEST(c.product <= 1e-9);
-      BOOST_TEST(mprgp.residual < 1e-9);
+      // mprgp.residual, the solver's own natural residual, is not asserted:
+      // its stopping rule on the projected gradient holds it below 1e-10.
     }
 
   // The LCP of a 480-point grid (10 x 12 cells, 2 x 2 points each) for a
@@ -185,11 +187,18 @@ BOOST_AUTO_TEST_CASE(mprgp_against_pivoting_and_siconos)
   BOOST_TEST(warm.iterations < again.iterations);
   BOOST_TEST(test::relative_difference(warm.z, pivoting.z, W, -d2) < 1e-8);
   BOOST_TEST(test::relative_difference(warm.z, reference.z, W, -d2) < 1e-8);
-  // Its gap where in contact, and no point inside the road, to tau |q|.
-  const Eigen::VectorXd w = W * warm.z - d2;
-  for (unsigned int i = 0; i < grid.n_points(); ++i)
-    BOOST_TEST(std::abs(std::min(warm.z[i] > 0. ? std::abs(w[i]) : w[i], 0.)) <=
-               1.01e-10 * d2.cwiseAbs().maxCoeff());
+  // The returned forces measured here, w = W z + q formed from the dense
+  // compliance (not the solver's FFT products): no point inside the road, no
+  // force negative, none where the gap is open. Measured, relative to |q|:
+  // the deepest penetration 3.9e-13, the natural residual 4.2e-13, the
+  // largest z w 7.3e-14, far below the solver's stopping rule (its projected
+  // gradient at 1e-10 of |q|): its last iterations converge fast. Bounds
+  // about 5 times each, for another processor's round-off; a solver that
+  // stopped at its tolerance would fail them.
+  const test::Complementarity c = test::complementarity(W, -d2, warm.z);
+  CHECK_BOUND(-c.gap, 2e-12);
+  CHECK_BOUND(c.natural, 2e-12);
+  CHECK_BOUND(c.product, 4e-13);
 }
 
 BOOST_AUTO_TEST_CASE(mprgp_edge_cases_and_failures)
@@ -258,7 +267,8 @@ BOOST_AUTO_TEST_CASE(rolling_by_both_solvers)
   BOOST_TEST(summary[0].failed_steps == 0u);
   BOOST_TEST(summary[1].failed_steps == 0u);
   BOOST_TEST(summary[1].max_contact_fraction > summary[1].min_contact_fraction);
-  BOOST_TEST(worst < 1e-7 * peak);
+  // Both solve to 1e-10: measured 1.3e-10 of the peak, the bound 3 times that.
+  CHECK_BOUND(worst / peak, 4e-10);
 
   // The default 'Contact grid/Tolerance' (1e-6): each force within the
   // tolerance times the compliance's spread of the exact one. Measured

@@ -8,6 +8,7 @@
 // - a flat road from the static equilibrium stays there;
 // - the stiff and extreme cases stay sound.
 
+#include "bounds.h"
 #include "patch_rolling.h"
 #include "siconos_reference.h"
 
@@ -161,7 +162,9 @@ BOOST_AUTO_TEST_CASE(flat_road_from_the_static_equilibrium_stays_there_on_the_ty
   BOOST_TEST_MESSAGE("flat road: the forces stay within " << drift << " N of the static "
                                                           << q0.sum() << " N");
   BOOST_TEST(summary.failed_steps == 0u);
-  BOOST_TEST(drift <= 1e-9 * q0.cwiseAbs().maxCoeff());
+  // Measured 6.6e-14 of the largest static force: round-off, which differs
+  // between machines, so 10 times that.
+  CHECK_BOUND(drift / q0.cwiseAbs().maxCoeff(), 7e-13);
 }
 
 BOOST_AUTO_TEST_CASE(stiff_and_extreme_cases_stay_sound_on_the_tyre)
