@@ -255,27 +255,22 @@ BOOST_AUTO_TEST_CASE(the_ring_section_estimate_is_the_coarser_sections_scaled_di
                            << " dB from the highest): estimate " << estimate << " dB, " << factor
                            << " x |" << fine_rows[b][5] << " - " << coarse_rows[b][5]
                            << "| = " << factor * difference << " dB");
-      // Two runs of one model agree to rounding only: the lattice
-      // convolution's FFTW plans are measured (FFTW_MEASURE), so their
-      // rounding differs from run to run, and every band but the
-      // sinusoid's (630 Hz) is 37 to 75 dB below it, at the level of the
-      // contact solve's noise: between two runs of the coarser section
-      // those bands moved by up to 0.1 dB (8e-4 dB at 500 Hz, 2e-3 dB at
-      // 1250 Hz, both about 38 dB down). In the sinusoid's band the
-      // estimate and 'factor' x the difference agreed to 5e-6 and 6e-6 dB
-      // in two runs. The bound, 1e-4 dB, sits above that scatter and far
-      // below what a regression moves: the estimate there is 0.0021 dB;
-      // order 2 instead of 1.5 moves it by 8e-4 dB, the fine section's
-      // model in place of the coarser one's by all of it.
+      // The estimate is 'factor' x the difference of the two sections' runs,
+      // and the test's run of the coarser section is the same computation
+      // as the one inside the estimate: runs give the same bytes (the FFT
+      // plans are estimated, the sums in a fixed order), so in every band
+      // they agree to the CSV's printed digits (levels to about 1e-10 dB).
+      // The bound, 1e-8 dB, is those digits with a margin; a regression
+      // moves far more: order 2 instead of 1.5 moves the sinusoid's band's
+      // estimate (0.0021 dB) by 8e-4 dB, the fine section's model in place
+      // of the coarser one's by all of it.
+      BOOST_TEST(std::abs(estimate - factor * difference) < 1e-8, f << " Hz");
+      ++compared;
       if (fine_rows[b][5] >= highest - 20.)
-        {
-          BOOST_TEST(std::abs(estimate - factor * difference) < 1e-4, f << " Hz");
-          BOOST_TEST(estimate > 1e-3, f << " Hz"); // 0.0021 dB: the two sections do differ
-          ++compared;
-        }
+        BOOST_TEST(estimate > 1e-3, f << " Hz"); // 0.0021 dB: the two sections do differ
     }
   BOOST_TEST(estimated == 14u); // 250 to 5000 Hz
-  BOOST_TEST(compared == 1u);   // 630 Hz
+  BOOST_TEST(compared == 14u);  // every one of them
 }
 
 BOOST_AUTO_TEST_CASE(no_point_enters_the_road_by_the_frequency_domain_synthesis)
