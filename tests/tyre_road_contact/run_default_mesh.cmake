@@ -9,17 +9,8 @@ execute_process(
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "the default-mesh pipeline failed (${status}):\n${out}\n${err}")
 endif()
-# Each run prints a line 'run <name>: V0 = ...' as it starts and one with
-# 'steps the contact solve did not converge: <n>,' as it ends: every run's
-# must say 0.
-string(REGEX MATCHALL "run [^ \n]+: V0 = " runs "${out}")
-string(REGEX MATCHALL "steps the contact solve did not converge: 0," converged "${out}")
-list(LENGTH runs n_runs)
-list(LENGTH converged n_converged)
-if(n_runs EQUAL 0 OR NOT n_converged EQUAL n_runs OR out MATCHES "did not converge: [1-9]")
-  message(FATAL_ERROR "a contact step did not converge: ${n_converged} of ${n_runs} runs "
-    "say 'did not converge: 0,':\n${out}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/every_run_converged.cmake)
+every_run_converged("${out}")
 # The identified model of this tyre is not passive: the run warns, with the
 # figure, and rolls it because the scene allows it (unit/main_job_output
 # measures the figure again).

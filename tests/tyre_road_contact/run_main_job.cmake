@@ -51,17 +51,8 @@ require("the contact solved by projected CG on the candidate points \\(matrix-fr
 if(out MATCHES "the contact solved by (block principal pivoting|projected CG on the whole grid)")
   message(FATAL_ERROR "a contact grid not solved by projected CG on the candidate points:\n${out}")
 endif()
-# Each run prints a line 'run <name>: V0 = ...' as it starts and one with
-# 'steps the contact solve did not converge: <n>,' as it ends: every run's
-# must say 0.
-string(REGEX MATCHALL "run [^ \n]+: V0 = " runs "${out}")
-string(REGEX MATCHALL "steps the contact solve did not converge: 0," converged "${out}")
-list(LENGTH runs n_runs)
-list(LENGTH converged n_converged)
-if(n_runs EQUAL 0 OR NOT n_converged EQUAL n_runs OR out MATCHES "did not converge: [1-9]")
-  message(FATAL_ERROR "a contact step did not converge: ${n_converged} of ${n_runs} runs "
-    "say 'did not converge: 0,':\n${out}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/every_run_converged.cmake)
+every_run_converged("${out}")
 require("run sinusoid_90kmh_low-rate: V0 = 90 km/h, dt = 76.8 us, [0-9.]+ m, [0-9]+ steps, modal-recursive, for the bands up to 1000 Hz"
         "not the multi-rate spectra (a low-rate run at 76.8 us for the bands to 1 kHz)")
 # Each run rolls on to its bands' standard errors (Spectra/Extend runs): the
