@@ -26,7 +26,9 @@ namespace greentread
                           "along x, subsection Road/Sinusoid); 'flat'; or a texture file: SDF "
                           "(ISO 25178-71, ASCII or binary) or the plain height grid "
                           "(doc/getting-started.md). A relative file name is looked for "
-                          "beside the scene file, then in the working directory.");
+                          "beside the scene file, then in the working directory. A road's "
+                          "samples may be at most 4 contact rectangles apart (3 mm at the "
+                          "default grid).");
         prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0),
                           "Seed of the synthetic textures: the same seed gives the same road.");
         prm.declare_entry("Length", "2.304", base::RangePattern::closed(0.05, 20., "m"),

@@ -159,8 +159,17 @@ namespace greentread
                                format_short(std::max(0., usable)) + " m: the file is " +
                                format_short(t.length()) + " m long, the patch " +
                                format_short(green.patch.length) + " m)");
+            check_road_spacing("texture file '" + name + "'", t.dx, t.ny > 1 ? t.dy : 0.);
             texture_files.emplace(name, std::move(t));
           }
+
+      // The built-in roads' samples ('flat' has no facets to refine; a
+      // sinusoid is the same across).
+      for (const auto &name : roads.roads)
+        if (road::RoadTextureParameters::is_built_in(name) && name != "flat")
+          check_road_spacing("parameter 'Road texture/Spacing' = " +
+                               format_number(roads.spacing) + " m (road '" + name + "')",
+                             roads.spacing, name == "sinusoid" ? 0. : roads.spacing);
 
       // The spectra of each run, checked now rather than after the run: the
       // time step must resolve the 100 Hz band, and the record must be long
@@ -313,6 +322,33 @@ namespace greentread
     {
       const auto file = texture_files.find(road_name);
       return file != texture_files.end() ? file->second.dx : roads.spacing;
+    }
+
+
+
+    void
+    TyreRoadContactScene::check_road_spacing(const std::string &what,
+                                             const double       dx,
+                                             const double       dy) const
+    {
+      // The contact rectangle at the scene's subdivisions, from the
+      // parameters (the grid is made after the Green's functions).
+      constexpr double rectangles = 4.;
+      const double     along =
+        green.patch.length / (double(green.patch.points_along) * contact_grid.subdivisions);
+      const double across =
+        green.patch.width / (double(green.patch.points_across) * contact_grid.subdivisions);
+      for (const auto &[name, spacing, rectangle] :
+           {std::tuple<const char *, double, double>{"along", dx, along}, {"across", dy, across}})
+        if (spacing > rectangles * rectangle * (1. + 1e-9))
+          throw InputError(what + ": samples " + format_number(1e3 * spacing) + " mm apart " +
+                           name + " the road, too coarse for the contact grid's rectangles of " +
+                           format_printf("%.3g", 1e3 * rectangle) +
+                           " mm ('Contact grid/Subdivisions' = " +
+                           std::to_string(contact_grid.subdivisions) + "); allowed: at most " +
+                           format_printf("%.3g", 1e3 * rectangles * rectangle) +
+                           " mm (4 rectangles): the grid would refine straight facets "
+                           "between samples, which no error bar covers");
     }
 
 

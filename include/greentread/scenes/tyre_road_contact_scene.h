@@ -118,6 +118,14 @@ namespace greentread
       double
       road_spacing(const std::string &road_name) const;
 
+      /// Throws InputError naming @p what (a texture file, or 'Road
+      /// texture/Spacing') unless its samples @p dx along and @p dy across
+      /// (0: one profile) are at most 4 contact rectangles apart: coarser,
+      /// the grid would refine straight facets between samples, and no error
+      /// bar would cover the road's sampling.
+      void
+      check_road_spacing(const std::string &what, double dx, double dy) const;
+
       /// Prints the contact grid, its solver, the reporting cell, and how far
       /// @p model's static compliance is from the structure's @p G0.
       void
