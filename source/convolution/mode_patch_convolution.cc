@@ -22,6 +22,28 @@ namespace greentread
     {
       using internal::PoleWeights;
 
+      /// A sum over the shapes [0, @p m) in two halves, @p first over [0, m /
+      /// 2) on a task when @p threads > 1 and @p second over [m / 2, m) here:
+      /// split the same way whatever the thread count, so that the sum's
+      /// bytes do not depend on it.
+      template <typename First, typename Second>
+      void
+      in_two_halves(const unsigned int threads, const Eigen::Index m, First &&first, Second &&second)
+      {
+        const Eigen::Index half = m / 2;
+        if (threads > 1)
+          {
+            auto task = dealii::Threads::new_task([&]() { first(Eigen::Index(0), half); });
+            second(half, m);
+            task.join();
+          }
+        else
+          {
+            first(Eigen::Index(0), half);
+            second(half, m);
+          }
+      }
+
       /// The recursion for a rank-one model, with its time blocks: the
       /// method is in mode_patch_convolution.h.
       template <typename Shape>
@@ -124,25 +146,14 @@ namespace greentread
               loads_t.row(n_loads++) = load.component[g].transpose().template cast<Shape>();
             }
           end_load = load.component[2];
-          // Two halves summed, on two threads or one: the sum is split the
-          // same way whatever the thread count, so its bytes do not depend on it.
-          const Eigen::Index m = hr.size(), half = m / 2;
-          if (half > 64)
+          // Two halves summed, on two threads or one (in_two_halves).
+          const Eigen::Index m = hr.size();
+          if (m / 2 > 64)
             {
               Eigen::MatrixXd first(n_p, 2);
-              if (threads > 1)
-                {
-                  auto task = dealii::Threads::new_task([&]() {
-                    sweep(0, half, first);
-                  });
-                  sweep(half, m, uv);
-                  task.join();
-                }
-              else
-                {
-                  sweep(0, half, first);
-                  sweep(half, m, uv);
-                }
+              in_two_halves(
+                threads, m, [&](const Eigen::Index a, const Eigen::Index b) { sweep(a, b, first); },
+                [&](const Eigen::Index a, const Eigen::Index b) { sweep(a, b, uv); });
               uv += first;
             }
           else
@@ -374,24 +385,17 @@ namespace greentread
         block_pass(const bool next)
         {
           // Split as history() splits its sum, whatever the thread count.
-          const Eigen::Index m = hr.size(), half = m / 2;
-          if (half > 64)
+          const Eigen::Index m = hr.size();
+          if (m / 2 > 64)
             {
               Eigen::MatrixXd first = Eigen::MatrixXd::Zero(n_p, J);
               block_hist.setZero(n_p, J);
-              if (threads > 1)
-                {
-                  auto task = dealii::Threads::new_task([&]() {
-                    block_sweep(0, half, next, first);
-                  });
-                  block_sweep(half, m, next, block_hist);
-                  task.join();
-                }
-              else
-                {
-                  block_sweep(0, half, next, first);
-                  block_sweep(half, m, next, block_hist);
-                }
+              in_two_halves(
+                threads, m,
+                [&](const Eigen::Index a, const Eigen::Index b) { block_sweep(a, b, next, first); },
+                [&](const Eigen::Index a, const Eigen::Index b) {
+                  block_sweep(a, b, next, block_hist);
+                });
               block_hist += first;
             }
           else
