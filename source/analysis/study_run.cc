@@ -140,6 +140,12 @@ namespace greentread
             << format_printf("%.2g", summary.max_penetration)
             << " m, steps the contact solve did not converge: " << failed_steps
             << ", point-steps on the fallback: " << summary.fallback_points << '\n';
+        if (summary.candidate_steps > 0)
+          out << "    " << run << ": candidate set: up to " << summary.max_candidates
+              << " points; points joined it during the solve at " << summary.grown_steps << " of "
+              << summary.candidate_steps << " steps, it started smaller than the last step's at "
+              << summary.shrunk_steps << ", the whole grid solved instead at "
+              << summary.whole_grid_steps << '\n';
         if (print_timings)
           out << "    " << run << ": " << format_printf("%.3g", seconds) << " s, "
               << format_printf("%.3g", 1e3 * seconds / n_steps) << " ms per step\n";

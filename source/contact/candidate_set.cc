@@ -26,7 +26,7 @@ namespace greentread
                             const Eigen::VectorXd   &q,
                             const Eigen::VectorXd   &start,
                             ProjectedCgOptions       options,
-                            unsigned int            *candidates)
+                            CandidateSetReport      *report)
     {
       const Eigen::Index n = q.size();
       check_lcp_input(q, start, "candidate-set contact");
@@ -45,6 +45,8 @@ namespace greentread
             in_set[i] = 1;
             joined.push_back(i);
           }
+      if (report != nullptr)
+        *report = {unsigned(joined.size()), unsigned(joined.size()), false};
       Eigen::VectorXd z =
         start.size() == n ? Eigen::VectorXd(start.cwiseMax(0.)) : Eigen::VectorXd::Zero(n);
       LcpResult              result;
@@ -58,8 +60,11 @@ namespace greentread
           if (2. * size > n || size * size > dense_limit * n)
             {
               // Too many candidates: the whole-grid solve is cheaper.
-              if (candidates != nullptr)
-                *candidates = set.size() + joined.size();
+              if (report != nullptr)
+                {
+                  report->end        = set.size() + joined.size();
+                  report->whole_grid = true;
+                }
               result = solve_lcp_projected_cg(W, q, z, options);
               result.iterations += products;
               return result;
@@ -77,8 +82,8 @@ namespace greentread
               set.insert(set.end(), joined.begin(), joined.end());
               joined.clear();
             }
-          if (candidates != nullptr)
-            *candidates = m;
+          if (report != nullptr)
+            report->end = m;
           if (m > 0)
             {
               q_set.resize(m);

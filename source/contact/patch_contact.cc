@@ -91,7 +91,9 @@ namespace greentread
         throw NumericalError("patch contact: the force of the last step is not finite (largest "
                              "|q| " +
                              format_short(previous_end.cwiseAbs().maxCoeff()) + ")");
-      LcpResult lcp;
+      LcpResult          lcp;
+      CandidateSetReport candidates;
+      bool               candidate_set = false;
       if (matrix_free)
         {
           ProjectedCgOptions options;
@@ -101,8 +103,13 @@ namespace greentread
             y.setZero(x.size());
             psi.add_u(2, x, y);
           };
-          lcp = psi.block_u ? solve_lcp_candidate_set(W, psi.block_u, q, previous_end, options) :
-                              solve_lcp_projected_cg(W, q, previous_end, options);
+          if (psi.block_u)
+            {
+              lcp = solve_lcp_candidate_set(W, psi.block_u, q, previous_end, options, &candidates);
+              candidate_set = true;
+            }
+          else
+            lcp = solve_lcp_projected_cg(W, q, previous_end, options);
         }
       else
         {
@@ -118,6 +125,8 @@ namespace greentread
       report.outer_iterations = 1;
       report.lcp_iterations   = lcp.iterations;
       report.converged        = lcp.converged;
+      report.candidates       = candidates;
+      report.candidate_set    = candidate_set;
       if (!lcp.converged)
         report.message = "LCP: " + lcp.message;
       for (auto &c : load.component)
@@ -293,7 +302,7 @@ namespace greentread
       RollingSummary         summary;
       RollingStep            s;
       s.d.resize(n);
-      unsigned int total = n_steps;
+      unsigned int total = n_steps, last_candidates = 0;
       for (unsigned int k = 0;; ++k)
         {
           // At the record's end: on, if asked for more.
@@ -344,6 +353,16 @@ namespace greentread
           summary.max_contact_fraction = std::max(summary.max_contact_fraction, fraction);
           summary.impulse += s.force.sum() * dt;
           summary.max_penetration = std::max(summary.max_penetration, (s.d - s.u).maxCoeff());
+          if (s.report.candidate_set)
+            {
+              const auto &set = s.report.candidates;
+              ++summary.candidate_steps;
+              summary.max_candidates = std::max(summary.max_candidates, set.end);
+              summary.grown_steps += set.end > set.start;
+              summary.shrunk_steps += k > 0 && set.start < last_candidates;
+              summary.whole_grid_steps += set.whole_grid;
+              last_candidates = set.end;
+            }
           if (observe)
             observe(s);
         }

@@ -114,9 +114,9 @@ BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
   const Eigen::VectorXd       d2 = d + 2e-6 * random_vector(n, 2);
   contact::ProjectedCgOptions options;
   options.operator_norm = contact::operator_norm(product, n);
-  unsigned int cold_set = 0, warm_set = 0;
-  const auto   cold = contact::solve_lcp_candidate_set(product, block, -d, {}, options, &cold_set);
-  const auto   warm =
+  contact::CandidateSetReport cold_set, warm_set;
+  const auto cold = contact::solve_lcp_candidate_set(product, block, -d, {}, options, &cold_set);
+  const auto warm =
     contact::solve_lcp_candidate_set(product, block, -d2, cold.z, options, &warm_set);
   const auto        whole = contact::solve_lcp_projected_cg(product, -d2, cold.z, options);
   std::vector<bool> none;
@@ -130,16 +130,17 @@ BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
   const double against_pivoting = test::relative_difference(warm.z, pivoting.z, W, -d2);
   const double against_whole    = test::relative_difference(warm.z, whole.z, W, -d2);
   BOOST_TEST_MESSAGE(n << " points, " << n_active << " in contact, " << n_demand
-                       << " with the road above them: candidates " << cold_set << " cold, "
-                       << warm_set << " warm; products " << cold.iterations << " cold, "
+                       << " with the road above them: candidates " << cold_set.end << " cold, "
+                       << warm_set.end << " warm; products " << cold.iterations << " cold, "
                        << warm.iterations << " warm (whole grid " << whole.iterations
                        << "); against pivoting " << against_pivoting << ", against the whole "
                        << "grid " << against_whole);
   BOOST_TEST(cold.converged);
   BOOST_TEST(warm.converged);
   BOOST_TEST(n_active > 20u);
-  BOOST_TEST(warm_set < n / 2);
-  BOOST_TEST(warm_set >= n_active);
+  BOOST_TEST(warm_set.end < n / 2);
+  BOOST_TEST(warm_set.end >= n_active);
+  BOOST_TEST(!warm_set.whole_grid);
   BOOST_TEST(against_pivoting < 5e-11);
   BOOST_TEST(against_whole < 5e-11);
   // The returned forces measured here, w = W z + q formed from the dense
@@ -169,13 +170,50 @@ BOOST_AUTO_TEST_CASE(a_point_pulled_into_the_road_joins_the_set)
   const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     y = W * x;
   };
-  unsigned int set = 0;
-  const auto   r   = contact::solve_lcp_candidate_set(product, dense_block(W), q, {}, {}, &set);
+  contact::CandidateSetReport set;
+  const auto r = contact::solve_lcp_candidate_set(product, dense_block(W), q, {}, {}, &set);
   BOOST_TEST(r.converged);
-  BOOST_TEST(set == 2u);
+  BOOST_TEST(set.start == 1u);
+  BOOST_TEST(set.end == 2u);
+  BOOST_TEST(set.whole_grid); // 2 of 2 points: more than half the grid
   BOOST_TEST(std::abs(r.z[0] - 19. / 15.) < 1e-9);
   BOOST_TEST(std::abs(r.z[1] - 8. / 15.) < 1e-9);
   BOOST_TEST(r.w.cwiseAbs().maxCoeff() < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(a_point_pulled_in_just_past_the_tolerance_joins_the_set)
+{
+  // The same pair of points among four open ones (so that the set, 2 of 6,
+  // stays below the whole-grid limit), q = (-1, 1/2 - 10 tau, 1, 1, 1, 1)
+  // with tau = 1e-10 (the default tolerance, |q| = 1): point 0 alone pulls
+  // point 1 into the road by 10 tau only, 10 times the join threshold. It
+  // must join: the answer is z = (1 + 2/3 10 tau, 4/3 10 tau, 0, 0, 0, 0). A
+  // threshold 1000 times too lax leaves z_1 = 0 with point 1 inside the road
+  // by 10 tau. Measured: z_1 2.1e-25 from the closed form (1.6e-16 of it),
+  // z_0 exact, no penetration at point 1: round-off, so the bounds are about
+  // 10 times round-off, 2e-15 of z_1 and of |q|.
+  Eigen::MatrixXd W = Eigen::MatrixXd::Identity(6, 6);
+  W(0, 1) = W(1, 0) = -0.5;
+  const double    tau = contact::ProjectedCgOptions().tolerance;
+  Eigen::VectorXd q   = Eigen::VectorXd::Ones(6);
+  q[0]                = -1.;
+  q[1]                = 0.5 - 10. * tau;
+  const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+    y = W * x;
+  };
+  contact::CandidateSetReport set;
+  const auto r = contact::solve_lcp_candidate_set(product, dense_block(W), q, {}, {}, &set);
+  const Eigen::VectorXd exact = -W.inverse() * q;
+  BOOST_TEST_MESSAGE("z_1 " << r.z[1] << " against " << exact[1] << ": difference "
+                            << std::abs(r.z[1] - exact[1]) << "; gap at point 1 "
+                            << (W * r.z + q)[1]);
+  BOOST_TEST(r.converged);
+  BOOST_TEST(set.start == 1u);
+  BOOST_TEST(set.end == 2u);
+  BOOST_TEST(!set.whole_grid);
+  CHECK_BOUND(std::abs(r.z[1] - exact[1]), 2e-15 * exact[1]);
+  CHECK_BOUND(std::abs(r.z[0] - exact[0]), 2e-15 * exact[0]);
+  CHECK_BOUND(-(W * r.z + q)[1], 2e-15);
 }
 
 BOOST_AUTO_TEST_CASE(edge_cases)
@@ -185,11 +223,12 @@ BOOST_AUTO_TEST_CASE(edge_cases)
     y = W * x;
   };
   // No point below the road: no candidate, one product to check it, z = 0.
-  unsigned int set  = 99;
-  const auto   none = contact::solve_lcp_candidate_set(product, dense_block(W),
-                                                       Eigen::VectorXd::Ones(6), {}, {}, &set);
+  contact::CandidateSetReport set{99, 99, true};
+  const auto none = contact::solve_lcp_candidate_set(product, dense_block(W),
+                                                     Eigen::VectorXd::Ones(6), {}, {}, &set);
   BOOST_TEST(none.converged);
-  BOOST_TEST(set == 0u);
+  BOOST_TEST(set.end == 0u);
+  BOOST_TEST(!set.whole_grid);
   BOOST_TEST(none.iterations == 1u);
   BOOST_TEST(none.z.cwiseAbs().maxCoeff() == 0.);
   // Every point below it: more than half the grid, so the whole-grid solve,
@@ -197,7 +236,8 @@ BOOST_AUTO_TEST_CASE(edge_cases)
   const auto all = contact::solve_lcp_candidate_set(product, dense_block(W),
                                                     -Eigen::VectorXd::Ones(6), {}, {}, &set);
   BOOST_TEST(all.converged);
-  BOOST_TEST(set == 6u);
+  BOOST_TEST(set.end == 6u);
+  BOOST_TEST(set.whole_grid);
   BOOST_TEST((all.z - Eigen::VectorXd::Constant(6, 0.5)).cwiseAbs().maxCoeff() < 1e-12);
   // Bad input.
   BOOST_CHECK_THROW(contact::solve_lcp_candidate_set(product, dense_block(W),

@@ -55,6 +55,15 @@ namespace greentread
                                              const std::vector<unsigned int> &columns,
                                              Eigen::MatrixXd                 &out)>;
 
+    /// What a candidate-set solve did with its set.
+    struct CandidateSetReport
+    {
+      /// |N| from q and the start (step 1), and at the end.
+      unsigned int start = 0, end = 0;
+      /// Whether N grew past the dense limit and the whole grid was solved.
+      bool whole_grid = false;
+    };
+
     /**
      * @brief The LCP of projected_cg.h on the candidate set of the file
      * documentation.
@@ -63,7 +72,7 @@ namespace greentread
      * @param[in] q, start, options As solve_lcp_projected_cg();
      *            options.operator_norm (\f$\|W\|_2\f$, which bounds every
      *            block's) is computed if 0.
-     * @param[out] candidates If not null: |N| at the end.
+     * @param[out] report If not null: the set at the start and at the end.
      * @return As solve_lcp_projected_cg(); LcpResult::iterations counts the
      *         products with the blocks and with W.
      */
@@ -73,6 +82,6 @@ namespace greentread
                             const Eigen::VectorXd   &q,
                             const Eigen::VectorXd   &start,
                             ProjectedCgOptions       options,
-                            unsigned int            *candidates = nullptr);
+                            CandidateSetReport      *report = nullptr);
   } // namespace contact
 } // namespace greentread

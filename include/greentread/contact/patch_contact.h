@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/contact/candidate_set.h>
 #include <greentread/contact/kinematic_contact.h>
 #include <greentread/contact/lcp.h>
 #include <greentread/convolution/patch_convolution.h>
@@ -49,6 +50,10 @@ namespace greentread
       Eigen::VectorXd        lcp_q, lcp_z;
       /// LcpResult::projected of that LCP.
       double lcp_projected = 0.;
+      /// The candidate-set solver's set (candidate_set.h); all 0 with the
+      /// other solvers.
+      CandidateSetReport candidates;
+      bool               candidate_set = false;
     };
 
     /**
@@ -144,6 +149,14 @@ namespace greentread
       double impulse = 0.;
       /// Largest penetration \f$\max(d - u)\f$ at a step's end [m].
       double max_penetration = 0.;
+      /// The candidate-set solver's sets (candidate_set.h), all 0 with the
+      /// other solvers: the steps it solved, the largest set at a step's
+      /// end, the steps at which points joined the set during the solve
+      /// (pulled into the road by the others), those whose set started
+      /// smaller than the last step's ended (points that left the contact),
+      /// and those solved on the whole grid instead.
+      unsigned int candidate_steps = 0, max_candidates = 0, grown_steps = 0, shrunk_steps = 0,
+                   whole_grid_steps = 0;
     };
 
     /**
