@@ -40,7 +40,7 @@ namespace greentread
       std::vector<char>         in_set(n, 0);
       std::vector<unsigned int> set, joined;
       for (Eigen::Index i = 0; i < n; ++i)
-        if (q[i] < 0. || (start.size() == n && start[i] > 0.))
+        if (q[i] < 0.)
           {
             in_set[i] = 1;
             joined.push_back(i);
