@@ -18,11 +18,24 @@
 #   [FINER_SECTION=DIR] [FINER_CUTOFF=DIR] [COARSER_CUTOFF=DIR] bash benchmarks/error_bars/error_bars.sh \
 #     [--quick] [--output DIR] [output directory of the main job] [program] [cases] [discretisations]
 #
-# cases: any of "default texture-file load" (default: all three):
+# cases: any of "default texture-file load section" (default: the first three):
 #   default       road-A at 90 km/h, 600 N (the main job's first road)
 #   texture-file  the worked example's texture file (make_example_road, 1 mm
 #                 grid, 0.8 m) at 50 km/h
 #   load          road-B at 50 km/h under 900 N
+#   section       another tyre section, road-A at 70 km/h under 600 N: a
+#                 185/65 R13 on a 5 in rim (tread 185 mm wide, section 195 mm
+#                 wide and 120.25 mm high), its tread surface falling 3 mm from
+#                 the crown to the tread's edges ('Crown drop', a constant of
+#                 the .geo through 'Geometry/Other constants'); the settings
+#                 are $section_geometry below. It was not one of the three
+#                 cases that chose the ring section's order. Its stages are
+#                 not the main job's: it runs alone, the first positional
+#                 argument the output directory of a run of the program with
+#                 $section_geometry and the default 'Error bars/Estimates',
+#                 and FINER_SECTION (and FINER_CUTOFF, COARSER_CUTOFF) made
+#                 with $section_geometry too (benchmarks/error_bars/README.md
+#                 gives the commands).
 # discretisations: any of "time_step contact_grid mode_cutoff ring_section"
 #   (default: the first two, which need only the main job's stages).
 #   mode_cutoff needs FINER_CUTOFF: the output directory of a run of the
@@ -52,6 +65,11 @@
 # build/benchmark-output/error_bars): the rows 'band', one per band, and
 # 'rms', the line under each table; a figure a row does not have is 'none'.
 set -euo pipefail
+# The case 'section''s tyre: every run of it, and the runs that make its
+# stages, take these settings (the stages are keyed on them).
+section_geometry=(--set "Geometry/Tread width=0.185" --set "Geometry/Section width=0.195"
+                  --set "Geometry/Section height=0.12025" --set "Geometry/Rim width=0.127"
+                  --set "Geometry/Other constants=Crown drop=0.003")
 
 source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
 parse_options error_bars.sh "$@"
@@ -69,9 +87,19 @@ if $quick; then
   refined_subdivisions=4 refined_cutoff=5000
 fi
 for c in $cases; do
-  [[ " default texture-file load " == *" $c "* ]] ||
-    input_error "error_bars.sh: case '$c' (the third positional argument); allowed: default, texture-file, load"
+  [[ " default texture-file load section " == *" $c "* ]] ||
+    input_error "error_bars.sh: case '$c' (the third positional argument); allowed: default, texture-file, load, section"
 done
+# The case 'section' runs alone, on stages of its own section.
+if [[ " $cases " == *" section "* ]]; then
+  if $quick; then
+    input_error "error_bars.sh: case 'section' is not allowed with --quick (it needs stages of its own section)"
+  fi
+  for c in $cases; do
+    [[ $c == section ]] ||
+      input_error "error_bars.sh: cases = '$cases'; 'section' runs alone (its stages are not the main job's: see this script's header)"
+  done
+fi
 allowed="time_step contact_grid mode_cutoff ring_section"
 $quick && allowed="time_step contact_grid mode_cutoff"
 for d in $discretisations; do
@@ -126,9 +154,11 @@ window=$(awk 'BEGIN { c = 1000 * 10^(-6/10); printf "%.6f", 4 / (c * (10^(1/20) 
 
 run_case() {
   local name=$1 road=$2 speed=$3 load=$4 spacing=$5 distance=$6
+  shift 6
   local dt
   dt=$(awk -v s="$spacing" -v v="$speed" 'BEGIN { printf "%.6e", s / (v / 3.6) }')
-  local common=(--set "Road texture/Roads=$road" --set "Rolling/Speeds (kph)=$speed"
+  # The case's own settings (its section's), then the rolling's.
+  local common=("$@" --set "Road texture/Roads=$road" --set "Rolling/Speeds (kph)=$speed"
                 --set "Rolling/Static load=$load" --set "Rolling/Distance=$distance"
                 --set "Spectra/Low bands up to=0" --set "Time stepping/Time step=$dt")
   local estimates="" d
@@ -256,6 +286,10 @@ for c in $cases; do
     load)
       run_case load road-B 50 900 3.84e-4 "$(awk -v w="$window" 'BEGIN { printf "%.4f", w * 50 / 3.6 }')"
       compare load "road-B at 50 km/h, 900 N" ;;
+    section)
+      run_case section road-A 70 600 3.84e-4 "$(awk -v w="$window" 'BEGIN { printf "%.4f", w * 70 / 3.6 }')" \
+        "${section_geometry[@]}"
+      compare section "another section (185/65 R13, 3 mm crown drop): road-A at 70 km/h, 600 N" ;;
   esac
 done
 write_csv "$output/error_bars.csv" < "$csv"

@@ -41,7 +41,9 @@ namespace greentread
     /// the 16, 8 and 4 mm quartic sections on error_bars.sh's three cases,
     /// rms over the bands from 250 Hz: 0.86 to 1.62 (the force's the lower).
     /// 1.5 puts the estimate at 0.99 to 1.68 times the difference from the 4 mm
-    /// section in all six (doc/methods/analysis.md).
+    /// section in all six (doc/methods/analysis.md); on a fourth case that
+    /// did not choose it, another tyre section, 1.18 and 1.14 (observed order
+    /// 1.11 and 1.06).
     constexpr double ring_section_order = 1.5;
 
     /// Richardson's factor: the finer level's error is
