@@ -4,7 +4,10 @@
 #include "bounds.h"
 #include "scratch.h"
 #include <greentread/base/exceptions.h>
+#include <greentread/modal/passivity.h>
 #include <greentread/modal/patch_model.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <boost/test/unit_test.hpp>
 
@@ -168,6 +171,55 @@ BOOST_AUTO_TEST_CASE(a_known_system_with_an_instantaneous_compliance_is_recovere
   // The system is one the model represents exactly: measured 3.8e-14 of the
   // scale; round-off, which differs between machines, so 10 times that.
   CHECK_BOUND(worst / scale, 4e-13);
+}
+
+BOOST_AUTO_TEST_CASE(an_identified_passive_system_passes_the_check_and_stays_passive_between_lines)
+{
+  // The identified route with 'Patch model/Allow non-passive' = false, on a
+  // passive system: real shapes, positive damping and a positive definite
+  // G_r, so -Im g is positive semidefinite at every frequency. The model the
+  // scene's defaults identify must pass the scene's check at the lines, and
+  // stay passive between them, where the scene does not look: on a grid 8
+  // times finer than the lines, its smallest eigenvalue of -Im g over the
+  // largest against the truth's, from the closed form on the same grid.
+  // Measured: the truth's worst 2.6e-7 (at 2355 Hz, beside its 2350 Hz
+  // mode), the model's 3.2e-17 from it (1.2e-10 of it): round-off, so the
+  // bound is about 10 times, 1e-9 of it. The check at the lines alone
+  // (2359 Hz) misses the worst frequency by 4 Hz.
+  const double                    f_max = 4000., df = 15.625;
+  const unsigned int              lines = 256, finer = 8;
+  const KnownSystem               truth(f_max, true);
+  const auto                      green = truth.sample(df, lines + 1);
+  modal::IdentificationParameters identification;
+  modal::PatchModelParameters     parameters;
+  const auto model = modal::fit_patch_model(green, identification, parameters, false);
+  const modal::Passivity at_lines = modal::measure_passivity(model, df, lines);
+  BOOST_CHECK_NO_THROW(modal::check_passivity(at_lines, false, "the identified patch model"));
+  const modal::Passivity between = modal::measure_passivity(model, df / finer, finer * lines);
+  double truth_worst = 1., truth_frequency = 0.;
+  for (unsigned int l = 1; l <= finer * lines; ++l)
+    {
+      const double    f = l * (df / finer);
+      Eigen::MatrixXd loss(KnownSystem::n, KnownSystem::n);
+      for (unsigned int i = 0; i < KnownSystem::n; ++i)
+        for (unsigned int j = 0; j < KnownSystem::n; ++j)
+          loss(i, j) = -truth.g(i, j, 2. * M_PI * f).imag();
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(0.5 * (loss + loss.transpose()),
+                                                                 Eigen::EigenvaluesOnly);
+      const double ratio = eigen.eigenvalues().minCoeff() / eigen.eigenvalues().cwiseAbs().maxCoeff();
+      if (ratio < truth_worst)
+        {
+          truth_worst     = ratio;
+          truth_frequency = f;
+        }
+    }
+  BOOST_TEST_MESSAGE("passivity: the model's worst ratio " << at_lines.worst << " at the lines ("
+                       << at_lines.frequency << " Hz), " << between.worst << " between them ("
+                       << between.frequency << " Hz); the truth's " << truth_worst << " ("
+                       << truth_frequency << " Hz)");
+  BOOST_TEST(truth_worst > 0.);
+  BOOST_TEST(between.frequency == truth_frequency, boost::test_tools::tolerance(1e-12));
+  CHECK_BOUND(std::abs(between.worst - truth_worst), 1e-9 * truth_worst);
 }
 
 BOOST_AUTO_TEST_CASE(the_model_file_round_trips_and_keeps_its_key)
