@@ -15,7 +15,7 @@
 #   step's largest |q|, the free gap over the patch: about 6 mm, the tread's
 #   curvature 1.7 mm at the patch's ends, the road's relief and the
 #   indentation, so about 6e-9 m): at most PENETRATION_BOUND m in every run
-#   (measured 5.3e-9 to 6.2e-9 m over the main job's road-A runs);
+#   (measured 4.6e-9 to 5.9e-9 m over this test's 18 runs);
 # - the low-rate runs' bands accepted and merged: no disagreement printed,
 #   and in spectra.csv and spectra_force.csv the bands to 1000 Hz from the
 #   76.8 us run, the others from the scene's step at each speed;
@@ -84,10 +84,9 @@ foreach(line ${sets})
   set(shrunk ${CMAKE_MATCH_5})
   # The runs at the scene's step solve most steps on the candidate set, with
   # points joining it during solves and leaving it between steps (measured:
-  # joined at 2445 and 2524 of 2865 steps, started smaller at 1852 and 1871,
-  # the whole grid at 401 and 474, where the set passes its limit of about
-  # 510 points). The low-rate runs' sets, of 760 to 890 points, go to the
-  # whole grid at almost every step: not asserted.
+  # joined at 2856 and 2864 of 2865 steps, started smaller at 2300 and 2325,
+  # the whole grid at 3 and 48, where the set passes its limit of about 510
+  # points). The low-rate runs are not asserted.
   if(run MATCHES "^road-A_[0-9]+kmh$")
     if(grown EQUAL 0 OR shrunk EQUAL 0 OR whole GREATER_EQUAL half)
       message(FATAL_ERROR "run ${run}: the candidate set not in use at most steps, or not growing and shrinking: ${line}")
