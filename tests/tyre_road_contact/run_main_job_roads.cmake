@@ -44,11 +44,7 @@ if(NOT status EQUAL 0)
 endif()
 message(STATUS "${out}")
 
-function(require pattern what)
-  if(NOT out MATCHES "${pattern}")
-    message(FATAL_ERROR "${what}: no '${pattern}' in the output")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/require.cmake)
 
 # The stages reused.
 string(REGEX MATCHALL "Reusing [^\n]+" reused "${out}")
