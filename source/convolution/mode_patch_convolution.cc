@@ -28,12 +28,17 @@ namespace greentread
       /// bytes do not depend on it.
       template <typename First, typename Second>
       void
-      in_two_halves(const unsigned int threads, const Eigen::Index m, First &&first, Second &&second)
+      in_two_halves(const unsigned int threads,
+                    const Eigen::Index m,
+                    First            &&first,
+                    Second           &&second)
       {
         const Eigen::Index half = m / 2;
         if (threads > 1)
           {
-            auto task = dealii::Threads::new_task([&]() { first(Eigen::Index(0), half); });
+            auto task = dealii::Threads::new_task([&]() {
+              first(Eigen::Index(0), half);
+            });
             second(half, m);
             task.join();
           }
@@ -152,8 +157,13 @@ namespace greentread
             {
               Eigen::MatrixXd first(n_p, 2);
               in_two_halves(
-                threads, m, [&](const Eigen::Index a, const Eigen::Index b) { sweep(a, b, first); },
-                [&](const Eigen::Index a, const Eigen::Index b) { sweep(a, b, uv); });
+                threads, m,
+                [&](const Eigen::Index a, const Eigen::Index b) {
+                  sweep(a, b, first);
+                },
+                [&](const Eigen::Index a, const Eigen::Index b) {
+                  sweep(a, b, uv);
+                });
               uv += first;
             }
           else
@@ -392,7 +402,9 @@ namespace greentread
               block_hist.setZero(n_p, J);
               in_two_halves(
                 threads, m,
-                [&](const Eigen::Index a, const Eigen::Index b) { block_sweep(a, b, next, first); },
+                [&](const Eigen::Index a, const Eigen::Index b) {
+                  block_sweep(a, b, next, first);
+                },
                 [&](const Eigen::Index a, const Eigen::Index b) {
                   block_sweep(a, b, next, block_hist);
                 });

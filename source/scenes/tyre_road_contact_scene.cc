@@ -167,8 +167,8 @@ namespace greentread
       // sinusoid is the same across).
       for (const auto &name : roads.roads)
         if (road::RoadTextureParameters::is_built_in(name) && name != "flat")
-          check_road_spacing("parameter 'Road texture/Spacing' = " +
-                               format_number(roads.spacing) + " m (road '" + name + "')",
+          check_road_spacing("parameter 'Road texture/Spacing' = " + format_number(roads.spacing) +
+                               " m (road '" + name + "')",
                              roads.spacing, name == "sinusoid" ? 0. : roads.spacing);
 
       // The spectra of each run, checked now rather than after the run: the
@@ -341,14 +341,14 @@ namespace greentread
       for (const auto &[name, spacing, rectangle] :
            {std::tuple<const char *, double, double>{"along", dx, along}, {"across", dy, across}})
         if (spacing > rectangles * rectangle * (1. + 1e-9))
-          throw InputError(what + ": samples " + format_number(1e3 * spacing) + " mm apart " +
-                           name + " the road, too coarse for the contact grid's rectangles of " +
-                           format_printf("%.3g", 1e3 * rectangle) +
-                           " mm ('Contact grid/Subdivisions' = " +
-                           std::to_string(contact_grid.subdivisions) + "); allowed: at most " +
-                           format_printf("%.3g", 1e3 * rectangles * rectangle) +
-                           " mm (4 rectangles): the grid would refine straight facets "
-                           "between samples, which no error bar covers");
+          throw InputError(
+            what + ": samples " + format_number(1e3 * spacing) + " mm apart " + name +
+            " the road, too coarse for the contact grid's rectangles of " +
+            format_printf("%.3g", 1e3 * rectangle) +
+            " mm ('Contact grid/Subdivisions' = " + std::to_string(contact_grid.subdivisions) +
+            "); allowed: at most " + format_printf("%.3g", 1e3 * rectangles * rectangle) +
+            " mm (4 rectangles): the grid would refine straight facets "
+            "between samples, which no error bar covers");
     }
 
 

@@ -193,11 +193,11 @@ BOOST_AUTO_TEST_CASE(a_point_pulled_in_just_past_the_tolerance_joins_the_set)
   // z_0 exact, no penetration at point 1: round-off, so the bounds are about
   // 10 times round-off, 2e-15 of z_1 and of |q|.
   Eigen::MatrixXd W = Eigen::MatrixXd::Identity(6, 6);
-  W(0, 1) = W(1, 0) = -0.5;
-  const double    tau = contact::ProjectedCgOptions().tolerance;
-  Eigen::VectorXd q   = Eigen::VectorXd::Ones(6);
-  q[0]                = -1.;
-  q[1]                = 0.5 - 10. * tau;
+  W(0, 1) = W(1, 0)                        = -0.5;
+  const double    tau                      = contact::ProjectedCgOptions().tolerance;
+  Eigen::VectorXd q                        = Eigen::VectorXd::Ones(6);
+  q[0]                                     = -1.;
+  q[1]                                     = 0.5 - 10. * tau;
   const contact::SymmetricOperator product = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
     y = W * x;
   };
@@ -224,8 +224,8 @@ BOOST_AUTO_TEST_CASE(edge_cases)
   };
   // No point below the road: no candidate, one product to check it, z = 0.
   contact::CandidateSetReport set{99, 99, true};
-  const auto none = contact::solve_lcp_candidate_set(product, dense_block(W),
-                                                     Eigen::VectorXd::Ones(6), {}, {}, &set);
+  const auto                  none = contact::solve_lcp_candidate_set(product, dense_block(W),
+                                                                      Eigen::VectorXd::Ones(6), {}, {}, &set);
   BOOST_TEST(none.converged);
   BOOST_TEST(set.end == 0u);
   BOOST_TEST(!set.whole_grid);

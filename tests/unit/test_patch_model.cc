@@ -192,11 +192,11 @@ BOOST_AUTO_TEST_CASE(an_identified_passive_system_passes_the_check_and_stays_pas
   const auto                      green = truth.sample(df, lines + 1);
   modal::IdentificationParameters identification;
   modal::PatchModelParameters     parameters;
-  const auto model = modal::fit_patch_model(green, identification, parameters, false);
+  const auto             model = modal::fit_patch_model(green, identification, parameters, false);
   const modal::Passivity at_lines = modal::measure_passivity(model, df, lines);
   BOOST_CHECK_NO_THROW(modal::check_passivity(at_lines, false, "the identified patch model"));
-  const modal::Passivity between = modal::measure_passivity(model, df / finer, finer * lines);
-  double truth_worst = 1., truth_frequency = 0.;
+  const modal::Passivity between     = modal::measure_passivity(model, df / finer, finer * lines);
+  double                 truth_worst = 1., truth_frequency = 0.;
   for (unsigned int l = 1; l <= finer * lines; ++l)
     {
       const double    f = l * (df / finer);
@@ -206,17 +206,18 @@ BOOST_AUTO_TEST_CASE(an_identified_passive_system_passes_the_check_and_stays_pas
           loss(i, j) = -truth.g(i, j, 2. * M_PI * f).imag();
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(0.5 * (loss + loss.transpose()),
                                                                  Eigen::EigenvaluesOnly);
-      const double ratio = eigen.eigenvalues().minCoeff() / eigen.eigenvalues().cwiseAbs().maxCoeff();
+      const double                                         ratio =
+        eigen.eigenvalues().minCoeff() / eigen.eigenvalues().cwiseAbs().maxCoeff();
       if (ratio < truth_worst)
         {
           truth_worst     = ratio;
           truth_frequency = f;
         }
     }
-  BOOST_TEST_MESSAGE("passivity: the model's worst ratio " << at_lines.worst << " at the lines ("
-                       << at_lines.frequency << " Hz), " << between.worst << " between them ("
-                       << between.frequency << " Hz); the truth's " << truth_worst << " ("
-                       << truth_frequency << " Hz)");
+  BOOST_TEST_MESSAGE("passivity: the model's worst ratio "
+                     << at_lines.worst << " at the lines (" << at_lines.frequency << " Hz), "
+                     << between.worst << " between them (" << between.frequency
+                     << " Hz); the truth's " << truth_worst << " (" << truth_frequency << " Hz)");
   BOOST_TEST(truth_worst > 0.);
   BOOST_TEST(between.frequency == truth_frequency, boost::test_tools::tolerance(1e-12));
   CHECK_BOUND(std::abs(between.worst - truth_worst), 1e-9 * truth_worst);
