@@ -571,7 +571,6 @@ namespace greentread
     } // namespace
 
 
-
     std::unique_ptr<PatchConvolution>
     make_rank_one_patch_convolution(const modal::PatchModel &model,
                                     const double             dt,
