@@ -2,7 +2,7 @@
 # stage and earlier ones, never a later one. Run as
 #   cmake -DTOP=<source dir> -P check_include_order.cmake
 # and it fails naming every include that runs against the pipeline.
-set(order base geometry fe periodic modal synthesis convolution road contact sdof analysis
+set(order base geometry fe periodic modal synthesis convolution road contact sdof analysis radiation
           reference scenes)
 set(violations "")
 foreach(stage IN LISTS order)
