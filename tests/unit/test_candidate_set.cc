@@ -83,8 +83,9 @@ BOOST_AUTO_TEST_CASE(the_grid_block_is_its_dense_compliance)
                                 << "dense compliance " << worst / scale
                                 << ", its product against the FFT's " << product);
   BOOST_TEST(set.size() > 300u);
-  BOOST_TEST(worst < 1e-13 * scale);
-  BOOST_TEST(product < 1e-13);
+  // Measured 1.1e-16 and 6.7e-16: round-off, held within 10x.
+  BOOST_TEST(worst < 1.2e-15 * scale);
+  BOOST_TEST(product < 7e-15);
 }
 
 BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
@@ -141,8 +142,10 @@ BOOST_AUTO_TEST_CASE(the_candidate_set_solves_the_whole_grid_lcp)
   BOOST_TEST(warm_set.end < n / 2);
   BOOST_TEST(warm_set.end >= n_active);
   BOOST_TEST(!warm_set.whole_grid);
-  BOOST_TEST(against_pivoting < 5e-11);
-  BOOST_TEST(against_whole < 5e-11);
+  // Measured 1.5e-11 (the pivoting solver's tolerance) and 3.8e-16 (the
+  // same solver on a smaller set: round-off, held within 10x).
+  BOOST_TEST(against_pivoting < 4.5e-11);
+  BOOST_TEST(against_whole < 4e-15);
   // The returned forces measured here, w = W z + q formed from the dense
   // compliance (not the solver's blocks and FFT products): no point inside the road, no
   // force negative, none where the gap is open. Measured, relative to |q|:

@@ -231,8 +231,8 @@ BOOST_AUTO_TEST_CASE(grid_convolution_equals_the_model_on_every_contact_point)
                      << worst / peak << " of the peak " << peak << " N, contact "
                      << summary.min_contact_fraction << " to " << summary.max_contact_fraction);
   BOOST_TEST(summary.max_contact_fraction > summary.min_contact_fraction);
-  // Measured 2e-16 of the peak: round-off.
-  BOOST_TEST(worst < 1e-14 * peak);
+  // Measured 2.4e-16 of the peak: round-off, held within 10x.
+  BOOST_TEST(worst < 2.5e-15 * peak);
 }
 
 BOOST_AUTO_TEST_CASE(warm_started_lcp_of_a_fine_grid_against_siconos)
