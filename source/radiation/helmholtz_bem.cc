@@ -2,8 +2,8 @@
 #include <greentread/base/job_runner.h>
 #include <greentread/radiation/helmholtz_bem.h>
 
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
@@ -27,12 +27,11 @@ namespace greentread
       dealii::Quadrature<2>
       duffy_about_centre(const unsigned int n)
       {
-        const dealii::QGauss<1>             gauss(n);
-        const dealii::Point<2>              c(0.5, 0.5);
-        const std::array<dealii::Point<2>, 4> corners{
-          {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}}};
-        std::vector<dealii::Point<2>> points;
-        std::vector<double>           weights;
+        const dealii::QGauss<1>               gauss(n);
+        const dealii::Point<2>                c(0.5, 0.5);
+        const std::array<dealii::Point<2>, 4> corners{{{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}}};
+        std::vector<dealii::Point<2>>         points;
+        std::vector<double>                   weights;
         for (unsigned int side = 0; side < 4; ++side)
           {
             const dealii::Point<2> &a = corners[side];
@@ -55,7 +54,8 @@ namespace greentread
         : k(wavenumber)
         , ground(air.ground)
         , ground_height(air.ground_height)
-    {}
+    {
+    }
 
     void
     HalfSpaceKernel::evaluate(const dealii::Point<3>     &x,
@@ -85,14 +85,15 @@ namespace greentread
       if (outward.size() != surface.n_active_cells())
         throw InputError("HelmholtzBem: " + std::to_string(outward.size()) +
                          " orientation signs given for a surface of " +
-                         std::to_string(surface.n_active_cells()) + " cells; allowed: one per cell");
-      const dealii::FE_DGQ<2, 3>   fe(0);
-      const dealii::QMidpoint<2>   midpoint;
-      const dealii::QGauss<2>      far(4);
-      const dealii::QIterated<2>   near(dealii::QGauss<1>(4), 3);
-      const dealii::Quadrature<2>  self = duffy_about_centre(7);
-      const auto                   flags = dealii::update_quadrature_points |
-                         dealii::update_normal_vectors | dealii::update_JxW_values;
+                         std::to_string(surface.n_active_cells()) +
+                         " cells; allowed: one per cell");
+      const dealii::FE_DGQ<2, 3>  fe(0);
+      const dealii::QMidpoint<2>  midpoint;
+      const dealii::QGauss<2>     far(4);
+      const dealii::QIterated<2>  near(dealii::QGauss<1>(4), 3);
+      const dealii::Quadrature<2> self = duffy_about_centre(7);
+      const auto flags = dealii::update_quadrature_points | dealii::update_normal_vectors |
+                         dealii::update_JxW_values;
       dealii::FEValues<2, 3> at_centre(mapping, fe, midpoint, flags);
       dealii::FEValues<2, 3> on_far(mapping, fe, far, flags);
       dealii::FEValues<2, 3> on_near(mapping, fe, near, flags);
@@ -133,16 +134,14 @@ namespace greentread
     {
       const dealii::FE_DGQ<2, 3> fe(0);
       dealii::FEValues<2, 3>     at_centre(mapping, fe, dealii::QMidpoint<2>(),
-                                       dealii::update_quadrature_points |
-                                         dealii::update_normal_vectors);
-      std::vector<int> signs;
+                                           dealii::update_quadrature_points |
+                                             dealii::update_normal_vectors);
+      std::vector<int>           signs;
       for (const auto &cell : surface.active_cell_iterators())
         {
           at_centre.reinit(cell);
-          signs.push_back((at_centre.quadrature_point(0) - inside) * at_centre.normal_vector(0) >
-                              0. ?
-                            1 :
-                            -1);
+          signs.push_back(
+            (at_centre.quadrature_point(0) - inside) * at_centre.normal_vector(0) > 0. ? 1 : -1);
         }
       return signs;
     }
@@ -171,9 +170,9 @@ namespace greentread
                             Complex                &dg_dn) const
     {
       const Panel &panel = panels[j];
-      const Rule  &rule  = self ? panel.self :
+      const Rule  &rule  = self                                                      ? panel.self :
                            x.distance(panel.centre) < near_distance * panel.diameter ? panel.near :
-                                                                                         panel.far;
+                                                                                       panel.far;
       g = dg_dn = 0.;
       for (std::size_t q = 0; q < rule.points.size(); ++q)
         {
@@ -197,14 +196,13 @@ namespace greentread
       g.resize(rows, cols);
       // Each entry is computed alone, so the bytes do not depend on the
       // number of threads.
-      base::for_each_index(x.size(), dealii::MultithreadInfo::n_threads(),
-                           [&](const std::size_t i, unsigned int) {
-                             for (Eigen::Index j = 0; j < cols; ++j)
-                               integrate(kernel, x[i], static_cast<unsigned int>(j),
-                                         collocation && static_cast<Eigen::Index>(i) == j,
-                                         g(static_cast<Eigen::Index>(i), j),
-                                         h(static_cast<Eigen::Index>(i), j));
-                           });
+      base::for_each_index(
+        x.size(), dealii::MultithreadInfo::n_threads(), [&](const std::size_t i, unsigned int) {
+          for (Eigen::Index j = 0; j < cols; ++j)
+            integrate(kernel, x[i], static_cast<unsigned int>(j),
+                      collocation && static_cast<Eigen::Index>(i) == j,
+                      g(static_cast<Eigen::Index>(i), j), h(static_cast<Eigen::Index>(i), j));
+        });
     }
 
     void

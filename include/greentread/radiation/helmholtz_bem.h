@@ -199,7 +199,7 @@ namespace greentread
       /// The integrals of G and dG/dn_y over cell j seen from x; `self` when
       /// x is the cell's own centre.
       void
-      integrate(const HalfSpaceKernel &kernel,
+      integrate(const HalfSpaceKernel  &kernel,
                 const dealii::Point<3> &x,
                 unsigned int            j,
                 bool                    self,
@@ -218,12 +218,12 @@ namespace greentread
       double             near_distance = 2.;
 
       // The factored system at the last assemble().
-      Air                                        air;
-      double                                     omega = 0.;
-      Eigen::MatrixXcd                           g_matrix;
-      bool                                       least_squares = false;
-      Eigen::PartialPivLU<Eigen::MatrixXcd>      lu;
-      Eigen::HouseholderQR<Eigen::MatrixXcd>     qr;
+      Air                                    air;
+      double                                 omega = 0.;
+      Eigen::MatrixXcd                       g_matrix;
+      bool                                   least_squares = false;
+      Eigen::PartialPivLU<Eigen::MatrixXcd>  lu;
+      Eigen::HouseholderQR<Eigen::MatrixXcd> qr;
     };
   } // namespace radiation
 } // namespace greentread
