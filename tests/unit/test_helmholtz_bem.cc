@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 
 #include "bounds.h"
 
@@ -40,6 +41,22 @@ namespace
     tria.set_manifold(0, dealii::SphericalManifold<2, 3>(centre));
     tria.refine_global(levels);
   }
+
+  /// A sphere's surface refined `levels` times, its cubic mapping, and its
+  /// boundary element model with the normals out of the sphere.
+  struct Sphere
+  {
+    Sphere(const dealii::Point<3> &centre, const unsigned int levels)
+        : mapping(3)
+    {
+      sphere(tria, centre, levels);
+      bem = std::make_unique<radiation::HelmholtzBem>(
+        tria, mapping, radiation::HelmholtzBem::orient(tria, mapping, centre));
+    }
+    dealii::Triangulation<2, 3>              tria;
+    const dealii::MappingQ<2, 3>             mapping;
+    std::unique_ptr<radiation::HelmholtzBem> bem;
+  };
 
   /// The closed form of a pulsating sphere: p = A e^{-jkr}/r with
   /// dp/dr(a) = -j w rho v0 (time e^{jwt}).
@@ -95,19 +112,16 @@ BOOST_AUTO_TEST_SUITE(helmholtz_bem)
 
 BOOST_AUTO_TEST_CASE(pulsating_and_oscillating_spheres_in_free_field)
 {
-  const dealii::Point<3>       centre(0., 0., 0.);
-  const dealii::MappingQ<2, 3> mapping(3);
-  const radiation::Air         air;
-  const auto                   mics = microphones(centre, 1.);
+  const dealii::Point<3> centre(0., 0., 0.);
+  const radiation::Air   air;
+  const auto             mics = microphones(centre, 1.);
   // Per refinement (3 and 4 levels) and ka: the largest level errors on the
   // surface and at the microphones, and of the power.
   double oscillating_coarse[2] = {0., 0.};
   for (const unsigned int levels : {3u, 4u})
     {
-      dealii::Triangulation<2, 3> tria;
-      sphere(tria, centre, levels);
-      radiation::HelmholtzBem bem(tria, mapping,
-                                  radiation::HelmholtzBem::orient(tria, mapping, centre));
+      Sphere                   body(centre, levels);
+      radiation::HelmholtzBem &bem = *body.bem;
       for (const unsigned int q : {0u, 1u})
         {
           const double ka = q == 0 ? 0.5 : 2.;
@@ -164,16 +178,13 @@ BOOST_AUTO_TEST_CASE(chief_points_remove_the_fictitious_frequency)
 {
   // ka = pi is the first zero of j0: the interior of the sphere with p = 0
   // on its surface resonates, and the direct equation loses uniqueness.
-  const dealii::Point<3>      centre(0., 0., 0.);
-  dealii::Triangulation<2, 3> tria;
-  sphere(tria, centre, 3);
-  const dealii::MappingQ<2, 3> mapping(3);
-  radiation::HelmholtzBem      bem(tria, mapping,
-                                   radiation::HelmholtzBem::orient(tria, mapping, centre));
-  const radiation::Air         air;
-  const double                 f     = pi * air.sound_speed / (2. * pi * a);
-  const Eigen::MatrixXcd       v     = Eigen::MatrixXcd::Constant(bem.n_cells(), 1, v0);
-  const auto                   error = [&](const std::vector<dealii::Point<3>> &chief) {
+  const dealii::Point<3>   centre(0., 0., 0.);
+  Sphere                   body(centre, 3);
+  radiation::HelmholtzBem &bem = *body.bem;
+  const radiation::Air     air;
+  const double             f     = pi * air.sound_speed / (2. * pi * a);
+  const Eigen::MatrixXcd   v     = Eigen::MatrixXcd::Constant(bem.n_cells(), 1, v0);
+  const auto               error = [&](const std::vector<dealii::Point<3>> &chief) {
     bem.assemble(air, f, chief);
     const Eigen::MatrixXcd p = bem.surface_pressure(v);
     double                 e = 0.;
@@ -191,12 +202,9 @@ BOOST_AUTO_TEST_CASE(chief_points_remove_the_fictitious_frequency)
 
 BOOST_AUTO_TEST_CASE(a_point_outside_is_not_a_chief_point)
 {
-  const dealii::Point<3>      centre(0., 0., 0.);
-  dealii::Triangulation<2, 3> tria;
-  sphere(tria, centre, 1);
-  const dealii::MappingQ<2, 3> mapping(3);
-  radiation::HelmholtzBem      bem(tria, mapping,
-                                   radiation::HelmholtzBem::orient(tria, mapping, centre));
+  const dealii::Point<3>   centre(0., 0., 0.);
+  Sphere                   body(centre, 1);
+  radiation::HelmholtzBem &bem = *body.bem;
   BOOST_CHECK_THROW(bem.assemble(radiation::Air(), 100., {{0., 0., 2. * a}}), InputError);
   BOOST_CHECK_THROW(bem.assemble(radiation::Air(), 10. * bem.highest_frequency(radiation::Air())),
                     InputError);
@@ -217,11 +225,9 @@ BOOST_AUTO_TEST_CASE(spheres_above_a_rigid_plane)
   double                       near[2][2] = {}; // image errors at h = 2a, per ka and motion
   for (const double h : {2. * a, 8. * a})
     {
-      const dealii::Point<3>      centre(0., 0., h), image(0., 0., -h);
-      dealii::Triangulation<2, 3> tria;
-      sphere(tria, centre, 3);
-      radiation::HelmholtzBem bem(tria, mapping,
-                                  radiation::HelmholtzBem::orient(tria, mapping, centre));
+      const dealii::Point<3>   centre(0., 0., h), image(0., 0., -h);
+      Sphere                   body(centre, 3);
+      radiation::HelmholtzBem &bem = *body.bem;
 
       dealii::Triangulation<2, 3> upper, lower, both;
       dealii::GridGenerator::hyper_sphere(upper, centre, a);
@@ -313,13 +319,10 @@ BOOST_AUTO_TEST_CASE(the_same_bytes_with_any_thread_count)
 {
   // A sphere above the plane at ka = 2, with CHIEF points, on one thread and
   // on two: the surface and field pressures are the same to the bit.
-  const dealii::Point<3>      centre(0., 0., 2. * a);
-  dealii::Triangulation<2, 3> tria;
-  sphere(tria, centre, 2);
-  const dealii::MappingQ<2, 3> mapping(3);
-  radiation::HelmholtzBem      bem(tria, mapping,
-                                   radiation::HelmholtzBem::orient(tria, mapping, centre));
-  radiation::Air               air;
+  const dealii::Point<3>   centre(0., 0., 2. * a);
+  Sphere                   body(centre, 2);
+  radiation::HelmholtzBem &bem = *body.bem;
+  radiation::Air           air;
   air.ground     = true;
   const auto run = [&](const unsigned int threads) {
     dealii::MultithreadInfo::set_thread_limit(threads);
