@@ -79,6 +79,10 @@ fi
 "$build/benchmarks/sdof_convergence" --output "$tmp/sdof_convergence" > /dev/null
 place benchmarks/sdof_convergence/sdof_convergence.png "$tmp/sdof_convergence/sdof_convergence.png"
 
+# The horn effect of the main job's tyre (about 4 minutes on 2 cores).
+"$build/benchmarks/horn_effect" --output "$tmp/horn_effect" > /dev/null
+place benchmarks/horn_effect/horn_effect.png "$tmp/horn_effect/horn_effect.png"
+
 # The default section against the one twice as fine.
 converged_out="$build/benchmark-output/converged_ring"
 converged="$converged_out/converged_ring_road-A_90kmh.png"

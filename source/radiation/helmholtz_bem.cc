@@ -169,10 +169,15 @@ namespace greentread
                             Complex                &g,
                             Complex                &dg_dn) const
     {
-      const Panel &panel = panels[j];
-      const Rule  &rule  = self                                                      ? panel.self :
-                           x.distance(panel.centre) < near_distance * panel.diameter ? panel.near :
-                                                                                       panel.far;
+      const Panel &panel    = panels[j];
+      double       distance = x.distance(panel.centre);
+      if (air.ground)
+        distance = std::min(
+          distance,
+          dealii::Point<3>(x[0], x[1], 2. * air.ground_height - x[2]).distance(panel.centre));
+      const Rule &rule = self                                      ? panel.self :
+                         distance < near_distance * panel.diameter ? panel.near :
+                                                                     panel.far;
       g = dg_dn = 0.;
       for (std::size_t q = 0; q < rule.points.size(); ++q)
         {
@@ -244,7 +249,9 @@ namespace greentread
       // CHIEF: 0 = H_z p - j w rho G_z v at points z inside. The solid angle
       // seen from inside, minus the integral of dG0/dn over S, is 1 there:
       // a point outside, or a wrongly turned normal, shows in it.
-      const HalfSpaceKernel laplace(Air{}, 0.);
+      // The ground's image closes a surface that stands on it (the plane
+      // takes the place of the cells it covers).
+      const HalfSpaceKernel laplace(air, 0.);
       Eigen::MatrixXcd      h_z, g_z, h0, g0;
       influence(kernel, chief_points, false, h_z, g_z);
       influence(laplace, chief_points, false, h0, g0);
@@ -301,6 +308,40 @@ namespace greentread
           power[c] += 0.5 * panels[static_cast<std::size_t>(i)].area *
                       (pressure(i, c) * std::conj(normal_velocity(i, c))).real();
       return power;
+    }
+
+    Eigen::MatrixXcd
+    HelmholtzBem::incident_pressure(const std::vector<dealii::Point<3>> &sources,
+                                    const std::vector<dealii::Point<3>> &receivers) const
+    {
+      const HalfSpaceKernel kernel(air, omega / air.sound_speed);
+      Eigen::MatrixXcd      p(receivers.size(), sources.size());
+      Complex               dummy;
+      for (std::size_t i = 0; i < receivers.size(); ++i)
+        for (std::size_t s = 0; s < sources.size(); ++s)
+          kernel.evaluate(sources[s], receivers[i], dealii::Tensor<1, 3>(),
+                          p(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(s)), dummy);
+      return p;
+    }
+
+    Eigen::MatrixXcd
+    HelmholtzBem::rigid_scattering(const std::vector<dealii::Point<3>> &sources,
+                                   const std::vector<dealii::Point<3>> &receivers) const
+    {
+      const HalfSpaceKernel kernel(air, omega / air.sound_speed);
+      Eigen::MatrixXcd      velocity(panels.size(), sources.size());
+      // G_h is symmetric, so dG_h(s, y)/dn_y is the incident field's normal
+      // derivative at y.
+      for (std::size_t i = 0; i < panels.size(); ++i)
+        for (std::size_t s = 0; s < sources.size(); ++s)
+          {
+            Complex unused, dp_dn;
+            integrate(kernel, sources[s], static_cast<unsigned int>(i), false, unused, dp_dn);
+            velocity(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(s)) =
+              dp_dn / (Complex(0., omega * air.density) * panels[i].area);
+          }
+      const Eigen::MatrixXcd pressure = surface_pressure(velocity);
+      return incident_pressure(sources, receivers) + field_pressure(receivers, pressure, velocity);
     }
   } // namespace radiation
 } // namespace greentread

@@ -76,8 +76,10 @@ namespace greentread
      * point, its four triangles about the point are integrated by a Duffy
      * transform, which takes out the 1/r singularity; cells within
      * `near_distance` diameters get an iterated Gauss rule; the rest a
-     * 4 x 4 Gauss rule. The surface is that of the mapping, not the flat
-     * cells.
+     * 4 x 4 Gauss rule. With the ground, the distance is the smaller of
+     * the point's and its image's, so that a cell near the road, nearly
+     * touching its own image, gets the finer rule. The surface is that of
+     * the mapping, not the flat cells.
      *
      * At the eigenfrequencies of the body's interior with p = 0 on S, the
      * equation has no unique solution (the fictitious frequencies). The
@@ -177,6 +179,27 @@ namespace greentread
       /// air, \f$\tfrac12 \mathrm{Re} \int_S p\,v_n^*\,dS\f$, per case.
       Eigen::VectorXd
       sound_power(const Eigen::MatrixXcd &pressure, const Eigen::MatrixXcd &normal_velocity) const;
+
+      /**
+       * @brief Scattering by the body held rigid: the pressure [Pa] at
+       * `receivers` (rows) of unit monopoles at `sources` (columns), each
+       * \f$G_h(x, s)\f$ in the air without the body, with the body there.
+       *
+       * The scattered field is the radiation of the normal velocity that
+       * cancels the incident field's \f$\partial p/\partial n\f$ on the
+       * surface, \f$v_n = \partial_n p_{inc} / (j\omega\rho)\f$, averaged
+       * over each cell; the result is \f$p_{inc} + p_{sc}\f$. A source or a
+       * receiver closer to the surface than a cell is not resolved.
+       */
+      Eigen::MatrixXcd
+      rigid_scattering(const std::vector<dealii::Point<3>> &sources,
+                       const std::vector<dealii::Point<3>> &receivers) const;
+
+      /// The incident field alone: \f$G_h(x, s)\f$ at `receivers` (rows) for
+      /// `sources` (columns), at the last assemble()'s frequency.
+      Eigen::MatrixXcd
+      incident_pressure(const std::vector<dealii::Point<3>> &sources,
+                        const std::vector<dealii::Point<3>> &receivers) const;
 
     private:
       /// One cell: its centre and normal, and three quadrature rules on it
