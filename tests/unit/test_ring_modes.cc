@@ -193,7 +193,8 @@ BOOST_AUTO_TEST_CASE(every_mode_and_proportional_damping_give_the_bloch_solve)
       const double omega = 2. * M_PI * f;
       const double error = relative_difference(model.at(omega), direct(tyre, omega));
       BOOST_TEST_MESSAGE("every mode, " << f << " Hz: synthesis against Bloch " << error);
-      BOOST_TEST(error < 1e-8);
+      // Round-off, growing with the frequency: 4.6e-13 to 2.4e-9 measured.
+      BOOST_TEST(error < 7.5e-9);
     }
 }
 
@@ -253,7 +254,9 @@ BOOST_AUTO_TEST_CASE(coupled_modes_equal_the_direct_solve_in_their_subspace)
         }
       const double error = relative_difference(model.modes_at(w), g);
       BOOST_TEST_MESSAGE(f << " Hz: coupled modes against the reduced direct solve " << error);
-      BOOST_TEST(error < 1e-9);
+      // Round-off of the poles' solves: 1.8e-12 to 8.0e-11 measured; within
+      // about 3 times of the largest.
+      BOOST_TEST(error < 2.5e-10);
     }
 }
 

@@ -170,7 +170,8 @@ BOOST_AUTO_TEST_CASE(a_long_preset_is_made_in_pieces_that_keep_its_spectrum)
   BOOST_TEST_MESSAGE("8 m of road-A in pieces: worst band "
                      << worst << " dB off target, MPD " << 1e3 * road::mean_profile_depth(longer)
                      << " mm (one piece: " << 1e3 * road::mean_profile_depth(one) << " mm)");
-  BOOST_TEST(worst < 1.);
+  // Measured 0.26 dB: the pieces' random phases scatter the band levels.
+  BOOST_TEST(worst < 0.75);
 
   const unsigned int overlap = unsigned(std::ceil(0.2 / roads.spacing));
   bool               same    = true;
@@ -301,11 +302,12 @@ BOOST_AUTO_TEST_CASE(envelope_is_the_highest_sample_of_the_tributary_rectangle)
       }
   BOOST_TEST(checked == 100u);
   // The rule and the search pick the same sample: equal to round-off in the
-  // position s (1e-18 m of heights of 1e-3 m).
+  // position s (measured 1.95e-18 m of heights of 1e-3 m; the point above
+  // the envelope by 0). Round-off: within about 10 times.
   BOOST_TEST_MESSAGE("envelope against the brute-force maximum: " << worst << " m; point "
                                                                   << "above it by " << below);
-  BOOST_TEST(worst <= 1e-15, worst);
-  BOOST_TEST(below <= 1e-15, below);
+  BOOST_TEST(worst <= 2e-17, worst);
+  BOOST_TEST(below <= 2e-17, below);
 }
 
 BOOST_AUTO_TEST_CASE(texture_files_round_trip_and_bad_ones_are_refused)
