@@ -425,54 +425,5 @@ namespace greentread
                   growth = std::max(growth, u(free[local[i]]));
             }
     }
-
-
-
-    std::pair<Eigen::VectorXd, double>
-    HarmonicSection::tread_strip(const double z_low, const double z_high) const
-    {
-      Eigen::VectorXd                              w        = Eigen::VectorXd::Zero(size());
-      double                                       W        = 0.;
-      const unsigned int                           per_cell = fe.n_dofs_per_cell();
-      std::vector<dealii::types::global_dof_index> local(per_cell);
-      const dealii::QGauss<1>                      gauss(fe.degree + 2);
-      for (const auto &cell : dofs.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (!cell->face(f)->at_boundary() ||
-                cell->face(f)->boundary_id() != geometry::tread_surface)
-              continue;
-            // The edge from the cell's face vertex 0 to 1; t in [0, 1] along
-            // it. The section's edges are straight (MappingQ1).
-            const unsigned int     v0 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 0);
-            const unsigned int     v1 = dealii::GeometryInfo<2>::face_to_cell_vertices(f, 1);
-            const dealii::Point<2> a = cell->vertex(v0), b = cell->vertex(v1);
-            if (std::abs(b[1] - a[1]) <= 1e-12 * (a - b).norm())
-              continue; // a radial edge has no extent across the tread
-            const double t_low  = std::clamp((z_low - a[1]) / (b[1] - a[1]), 0., 1.);
-            const double t_high = std::clamp((z_high - a[1]) / (b[1] - a[1]), 0., 1.);
-            const double t0 = std::min(t_low, t_high), t1 = std::max(t_low, t_high);
-            if (t1 - t0 < 1e-14)
-              continue;
-            const dealii::Point<2> u0 = dealii::GeometryInfo<2>::unit_cell_vertex(v0);
-            const dealii::Point<2> u1 = dealii::GeometryInfo<2>::unit_cell_vertex(v1);
-            cell->get_dof_indices(local);
-            for (unsigned int q = 0; q < gauss.size(); ++q)
-              {
-                const double t    = t0 + (t1 - t0) * gauss.point(q)[0];
-                const double ds   = (t1 - t0) * gauss.weight(q) * (b - a).norm();
-                const double r    = a[0] + t * (b[0] - a[0]);
-                const auto   unit = u0 + t * (u1 - u0);
-                W += r * ds;
-                for (unsigned int i = 0; i < per_cell; ++i)
-                  if (fe.system_to_component_index(i).first == UR && free[local[i]] >= 0)
-                    w(free[local[i]]) += fe.shape_value_component(i, unit, UR) * r * ds;
-              }
-          }
-      if (!(W > 0.))
-        throw NumericalError("the tread strip from z = " + format_short(z_low) + " to " +
-                             format_short(z_high) + " m covers no tread surface of the section");
-      return {w, W};
-    }
   } // namespace fe
 } // namespace greentread

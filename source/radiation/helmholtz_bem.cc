@@ -298,6 +298,38 @@ namespace greentread
       return h * pressure + Complex(0., omega * air.density) * (g * normal_velocity);
     }
 
+    Eigen::MatrixXcd
+    HelmholtzBem::field_transfer(const std::vector<dealii::Point<3>> &points) const
+    {
+      const HalfSpaceKernel kernel(air, omega / air.sound_speed);
+      Eigen::MatrixXcd      h, g;
+      influence(kernel, points, false, h, g);
+      const Eigen::Index n = h.cols();
+      // x = H_x S as the adjoint solve S^H H_x^H.
+      Eigen::MatrixXcd x;
+      if (!least_squares)
+        {
+          // P A = L U: A^{-H} y = P^T L^{-H} U^{-H} y.
+          Eigen::MatrixXcd z =
+            lu.matrixLU().triangularView<Eigen::Upper>().adjoint().solve(h.adjoint());
+          z = lu.matrixLU().triangularView<Eigen::UnitLower>().adjoint().solve(z);
+          x = (lu.permutationP().transpose() * z).adjoint();
+        }
+      else
+        {
+          // S = R1^{-1} Q1^H, Q1 the first n columns of Q: S^H y =
+          // Q [R1^{-H} y; 0].
+          const Eigen::Index rows = qr.matrixQR().rows();
+          Eigen::MatrixXcd   z    = Eigen::MatrixXcd::Zero(rows, h.rows());
+          z.topRows(n) =
+            qr.matrixQR().topLeftCorner(n, n).triangularView<Eigen::Upper>().adjoint().solve(
+              h.adjoint());
+          z = qr.householderQ() * z;
+          x = z.adjoint();
+        }
+      return Complex(0., omega * air.density) * (x * g_matrix + g);
+    }
+
     Eigen::VectorXd
     HelmholtzBem::sound_power(const Eigen::MatrixXcd &pressure,
                               const Eigen::MatrixXcd &normal_velocity) const

@@ -162,6 +162,7 @@ namespace greentread
       axial_max         = last[1];
 
       const SectionLine line = resample(contour, cell_size);
+      section_line           = line;
       polygon                = line;
       polygon.push_back({{0., last[1]}});
       polygon.push_back({{0., first[1]}});
@@ -175,7 +176,8 @@ namespace greentread
       // squares fit and a row of vertices lies at the bottom (theta = 0).
       const unsigned int n_theta =
         8 * static_cast<unsigned int>(std::ceil(2. * PI * outer_radius / (8. * cell_size)));
-      const auto angle = [&](const unsigned int k) {
+      arc                 = 2. * PI / n_theta;
+      const auto angle_at = [&](const unsigned int k) {
         return -0.25 * PI + 2. * PI * (k % n_theta) / n_theta;
       };
       // (radius, axial, angle) -> the cut, lowered body.
@@ -188,7 +190,7 @@ namespace greentread
       std::vector<dealii::CellData<2>>  cells;
       std::vector<dealii::Tensor<1, 3>> hints; // the outward direction per cell
       const auto                        add = [&](const std::array<dealii::Point<3>, 4> &v,
-                           const dealii::Tensor<1, 3>            &hint) {
+                           const dealii::Tensor<1, 3> &hint, const int row, const double middle) {
         if (v[0][2] <= 0. && v[1][2] <= 0. && v[2][2] <= 0. && v[3][2] <= 0.)
           return; // flat on the road: the contact patch
         dealii::CellData<2> cell;
@@ -199,6 +201,8 @@ namespace greentread
           }
         cells.push_back(cell);
         hints.push_back(hint);
+        segment.push_back(row);
+        angle.push_back(middle);
       };
 
       // The revolved contour.
@@ -210,12 +214,13 @@ namespace greentread
           const double nr = turn * da, na = -turn * dr;
           for (unsigned int k = 0; k < n_theta; ++k)
             {
-              const double middle = angle(k) + PI / n_theta;
-              add({{place(line[i][0], line[i][1], angle(k)),
-                    place(line[i][0], line[i][1], angle(k + 1)),
-                    place(line[i + 1][0], line[i + 1][1], angle(k)),
-                    place(line[i + 1][0], line[i + 1][1], angle(k + 1))}},
-                  dealii::Tensor<1, 3>({nr * std::sin(middle), na, -nr * std::cos(middle)}));
+              const double middle = angle_at(k) + PI / n_theta;
+              add({{place(line[i][0], line[i][1], angle_at(k)),
+                    place(line[i][0], line[i][1], angle_at(k + 1)),
+                    place(line[i + 1][0], line[i + 1][1], angle_at(k)),
+                    place(line[i + 1][0], line[i + 1][1], angle_at(k + 1))}},
+                  dealii::Tensor<1, 3>({nr * std::sin(middle), na, -nr * std::cos(middle)}),
+                  static_cast<int>(i), middle);
             }
         }
 
@@ -239,10 +244,10 @@ namespace greentread
                 };
                 add({{at_disc(u(i), u(j)), at_disc(u(i + 1), u(j)), at_disc(u(i), u(j + 1)),
                       at_disc(u(i + 1), u(j + 1))}},
-                    hint);
+                    hint, -1, 0.);
               }
           // The square's edge, counter-clockwise from (-s, -s), point k at
-          // the angle of angle(k).
+          // the angle of angle_at(k).
           const auto square = [&](const unsigned int k) {
             const unsigned int edge         = (k % n_theta) / m;
             const double       t            = 2. * s * ((k % n_theta) % m) / m;
@@ -255,12 +260,13 @@ namespace greentread
           const auto ring    = [&](const unsigned int k, const unsigned int l) {
             const auto   q = square(k);
             const double t = static_cast<double>(l) / n_rings;
-            return at_disc((1. - t) * q[0] + t * rim * std::sin(angle(k)),
-                              (1. - t) * q[1] - t * rim * std::cos(angle(k)));
+            return at_disc((1. - t) * q[0] + t * rim * std::sin(angle_at(k)),
+                              (1. - t) * q[1] - t * rim * std::cos(angle_at(k)));
           };
           for (unsigned int k = 0; k < n_theta; ++k)
             for (unsigned int l = 0; l < n_rings; ++l)
-              add({{ring(k, l), ring(k + 1, l), ring(k, l + 1), ring(k + 1, l + 1)}}, hint);
+              add({{ring(k, l), ring(k + 1, l), ring(k, l + 1), ring(k + 1, l + 1)}}, hint, -1,
+                  angle_at(k) + PI / n_theta);
         }
       mesh.create_triangulation(points, cells, dealii::SubCellData());
 

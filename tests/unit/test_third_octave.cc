@@ -3,6 +3,7 @@
 // band), superposition of two tones, the mean square of white noise per
 // unit bandwidth, the level floor, the CSV file, and refused inputs.
 #include "band_spread.h"
+#include "bounds.h"
 #include "scratch.h"
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -326,6 +328,72 @@ BOOST_AUTO_TEST_CASE(welch_on_one_segment_is_the_whole_record_spectrum)
       BOOST_TEST(welch.level[b] == whole.level[b], boost::test_tools::tolerance(1e-12));
     }
   BOOST_CHECK_THROW(analysis::welch_band_spectrum(x, dt, 1., 1000., 5000., 0), InputError);
+}
+
+// The spectra of outputs of several signals (analysis::welch_band_spectra):
+// one signal with the power |c|^2 is welch_band_spectrum() itself; two
+// tones of one frequency combined at each line as x1 + x2 and x1 - x2 give
+// welch_band_spectrum() of the summed records, and the rms of the phasor
+// sums, |A +- B e^{j phi}| / sqrt(2) (to the window's in-band error, 1.2%
+// in the test above).
+BOOST_AUTO_TEST_CASE(welch_spectra_of_outputs_of_several_signals)
+{
+  std::mt19937                     random(5);
+  std::normal_distribution<double> normal(0., 1.);
+  std::vector<double>              x(25600);
+  for (auto &v : x)
+    v = normal(random);
+  const auto single = analysis::welch_band_spectrum(x, dt, 1., 100., 5000., 8);
+  const auto one    = analysis::welch_band_spectra(
+       {x}, dt, {1.}, 100., 5000., 8,
+       [](double, std::size_t, const Eigen::MatrixXcd &c, Eigen::MatrixXd &p) {
+      p.row(0) = c.row(0).cwiseAbs2();
+    });
+  BOOST_TEST_REQUIRE(one.size() == 1u);
+  double worst = 0.;
+  for (std::size_t b = 0; b < single.bands.size(); ++b)
+    {
+      BOOST_TEST(one[0].segments[b] == single.segments[b]);
+      worst = std::max({worst, std::abs(one[0].level[b] - single.level[b]),
+                        std::abs(one[0].standard_error[b] - single.standard_error[b])});
+    }
+  CHECK_BOUND(worst, 1e-12);
+
+  const double        A = 1., B = 0.5, phi = 2.;
+  const auto          x1 = sine(A, 1000., 25600), x2 = sine(B, 1000., 25600, 0.3 + phi);
+  std::vector<double> sum(x1.size()), difference(x1.size());
+  for (std::size_t n = 0; n < x1.size(); ++n)
+    {
+      sum[n]        = x1[n] + x2[n];
+      difference[n] = x1[n] - x2[n];
+    }
+  const auto two = analysis::welch_band_spectra(
+    {x1, x2}, dt, {1., 1.}, 100., 5000., 8,
+    [](double, std::size_t, const Eigen::MatrixXcd &c, Eigen::MatrixXd &p) {
+      p.row(0) = (c.row(0) + c.row(1)).cwiseAbs2();
+      p.row(1) = (c.row(0) - c.row(1)).cwiseAbs2();
+    });
+  const auto by_sum            = analysis::welch_band_spectrum(sum, dt, 1., 100., 5000., 8);
+  const auto by_difference     = analysis::welch_band_spectrum(difference, dt, 1., 100., 5000., 8);
+  const std::complex<double> e = std::polar(B, phi);
+  const double phasor[2]       = {std::abs(A + e) / std::sqrt(2.), std::abs(A - e) / std::sqrt(2.)};
+  // Relative to the tone's band: the others hold only the window's leakage.
+  const double largest[2] = {*std::max_element(by_sum.rms.begin(), by_sum.rms.end()),
+                             *std::max_element(by_difference.rms.begin(), by_difference.rms.end())};
+  double       linear = 0., analytic = 0.;
+  for (std::size_t b = 0; b < by_sum.bands.size(); ++b)
+    {
+      linear = std::max({linear, std::abs(two[0].rms[b] - by_sum.rms[b]) / largest[0],
+                         std::abs(two[1].rms[b] - by_difference.rms[b]) / largest[1]});
+      if (by_sum.bands[b].nominal == 1000.)
+        for (const std::size_t o : {0u, 1u})
+          analytic = std::max(analytic, std::abs(two[o].rms[b] / phasor[o] - 1.));
+    }
+  CHECK_BOUND(linear, 1e-11);
+  CHECK_BOUND(analytic, 0.012);
+  BOOST_CHECK_THROW(
+    analysis::welch_band_spectra({x1, std::vector<double>(100)}, dt, {1.}, 100., 5000., 8, {}),
+    InputError);
 }
 
 BOOST_AUTO_TEST_CASE(zero_content_is_floored_and_the_csv_file_is_complete)

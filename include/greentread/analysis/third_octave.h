@@ -1,7 +1,10 @@
 #pragma once
 
+#include <Eigen/Dense>
+
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,8 +13,10 @@
  * @file
  * One-third-octave band spectra of uniformly sampled time signals (IEC
  * 61260-1 base-10 bands), e.g. of a contact force or a sound pressure, and
- * their CSV output. Implemented in source/analysis/third_octave.cc and, the
- * CSV output, source/analysis/band_spectrum_csv.cc.
+ * their CSV output. Implemented in source/analysis/third_octave.cc, the
+ * spectra of several signals' outputs in source/analysis/welch_channels.cc
+ * (both on source/analysis/welch_segments.h) and the CSV output in
+ * source/analysis/band_spectrum_csv.cc.
  */
 
 namespace greentread
@@ -203,6 +208,48 @@ namespace greentread
                         double                     f_low             = lowest_band,
                         double                     f_high            = highest_band,
                         unsigned int               lines_per_segment = 8);
+
+    /**
+     * @brief What welch_band_spectra() asks at each Fourier line of its
+     * outputs: their powers from the signals' coefficients there.
+     *
+     * @p coefficients holds the signals' windowed Fourier coefficients at
+     * the line of frequency @p frequency [Hz] in the band of index @p band
+     * (a line on a band's edge is asked for each band), one row per signal and one
+     * column per segment; @p powers (sized by the caller: one row per
+     * output, one column per segment) receives each output's power in the
+     * same scale: an output linear in the signals, y = a^T x, gives
+     * |a(f)^T coefficients|^2 (a(f) its transfer at the line), and a
+     * quadratic one, x^H Q x, gives coefficients^H Q(f) coefficients.
+     */
+    using LinePowers = std::function<void(double                  frequency,
+                                          std::size_t             band,
+                                          const Eigen::MatrixXcd &coefficients,
+                                          Eigen::MatrixXd        &powers)>;
+
+    /**
+     * @brief The one-third-octave band spectra of outputs that depend on
+     * several signals through their spectra, by Welch's method with the
+     * segments and statistics of welch_band_spectrum(): every signal is
+     * cut, its mean removed and windowed as there, and each band's power
+     * in a segment is the weighted sum over its lines of @p powers, so that
+     * one signal with the power |coefficient|^2 gives welch_band_spectrum()
+     * itself. The outputs' levels are against @p references, one per
+     * output (so that @p powers' row count is their number), and each band
+     * gets the standard error of its segments' scatter.
+     * @param[in] signals The signals, each sampled @p dt apart, all of one
+     *                    length.
+     * @throws the errors of welch_band_spectrum(), and InputError if there
+     * are no signals or references or the signals differ in length.
+     */
+    std::vector<BandSpectrum>
+    welch_band_spectra(const std::vector<std::vector<double>> &signals,
+                       double                                  dt,
+                       const std::vector<double>              &references,
+                       double                                  f_low,
+                       double                                  f_high,
+                       unsigned int                            lines_per_segment,
+                       const LinePowers                       &powers);
 
     /**
      * @brief The standard error of each level that welch_band_spectrum()

@@ -147,6 +147,25 @@ namespace greentread
       std::pair<Eigen::VectorXd, double>
       tread_strip(double z_low, double z_high) const;
 
+      /**
+       * @brief The normal displacement averaged over each segment of a line
+       * along the section's outer faces (the tread surface and the untagged
+       * faces in the air), as functionals: for segment s, column s of the
+       * first matrix holds w_s / W_s with w_s the integral of each shape
+       * function's component along the faces' outward normal times r ds,
+       * and W_s = int r ds, so that (w_s / W_s)^T U is the mean outward
+       * displacement of amplitude U over the segment's part of the faces.
+       * The faces are chained into one line by arc length, each point of
+       * @p line placed where the nearest face puts it, and each face
+       * integrated by Gauss over its overlap with each segment's arc.
+       * @param[in] line Points in the (radius, axial) plane on the outer
+       *                 faces, e.g. radiation::TyreSurface::section_line.
+       * @throws NumericalError if the faces are not one line, or a segment
+       *         covers none of them.
+       */
+      std::pair<Eigen::MatrixXd, Eigen::VectorXd>
+      surface_segments(const std::vector<std::array<double, 2>> &line) const;
+
       /// The inflated tread's largest radial growth [m] (0 before inflate()).
       double
       tread_growth() const

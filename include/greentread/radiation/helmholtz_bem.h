@@ -175,6 +175,19 @@ namespace greentread
                      const Eigen::MatrixXcd              &pressure,
                      const Eigen::MatrixXcd              &normal_velocity) const;
 
+      /**
+       * @brief The transfer T [Pa s/m] from the cells' normal velocities to
+       * the pressure at @p points in the air (rows): p = T v, at the last
+       * assemble()'s frequency, what field_pressure() gives for v through
+       * surface_pressure(), by one adjoint solve per point instead of one
+       * solve per cell. With S the system's solution operator (its inverse,
+       * or with CHIEF points its least-squares inverse R^{-1} Q^H),
+       * T = j w rho (H_x S G + G_x), the rows H_x S computed as
+       * (S^H H_x^H)^H.
+       */
+      Eigen::MatrixXcd
+      field_transfer(const std::vector<dealii::Point<3>> &points) const;
+
       /// The time-averaged power [W] that flows through the surface into the
       /// air, \f$\tfrac12 \mathrm{Re} \int_S p\,v_n^*\,dS\f$, per case.
       Eigen::VectorXd

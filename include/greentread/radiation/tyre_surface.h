@@ -67,6 +67,16 @@ namespace greentread
       double patch_half_length = 0.;
       /// The contour's axial extent [m]: the tyre's width.
       double axial_min = 0., axial_max = 0.;
+      /// The contour as resampled: cell row s of the revolved surface spans
+      /// its segment s, from point s to point s + 1 ((radius, axial) [m]).
+      SectionLine section_line;
+      /// Per cell: the contour's segment it spans, or -1 for the wheel's
+      /// discs; and the angle of its middle about the axle [rad], 0 at the
+      /// bottom (the patch centre), positive along x.
+      std::vector<int>    segment;
+      std::vector<double> angle;
+      /// The angle a cell of the revolved contour spans [rad].
+      double arc = 0.;
 
       /// Whether a point [m] lies inside the tyre and wheel (or under the road).
       bool
