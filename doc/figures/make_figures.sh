@@ -83,6 +83,10 @@ place benchmarks/sdof_convergence/sdof_convergence.png "$tmp/sdof_convergence/sd
 "$build/benchmarks/horn_effect" --output "$tmp/horn_effect" > /dev/null
 place benchmarks/horn_effect/horn_effect.png "$tmp/horn_effect/horn_effect.png"
 
+# The sound of the main job's tyre for white-noise forces (about 12 minutes on 2 cores).
+"$build/benchmarks/tyre_sound" --output "$tmp/tyre_sound" > /dev/null
+place benchmarks/tyre_sound/tyre_sound.png "$tmp/tyre_sound/tyre_sound.png"
+
 # The default section against the one twice as fine.
 converged_out="$build/benchmark-output/converged_ring"
 converged="$converged_out/converged_ring_road-A_90kmh.png"
