@@ -4,7 +4,7 @@
 // from its contact forces against a second route, the pressure's time
 // history synthesised from the same transfers and its own Welch spectrum.
 #include "bounds.h"
-#include "coarse_tyre.h"
+#include "radiating_tyre.h"
 #include <greentread/analysis/third_octave.h>
 #include <greentread/fe/harmonic_section.h>
 #include <greentread/radiation/helmholtz_bem.h>
@@ -12,6 +12,7 @@
 #include <greentread/radiation/surface_mobility.h>
 #include <greentread/radiation/tyre_surface.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/fe/mapping_q1.h>
 
 #include <boost/test/unit_test.hpp>
@@ -19,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstring>
 
 using namespace greentread;
 
@@ -26,35 +28,16 @@ namespace
 {
   using Complex = std::complex<double>;
 
-  periodic::PatchRequest
-  patch_request()
+  /// The radiating tyre and its boundary elements over the road.
+  struct Tyre : test::RadiatingTyre
   {
-    periodic::PatchRequest r;
-    r.load          = periodic::PointLoad::tributary_area;
-    r.points_along  = 3;
-    r.points_across = 3;
-    r.length        = 0.018;
-    r.width         = 0.03;
-    return r;
-  }
-
-  /// The coarse tyre standing on the road, 4 cm cells, 10 mm deflection.
-  struct Tyre
-  {
-    test::CoarseTyre              tyre;
-    fe::HarmonicSection           section;
-    radiation::TyreSurface        surface;
     const dealii::MappingQ1<2, 3> mapping;
     radiation::HelmholtzBem       bem;
     radiation::Air                air;
 
     Tyre()
-        : tyre(64, patch_request(), true)
-        , section(tyre.cell->section(), tyre.materials.materials(), 2)
-        , surface(radiation::outer_contour(tyre.cell->section()), 0.04, 0.01)
-        , bem(surface.mesh, mapping, surface.outward)
+        : bem(surface.mesh, mapping, surface.outward)
     {
-      section.inflate(2e5);
       air.ground = true;
     }
   };
@@ -176,6 +159,36 @@ BOOST_AUTO_TEST_CASE(a_force_tone_gives_the_sound_of_its_transfer)
   // lobe's width (1/64).
   CHECK_BOUND(worst[1], 0.04);
   CHECK_BOUND(worst[1] / worst[0], 0.075);
+}
+
+// The surface mobility (its harmonics on the threads) and the sound spectra
+// of a record of forces, on one thread and on two: the same bytes.
+BOOST_AUTO_TEST_CASE(the_same_bytes_with_any_thread_count)
+{
+  Tyre                                 t;
+  const auto                           bands = analysis::third_octave_bands(400., 400.);
+  std::vector<radiation::BandTransfer> transfers{radiation::band_transfer(
+    t.bem, t.surface, t.air, bands[0].centre, {radiation::cpx_microphones(t.surface)[0].position})};
+  std::vector<std::vector<double>>     forces(9, std::vector<double>(6400));
+  for (std::size_t q = 0; q < forces.size(); ++q)
+    for (std::size_t n = 0; n < forces[q].size(); ++n)
+      forces[q][n] = std::sin(0.37 * n * (q + 1)) + std::cos(0.011 * n * n + q);
+  const auto run = [&](const unsigned int threads) {
+    dealii::MultithreadInfo::set_thread_limit(threads);
+    const radiation::SurfaceMobility mobility(t.section, t.tyre.patch, t.surface, 2. * M_PI * 3000.,
+                                              12);
+    const auto                       spectra =
+      radiation::sound_spectra(forces, 1. / 25600., mobility, transfers, 400., 400., 8);
+    std::vector<double>    out{spectra[0].rms[0], spectra[1].rms[0]};
+    const Eigen::MatrixXcd y = mobility.at(2. * M_PI * 400.);
+    for (Eigen::Index i = 0; i < y.size(); ++i)
+      out.push_back(std::abs(y(i)));
+    return out;
+  };
+  const auto one = run(1), two = run(2);
+  dealii::MultithreadInfo::set_thread_limit();
+  BOOST_TEST_REQUIRE(one.size() == two.size());
+  BOOST_TEST(std::memcmp(one.data(), two.data(), sizeof(double) * one.size()) == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

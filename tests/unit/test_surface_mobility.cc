@@ -5,7 +5,7 @@
 // harmonic by harmonic, summed round the ring here on its own; and the
 // section's outer-line segments against the line's own geometry.
 #include "bounds.h"
-#include "coarse_tyre.h"
+#include "radiating_tyre.h"
 #include <greentread/base/exceptions.h>
 #include <greentread/fe/harmonic_section.h>
 #include <greentread/periodic/harmonic_ring.h>
@@ -26,32 +26,14 @@ namespace
 {
   using Complex = std::complex<double>;
 
-  periodic::PatchRequest
-  patch_request()
+  /// The radiating tyre and the ring of its Green's functions, the
+  /// reference's loads and angles.
+  struct Tyre : test::RadiatingTyre
   {
-    periodic::PatchRequest r;
-    r.load          = periodic::PointLoad::tributary_area;
-    r.points_along  = 3;
-    r.points_across = 3;
-    r.length        = 0.018;
-    r.width         = 0.03;
-    return r;
-  }
-
-  /// The coarse tyre's inflated section, its ring, and its surface at
-  /// 4 cm cells with 10 mm deflection.
-  struct Tyre
-  {
-    test::CoarseTyre       tyre;
-    fe::HarmonicSection    section;
     periodic::HarmonicRing ring;
-    radiation::TyreSurface surface;
 
     Tyre()
-        : tyre(64, patch_request(), true)
-        , section(tyre.cell->section(), tyre.materials.materials(), 2)
-        , ring((section.inflate(2e5), section), tyre.patch, 1e-3, 2. * M_PI * 1000.)
-        , surface(radiation::outer_contour(tyre.cell->section()), 0.04, 0.01)
+        : ring(section, tyre.patch, 1e-3, 2. * M_PI * 1000.)
     {
     }
   };
@@ -77,7 +59,7 @@ BOOST_AUTO_TEST_SUITE(surface_mobility)
 // vertices' polyline but for chords across its curved stretches).
 BOOST_AUTO_TEST_CASE(segments_cover_the_outer_line)
 {
-  test::CoarseTyre          tyre(64, patch_request(), true);
+  test::CoarseTyre          tyre(64, test::radiating_patch_request(), true);
   const fe::HarmonicSection section(tyre.cell->section(), tyre.materials.materials(), 2);
   const auto                line  = radiation::outer_contour(tyre.cell->section());
   double                    exact = 0.;
@@ -181,7 +163,7 @@ BOOST_AUTO_TEST_CASE(modal_synthesis_matches_the_direct_solve)
 
   // Points on nodes carry point forces, whose series round the ring does
   // not converge: refused.
-  periodic::PatchRequest on_nodes = patch_request();
+  periodic::PatchRequest on_nodes = test::radiating_patch_request();
   on_nodes.load                   = periodic::PointLoad::node;
   const auto nodes                = periodic::place_contact_points(t.tyre.periodic_cell, on_nodes);
   BOOST_CHECK_THROW(radiation::SurfaceMobility(t.section, nodes, t.surface, 2. * M_PI * 4000., N),
