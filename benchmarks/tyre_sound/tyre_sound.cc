@@ -48,6 +48,8 @@ namespace
     unsigned int                       cells = 0, harmonics = 0, modes = 0;
     double                             mobility_seconds = 0., bem_seconds = 0., sound_seconds = 0.;
     std::vector<std::array<double, 3>> level;
+    /// The power the forces put in [dB re 1 pW] (a lower bound of it).
+    std::vector<double> input;
   };
 } // namespace
 
@@ -144,7 +146,10 @@ main(int argc, char **argv)
         radiation::sound_spectra(forces, dt, mobility, transfers, f_low, f_high, 8);
       out.sound_seconds = seconds_since(start);
       for (std::size_t b = 0; b < bands.size(); ++b)
-        out.level.push_back({{spectra[0].level[b], spectra[1].level[b], spectra[2].level[b]}});
+        {
+          out.level.push_back({{spectra[0].level[b], spectra[1].level[b], spectra[2].level[b]}});
+          out.input.push_back(spectra[3].level[b]);
+        }
       std::printf("%-21s %5u cells, %3u harmonics, %6u modes: mobility %.1f s, boundary "
                   "elements %.1f s (%zu bands), sound %.1f s\n",
                   out.name.c_str(), out.cells, out.harmonics, out.modes, out.mobility_seconds,
@@ -179,9 +184,21 @@ main(int argc, char **argv)
     for (std::size_t b = 0; b < bands.size(); ++b)
       csv << bands[b].nominal << ',' << quantity[q] << ',' << runs[0].level[b][q] << ','
           << runs[1].level[b][q] << ',' << runs[2].level[b][q] << '\n';
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    csv << bands[b].nominal << ",input," << runs[0].input[b] << ',' << runs[1].input[b] << ','
+        << runs[2].input[b] << '\n';
+  // Energy: how far the radiated power lies below what the forces put in.
+  double least_margin = 1e9, most_margin = -1e9;
+  for (const auto &run : runs)
+    for (std::size_t b = 0; b < bands.size(); ++b)
+      {
+        least_margin = std::min(least_margin, run.input[b] - run.level[b][2]);
+        most_margin  = std::max(most_margin, run.input[b] - run.level[b][2]);
+      }
   std::printf("\nThe finer mesh moves the levels by %.2f dB at most, twice the harmonics by "
-              "%.3f dB.\n",
-              mesh_move, harmonic_move);
+              "%.3f dB.\nThe radiated power lies %.1f to %.1f dB below the power the forces put "
+              "into the tyre.\n",
+              mesh_move, harmonic_move, least_margin, most_margin);
 
   benchmark::Checks checks("tyre_sound");
   // Discretisations' differences, bounded 1.25 times above what they
@@ -192,6 +209,9 @@ main(int argc, char **argv)
                  options.quick ? 1.12 : 1.07);
   checks.at_most("largest change of a level with twice the harmonics [dB]", harmonic_move,
                  options.quick ? 0.001 : 0.071);
+  // Energy: the air takes less than the forces put in (their power here a
+  // lower bound: the harmonics and modes left out would add to it).
+  checks.at_least("radiated power below the power put in, in every band [dB]", least_margin, 0.);
 
   {
     base::AtomicFile file(options.output / "tyre_sound.csv");

@@ -100,6 +100,7 @@ namespace greentread
       const Eigen::Index  n_microphones = transfers.front().microphones.rows();
       std::vector<double> references(n_microphones, pressure_reference);
       references.push_back(power_reference);
+      references.push_back(power_reference);
       return analysis::welch_band_spectra(
         forces, dt, references, f_low, f_high, lines_per_segment,
         [&](const double frequency, const std::size_t band, const Eigen::MatrixXcd &coefficients,
@@ -109,6 +110,11 @@ namespace greentread
           const BandTransfer &t         = transfers[band];
           powers.topRows(n_microphones) = (t.microphones * v).cwiseAbs2();
           powers.row(n_microphones)     = (t.power * v).cwiseAbs2().colwise().sum();
+          // What the forces put in: Re F^H v at the points.
+          const Eigen::MatrixXcd at_points =
+            mobility.point_velocity(2. * dealii::numbers::PI * frequency, coefficients);
+          powers.row(n_microphones + 1) =
+            (coefficients.conjugate().cwiseProduct(at_points)).colwise().sum().real();
         });
     }
   } // namespace radiation

@@ -91,19 +91,22 @@ namespace greentread
           throw NumericalError("the surface mobility's harmonic " + std::to_string(n) +
                                ": the section's stiffness could not be factored");
         const Eigen::MatrixXd static_response = stiffness.solve(strips);
-        h.residual = segment_loads.transpose() * static_response - modal_part(h, 0.).real();
+        h.residual =
+          segment_loads.transpose() * static_response - modal_part(h, h.at_segments, 0.).real();
+        h.strip_residual =
+          strips.transpose() * static_response - modal_part(h, h.at_strips, 0.).real();
       });
     }
 
 
 
     Eigen::MatrixXcd
-    SurfaceMobility::modal_part(const Harmonic &h, const double omega)
+    SurfaceMobility::modal_part(const Harmonic &h, const Eigen::MatrixXcd &left, const double omega)
     {
       using Complex          = std::complex<double>;
       const Eigen::Index m   = h.omega.size();
       Eigen::VectorXcd   den = Eigen::VectorXcd::Zero(m);
-      Eigen::MatrixXcd   out = Eigen::MatrixXcd::Zero(h.at_segments.cols(), h.at_strips.cols());
+      Eigen::MatrixXcd   out = Eigen::MatrixXcd::Zero(left.cols(), h.at_strips.cols());
       if (m == 0)
         return out;
       if (!h.coupled)
@@ -111,7 +114,7 @@ namespace greentread
           for (Eigen::Index k = 0; k < m; ++k)
             den(k) = 1. / Complex(h.omega(k) * h.omega(k) - omega * omega,
                                   2. * h.damping_ratio(k) * h.omega(k) * omega);
-          return h.at_segments.transpose() * den.asDiagonal() * h.at_strips;
+          return left.transpose() * den.asDiagonal() * h.at_strips;
         }
       // psi psi^T / (2 j w_d (j w - l)) - conj(psi psi^T) / (2 j w_d (j w - conj l)).
       Eigen::VectorXcd conj_den(m);
@@ -123,9 +126,8 @@ namespace greentread
           den(k)      = 1. / (twice * (jw - l));
           conj_den(k) = -1. / (twice * (jw - std::conj(l)));
         }
-      out = h.at_segments.transpose() * den.asDiagonal() * h.at_strips;
-      out +=
-        h.at_segments.conjugate().transpose() * conj_den.asDiagonal() * h.at_strips.conjugate();
+      out = left.transpose() * den.asDiagonal() * h.at_strips;
+      out += left.conjugate().transpose() * conj_den.asDiagonal() * h.at_strips.conjugate();
       return out;
     }
 
@@ -135,7 +137,16 @@ namespace greentread
     SurfaceMobility::section_transfer(const unsigned int n, const double omega) const
     {
       const Harmonic &h = harmonics.at(n);
-      return modal_part(h, omega) + h.residual.cast<std::complex<double>>();
+      return modal_part(h, h.at_segments, omega) + h.residual.cast<std::complex<double>>();
+    }
+
+
+
+    Eigen::MatrixXcd
+    SurfaceMobility::strip_transfer(const unsigned int n, const double omega) const
+    {
+      const Harmonic &h = harmonics.at(n);
+      return modal_part(h, h.at_strips, omega) + h.strip_residual.cast<std::complex<double>>();
     }
 
 
@@ -152,20 +163,29 @@ namespace greentread
 
 
     Eigen::MatrixXcd
-    SurfaceMobility::velocity(const double omega, const Eigen::MatrixXcd &forces) const
+    SurfaceMobility::spread(const double            omega,
+                            const Eigen::MatrixXcd &forces,
+                            const bool              to_points) const
     {
       using Complex = std::complex<double>;
-      const auto C  = static_cast<Eigen::Index>(cell_segment.size());
       const auto P  = static_cast<Eigen::Index>(point_angle.size());
       if (forces.rows() != P)
         throw NumericalError("the surface mobility has " + std::to_string(P) +
                              " points; forces given at " + std::to_string(forces.rows()));
-      const Eigen::Index K = forces.cols();
-      Eigen::MatrixXcd   v = Eigen::MatrixXcd::Zero(C, K);
+      // Where the velocity goes: each row's segment (or strip) and angle.
+      std::vector<int> rows;
+      for (const unsigned int j : point_strip)
+        rows.push_back(static_cast<int>(j));
+      const std::vector<int>    &row_line  = to_points ? rows : cell_segment;
+      const std::vector<double> &row_angle = to_points ? point_angle : cell_angle;
+      const double               row_arc   = to_points ? point_arc : cell_arc;
+      const auto                 R         = static_cast<Eigen::Index>(row_line.size());
+      const Eigen::Index         K         = forces.cols();
+      Eigen::MatrixXcd           v         = Eigen::MatrixXcd::Zero(R, K);
       for (unsigned int n = 0; n < harmonics.size(); ++n)
         {
           const double weight = (n == 0 ? 1. : 2.) / (2. * dealii::numbers::PI) *
-                                sinc(0.5 * n * cell_arc) * sinc(0.5 * n * point_arc);
+                                sinc(0.5 * n * row_arc) * sinc(0.5 * n * point_arc);
           // cos(n (a - b)) = (e^{jn(a - b)} + e^{-jn(a - b)}) / 2: the forces'
           // content per strip at e^{-jn theta} (plus) and e^{+jn theta} (minus).
           Eigen::MatrixXcd plus = Eigen::MatrixXcd::Zero(n_strips, K), minus = plus;
@@ -175,17 +195,33 @@ namespace greentread
               plus.row(point_strip[q]) += std::conj(e) * forces.row(q);
               minus.row(point_strip[q]) += e * forces.row(q);
             }
-          const Eigen::MatrixXcd H      = (0.5 * weight) * section_transfer(n, omega);
+          const Eigen::MatrixXcd H =
+            (0.5 * weight) * (to_points ? strip_transfer(n, omega) : section_transfer(n, omega));
           const Eigen::MatrixXcd u_plus = H * plus, u_minus = H * minus;
-          for (Eigen::Index c = 0; c < C; ++c)
-            if (cell_segment[c] >= 0)
+          for (Eigen::Index c = 0; c < R; ++c)
+            if (row_line[c] >= 0)
               {
-                const Complex e = std::polar(1., n * cell_angle[c]);
-                v.row(c) +=
-                  e * u_plus.row(cell_segment[c]) + std::conj(e) * u_minus.row(cell_segment[c]);
+                const Complex e = std::polar(1., n * row_angle[c]);
+                v.row(c) += e * u_plus.row(row_line[c]) + std::conj(e) * u_minus.row(row_line[c]);
               }
         }
       return Complex(0., omega) * v;
+    }
+
+
+
+    Eigen::MatrixXcd
+    SurfaceMobility::velocity(const double omega, const Eigen::MatrixXcd &forces) const
+    {
+      return spread(omega, forces, false);
+    }
+
+
+
+    Eigen::MatrixXcd
+    SurfaceMobility::point_velocity(const double omega, const Eigen::MatrixXcd &forces) const
+    {
+      return spread(omega, forces, true);
     }
 
 

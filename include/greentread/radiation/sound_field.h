@@ -97,12 +97,15 @@ namespace greentread
 
     /**
      * @brief The one-third-octave spectra of the sound of a run: the
-     * pressure at each microphone, and last the radiated power, by Welch's
+     * pressure at each microphone, the radiated power, and last the power
+     * the forces put into the tyre (a lower bound of it:
+     * SurfaceMobility::point_velocity()), by Welch's
      * method (analysis::welch_band_spectra()) over the contact forces
      * @p forces at the points of @p mobility (one signal per point, [N],
      * @p dt apart). At each Fourier line of band b, the cells' velocity
      * Y(w) F and the transfers[b] of that band give the microphones'
-     * pressures and the far field's. A power's "rms" is sqrt(W) [sqrt(W)],
+     * pressures and the far field's, and the points' velocity the forces'
+     * power. A power's "rms" is sqrt(W) [sqrt(W)],
      * so that its level against 1e-6 is 10 log10(W / 1e-12 W).
      * @param[in] transfers One per band of analysis::third_octave_bands(
      *                      @p f_low, @p f_high), in order.

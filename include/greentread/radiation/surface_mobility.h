@@ -84,6 +84,18 @@ namespace greentread
       Eigen::MatrixXcd
       velocity(double omega, const Eigen::MatrixXcd &forces) const;
 
+      /**
+       * @brief The points' own velocity [m/s] (each over its rectangle) for
+       * the forces @p forces, by the same sum over the harmonics as
+       * velocity() with the strips in place of the segments. Its power
+       * 1/2 Re F^H v is what the forces put into the tyre, less what the
+       * harmonics from N on and the modes above the cut-off would add: each
+       * harmonic's and each mode's share is dissipated, so none is
+       * negative, and the sum is a lower bound of the whole.
+       */
+      Eigen::MatrixXcd
+      point_velocity(double omega, const Eigen::MatrixXcd &forces) const;
+
       /// Y(w) [m / (s N)]: cells (rows) by points (columns), velocity() of
       /// unit forces.
       Eigen::MatrixXcd
@@ -106,6 +118,10 @@ namespace greentread
       Eigen::MatrixXcd
       section_transfer(unsigned int n, double omega) const;
 
+      /// The same from the strips to the strips.
+      Eigen::MatrixXcd
+      strip_transfer(unsigned int n, double omega) const;
+
       unsigned int
       n_harmonics() const
       {
@@ -125,13 +141,19 @@ namespace greentread
         /// damping's coupling, else real (imaginary parts zero).
         Eigen::MatrixXcd at_segments, at_strips;
         bool             coupled = false;
-        /// H_n(0) less the modes' part at 0 Hz, segments by strips.
-        Eigen::MatrixXd residual;
+        /// H_n(0) less the modes' part at 0 Hz, segments by strips, and
+        /// strips by strips.
+        Eigen::MatrixXd residual, strip_residual;
       };
 
-      /// The modes' part of H_n(w).
+      /// The modes' part of H_n(w) from the strips to @p left, the modes'
+      /// values at the segments or the strips.
       static Eigen::MatrixXcd
-      modal_part(const Harmonic &h, double omega);
+      modal_part(const Harmonic &h, const Eigen::MatrixXcd &left, double omega);
+
+      /// velocity() (to the cells) or point_velocity() (@p to_points).
+      Eigen::MatrixXcd
+      spread(double omega, const Eigen::MatrixXcd &forces, bool to_points) const;
 
       std::vector<Harmonic> harmonics;
       /// Per cell its segment (-1: held still), cos and sin of n theta come
