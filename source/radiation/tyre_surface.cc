@@ -10,6 +10,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -158,8 +159,14 @@ namespace greentread
                          "] m (a quarter of the section height)");
       axle_height       = outer_radius - deflection;
       patch_half_length = std::sqrt(outer_radius * outer_radius - axle_height * axle_height);
-      axial_min         = first[1];
-      axial_max         = last[1];
+      // The widest point of the contour (the sidewalls' bulge), not its
+      // ends at the beads.
+      axial_min = axial_max = first[1];
+      for (const auto &p : contour)
+        {
+          axial_min = std::min(axial_min, p[1]);
+          axial_max = std::max(axial_max, p[1]);
+        }
 
       const SectionLine line = resample(contour, cell_size);
       section_line           = line;

@@ -65,7 +65,8 @@ namespace greentread
       double axle_height = 0.;
       /// The contact patch's half length along x at the largest radius [m].
       double patch_half_length = 0.;
-      /// The contour's axial extent [m]: the tyre's width.
+      /// The contour's axial extent [m], from side to side at its widest
+      /// (the sidewalls' bulge): the tyre's width.
       double axial_min = 0., axial_max = 0.;
       /// The contour as resampled: cell row s of the revolved surface spans
       /// its segment s, from point s to point s + 1 ((radius, axial) [m]).
