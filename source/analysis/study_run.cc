@@ -216,6 +216,12 @@ namespace greentread
       if (setup.convolution == convolution::Method::direct)
         record.extensible.longest_steps = 0;
       record.centre.reserve(band_run.steps);
+      std::vector<std::vector<double>> point_forces;
+      Eigen::VectorXd                  gathered;
+      if (settings.point_forces && write_outputs)
+        point_forces.resize(level.model->n_points());
+      for (auto &history : point_forces)
+        history.reserve(band_run.steps);
       record.force.reserve(band_run.steps);
       unsigned int   failed_steps = 0;
       base::Progress progress("    " + run, band_run.steps);
@@ -229,6 +235,12 @@ namespace greentread
           output->add(step);
         record.centre.push_back(reporting.dot(step.force) / tributary);
         record.force.push_back(step.force.sum());
+        if (!point_forces.empty())
+          {
+            grid.gather(step.force, gathered);
+            for (std::size_t p = 0; p < point_forces.size(); ++p)
+              point_forces[p].push_back(gathered[static_cast<Eigen::Index>(p)]);
+          }
         if (settings.print_timings)
           progress.update(step.step + 1);
       };
@@ -245,7 +257,8 @@ namespace greentread
       report_run(printer.out, run, record, summary, equilibrium.q.sum(), failed_steps,
                  base::seconds_since(t_run), settings.print_timings);
 
-      RunSpectrum spectra_of_run{road_name, speed_kmh, {}, {}, record.centre, record.force, dt};
+      RunSpectrum spectra_of_run{road_name,     speed_kmh,    {}, {},
+                                 record.centre, record.force, dt, std::move(point_forces)};
       if (write_outputs)
         {
           if (!record.final_spectra)

@@ -138,6 +138,10 @@ namespace greentread
       /// bars' windows come from them).
       std::vector<double> stress_history, force_history;
       double              time_step = 0.;
+      /// With RunSettings::point_forces, the contact forces summed over
+      /// each Green's-function point's rectangle [N], one history per
+      /// point (a run of the plan only: an error bar's level keeps none).
+      std::vector<std::vector<double>> point_forces;
     };
 
     /**

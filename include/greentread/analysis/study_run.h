@@ -31,6 +31,9 @@ namespace greentread
       const std::filesystem::path      &directory;
       const base::ParameterRecord      &record;
       bool                              print_timings = true;
+      /// Keep each run's contact forces gathered on the Green's-function
+      /// points (RunSpectrum::point_forces), for the sound.
+      bool point_forces = false;
     };
 
     /**
