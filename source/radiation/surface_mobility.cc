@@ -55,7 +55,7 @@ namespace greentread
       const double radius = patch.dx / patch.arc;
       for (std::size_t p = 0; p < patch.points.size(); ++p)
         {
-          point_strip.push_back(static_cast<unsigned int>(p % n_strips));
+          point_strip.push_back(static_cast<int>(p % n_strips));
           point_angle.push_back(patch.points[p].x / radius);
         }
 
@@ -173,10 +173,7 @@ namespace greentread
         throw NumericalError("the surface mobility has " + std::to_string(P) +
                              " points; forces given at " + std::to_string(forces.rows()));
       // Where the velocity goes: each row's segment (or strip) and angle.
-      std::vector<int> rows;
-      for (const unsigned int j : point_strip)
-        rows.push_back(static_cast<int>(j));
-      const std::vector<int>    &row_line  = to_points ? rows : cell_segment;
+      const std::vector<int>    &row_line  = to_points ? point_strip : cell_segment;
       const std::vector<double> &row_angle = to_points ? point_angle : cell_angle;
       const double               row_arc   = to_points ? point_arc : cell_arc;
       const auto                 R         = static_cast<Eigen::Index>(row_line.size());

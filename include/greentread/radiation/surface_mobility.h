@@ -132,6 +132,32 @@ namespace greentread
       unsigned int
       n_modes() const;
 
+      /// The same mobility summed over its first @p n harmonics only (the
+      /// harmonics' error bar). @throws InputError if @p n exceeds them.
+      SurfaceMobility
+      truncated(unsigned int n) const;
+
+      /// The mobility as flat arrays, for a saved stage: per harmonic its
+      /// modes' count, coupling, frequencies, damping ratios and shapes
+      /// (row-major, mode by segment and mode by strip) and its residuals
+      /// (row-major), one after the other; the cells' and points' places.
+      struct Saved
+      {
+        std::vector<int>                  modes, coupled, cell_segment, point_strip;
+        std::vector<double>               omega, damping_ratio, cell_angle, point_angle;
+        std::vector<std::complex<double>> at_segments, at_strips;
+        std::vector<double>               residual, strip_residual;
+        /// The strips J, the segments S, the cells' arc and the points' arc.
+        std::vector<double> sizes;
+      };
+
+      Saved
+      saved() const;
+
+      /// The mobility that saved() gave. @throws InputError if the arrays'
+      /// sizes do not fit together.
+      explicit SurfaceMobility(const Saved &saved);
+
     private:
       /// One harmonic's modes at the segments and strips, and its residual.
       struct Harmonic
@@ -158,11 +184,11 @@ namespace greentread
       std::vector<Harmonic> harmonics;
       /// Per cell its segment (-1: held still), cos and sin of n theta come
       /// from its angle; per point its strip and angle.
-      std::vector<int>          cell_segment;
-      std::vector<double>       cell_angle, point_angle;
-      std::vector<unsigned int> point_strip;
-      unsigned int              n_strips = 0;
-      double                    cell_arc = 0., point_arc = 0.;
+      std::vector<int>    cell_segment;
+      std::vector<double> cell_angle, point_angle;
+      std::vector<int>    point_strip;
+      unsigned int        n_strips = 0;
+      double              cell_arc = 0., point_arc = 0.;
     };
   } // namespace radiation
 } // namespace greentread
