@@ -10,6 +10,7 @@
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
 #include <greentread/periodic/green_functions.h>
+#include <greentread/radiation/sound_parameters.h>
 #include <greentread/road/road_profile.h>
 #include <greentread/scenes/green_scene.h>
 #include <greentread/scenes/identify_scene.h>
@@ -45,6 +46,7 @@ namespace greentread
       analysis::SpectraParameters::declare_parameters(prm);
       analysis::ErrorBarParameters::declare_parameters(prm);
       contact::ContactGridParameters::declare_parameters(prm);
+      radiation::SoundParameters::declare_parameters(prm);
       declare_renamed_parameters(prm);
     }
 
@@ -95,7 +97,7 @@ namespace greentread
            {"Geometry", "Materials", "Inflation", "Green's functions", "Identification",
             "Patch model", "Road texture", "Road/Sinusoid", "Rolling", "Contact grid",
             "Time stepping/Time step", "Convolution/Method", "Convolution/Shape precision", "Spectra",
-            "Error bars"},
+            "Error bars", "Sound"},
            false,
            make<TyreRoadContactScene>}};
       return registry;

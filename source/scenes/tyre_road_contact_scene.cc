@@ -97,6 +97,10 @@ namespace greentread
       spectra.parse_parameters(prm);
       error_bars.parse_parameters(prm);
       contact_grid.parse_parameters(prm);
+      sound.parse_parameters(prm);
+      // Microphones above the road and outside the tyre, checked on the
+      // parameters' tyre now; the surface checks them again.
+      sound.check_microphones(geometry.outer_radius(), geometry.section_width);
       // The solver against the patch model, refused now rather than after
       // the Green's functions.
       contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
@@ -182,7 +186,14 @@ namespace greentread
           for (const double speed_kmh : rolling.speeds)
             {
               const double V = speed_kmh / 3.6;
-              analysis::top_band_for_step(rolling.time_step_for(road_spacing(name), V));
+              const double top =
+                analysis::top_band_for_step(rolling.time_step_for(road_spacing(name), V));
+              if (sound.enabled() && sound.top_band > top * (1. + 1e-9))
+                throw InputError(
+                  "parameter 'Sound/Top band' = " + format_number(sound.top_band) +
+                  " Hz is above the highest band of the runs of road '" + name + "' at " +
+                  format_number(speed_kmh) + " km/h (" + format_number(top) +
+                  " Hz, from their time step); allowed: up to " + format_number(top) + " Hz");
               if (rolling.distance / V < needed)
                 throw InputError(
                   "parameter 'Rolling/Distance' = " + format_short(rolling.distance) + " m lasts " +
@@ -271,6 +282,8 @@ namespace greentread
       analysis::write_spectra(
         directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
         roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
+      if (sound.enabled())
+        sound_stage(study, job_spectra, model, directory, record);
       if (global.print_timings)
         std::cout << "Total run time " << format_printf("%.3g", base::seconds_since(start))
                   << " s\n";
@@ -294,8 +307,8 @@ namespace greentread
         static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
       if (side_by_side > 1)
         std::cout << "  " << n_runs << " runs, " << side_by_side << " at a time\n";
-      const analysis::RunSettings        settings{rolling, spectra, directory, record,
-                                           global.print_timings};
+      const analysis::RunSettings settings{
+        rolling, spectra, directory, record, global.print_timings, sound.enabled()};
       std::vector<analysis::RunSpectrum> job_spectra(n_runs);
       base::for_each_index(n_runs, side_by_side, [&](const std::size_t k, unsigned int) {
         const analysis::StudyJob  &job = study.jobs[k];

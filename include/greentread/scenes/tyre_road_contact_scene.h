@@ -16,6 +16,7 @@
 #include <greentread/modal/patch_model.h>
 #include <greentread/modal/patch_model_stage.h>
 #include <greentread/periodic/green_functions.h>
+#include <greentread/radiation/sound_parameters.h>
 #include <greentread/road/patch_road.h>
 #include <greentread/scenes/scene.h>
 #include <greentread/scenes/tyre_cell_scene.h>
@@ -142,6 +143,16 @@ namespace greentread
                  const base::ParameterRecord &record) const;
 
       /// The roads of the study, with how far their runs may roll on @p grid.
+      /// Stage radiation: the sound of every road and speed from its runs'
+      /// forces at the Green's-function points (@p job_spectra, one per job
+      /// of @p study), at the points of @p model.
+      void
+      sound_stage(const analysis::Study                    &study,
+                  const std::vector<analysis::RunSpectrum> &job_spectra,
+                  const modal::PatchModel                  &model,
+                  const std::filesystem::path              &directory,
+                  const base::ParameterRecord              &record) const;
+
       std::vector<analysis::StudyRoad>
       study_roads(const contact::ContactGrid &grid) const;
 
@@ -171,6 +182,7 @@ namespace greentread
       analysis::SpectraParameters     spectra;
       analysis::ErrorBarParameters    error_bars;
       contact::ContactGridParameters  contact_grid;
+      radiation::SoundParameters      sound;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the
       /// Green's functions.
