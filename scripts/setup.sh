@@ -37,6 +37,8 @@ packages=(
   libopenblas0-serial   # an optimised serial BLAS under UMFPACK (30% faster full-ring solves)
   libspectra-dev        # Spectra: shift-invert Lanczos for the section's harmonic modes
   libsiconos-numerics-dev # Siconos' LCP solvers: the reference of tests/unit/test_lcp.cc
+  libminizip-dev        # minizip: X3P road files are zip archives
+  libssl-dev            # OpenSSL's libcrypto: the MD5 sums X3P files carry
   clang-format          # the code's layout, checked by scripts/check_format.sh in CI
 )
 

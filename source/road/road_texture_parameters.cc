@@ -18,17 +18,19 @@ namespace greentread
       using base::RangePattern;
       prm.enter_subsection("Road texture");
       {
-        prm.declare_entry("Roads", "road-A, road-B", dealii::Patterns::Anything(),
-                          "The roads to roll over, a comma-separated list. Each is 'road-A' "
-                          "(rough, surface-dressing-like, MPD about 1.9 mm) or 'road-B' (dense "
-                          "asphalt, MPD about 0.7 mm), synthetic textures with the documented "
-                          "target spectra (doc/methods/contact.md); 'sinusoid' (a sinusoid "
-                          "along x, subsection Road/Sinusoid); 'flat'; or a texture file: SDF "
-                          "(ISO 25178-71, ASCII or binary) or the plain height grid "
-                          "(doc/getting-started.md). A relative file name is looked for "
-                          "beside the scene file, then in the working directory. A road's "
-                          "samples may be at most 4 contact rectangles apart (3 mm at the "
-                          "default grid).");
+        prm.declare_entry(
+          "Roads", "road-A, road-B", dealii::Patterns::Anything(),
+          "The roads to roll over, a comma-separated list. Each is 'road-A' "
+          "(rough, surface-dressing-like, MPD about 1.9 mm) or 'road-B' (dense "
+          "asphalt, MPD about 0.7 mm), synthetic textures with the documented "
+          "target spectra (doc/methods/contact.md); 'sinusoid' (a sinusoid "
+          "along x, subsection Road/Sinusoid); 'flat'; or a texture file: X3P "
+          "(ISO 25178-72), SDF (ISO 25178-71, ASCII or binary), an "
+          "ISO 13473-1 text profile in mm or the plain height grid "
+          "(doc/getting-started.md, doc/methods/contact.md). A relative file name is looked for "
+          "beside the scene file, then in the working directory. A road's "
+          "samples may be at most 4 contact rectangles apart (3 mm at the "
+          "default grid).");
         prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0),
                           "Seed of the synthetic textures: the same seed gives the same road.");
         prm.declare_entry("Length", "2.304", base::RangePattern::closed(0.05, 20., "m"),

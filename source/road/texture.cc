@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/road/texture.h>
+#include <greentread/road/texture_files.h>
 
 #include <unsupported/Eigen/FFT>
 
@@ -289,7 +290,11 @@ namespace greentread
       const std::string bytes((std::istreambuf_iterator<char>(in)),
                               std::istreambuf_iterator<char>());
       Texture           t;
-      if (bytes.compare(0, 8, "bISO-1.0") == 0)
+      if (bytes.compare(0, 4, std::string("PK\x03\x04", 4)) == 0)
+        t = read_x3p(file);
+      else if (is_text_profile(bytes))
+        t = read_text_profile(bytes, file);
+      else if (bytes.compare(0, 8, "bISO-1.0") == 0)
         t = read_binary_sdf(bytes, file);
       else if (bytes.compare(0, 8, "aISO-1.0") == 0)
         t = read_ascii_sdf(bytes, file);

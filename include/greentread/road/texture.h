@@ -65,6 +65,9 @@ namespace greentread
      *   Compression, DataType, CheckType uint8) and the values of DataType
      *   0 uint8, 1 uint16, 2 uint32, 3 float, 4 int8, 5 int16, 6 int32,
      *   7 double; height = value x Zscale;
+     * - `PK`: X3P (ISO 25178-72), a zip archive: read_x3p();
+     * - a first line `profile_name:` or `sample_spacing_mm:`: an ISO 13473-1
+     *   text profile in mm: read_text_profile();
      * - anything else: the plain height grid: `#` comment lines, then a line
      *   `dx dy` (m), then one line per profile along x, each with the same
      *   number of heights (m).
