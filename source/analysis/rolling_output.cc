@@ -119,7 +119,7 @@ namespace greentread
 
 
 
-    void
+    double
     write_road_report(const std::filesystem::path &directory,
                       const std::string           &road_name,
                       const road::Texture         &texture,
@@ -171,6 +171,7 @@ namespace greentread
                        base::gnuplot_quote(directory / ("road_" + label + "_texture.dat")) +
                        " using 1:2:3 with image notitle\n",
                      record, 800, 700);
+      return mpd;
     }
 
 

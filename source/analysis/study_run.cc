@@ -223,9 +223,10 @@ namespace greentread
       for (auto &history : point_forces)
         history.reserve(band_run.steps);
       record.force.reserve(band_run.steps);
-      unsigned int   failed_steps = 0;
-      base::Progress progress("    " + run, band_run.steps);
-      const auto     observe = [&](const contact::RollingStep &step) {
+      unsigned int      failed_steps = 0;
+      RollingPowerMeter power(equilibrium.u, dt);
+      base::Progress    progress("    " + run, band_run.steps);
+      const auto        observe = [&](const contact::RollingStep &step) {
         if (!step.report.converged && failed_steps < 5)
           printer.out << "    step " << step.step << " (" << run
                       << ", t = " << format_short(step.time)
@@ -235,6 +236,7 @@ namespace greentread
           output->add(step);
         record.centre.push_back(reporting.dot(step.force) / tributary);
         record.force.push_back(step.force.sum());
+        power.add(step);
         if (!point_forces.empty())
           {
             grid.gather(step.force, gathered);
@@ -256,9 +258,18 @@ namespace greentread
       progress.finish();
       report_run(printer.out, run, record, summary, equilibrium.q.sum(), failed_steps,
                  base::seconds_since(t_run), settings.print_timings);
+      const RollingResistance resistance = power.result(V);
+      printer.out << "    " << run << ": rolling resistance the texture adds: "
+                  << format_printf("%.4g", resistance.force) << " +- "
+                  << format_printf("%.2g", resistance.force_error) << " N, C_RR "
+                  << format_printf("%.3g", 1e3 * resistance.coefficient) << " +- "
+                  << format_printf("%.2g", 1e3 * resistance.coefficient_error)
+                  << " x 1e-3 (after the first " << format_printf("%.3g", resistance.skipped * V)
+                  << " m)\n";
 
       RunSpectrum spectra_of_run{road_name,     speed_kmh,    {}, {},
-                                 record.centre, record.force, dt, std::move(point_forces)};
+                                 record.centre, record.force, dt, std::move(point_forces),
+                                 run,           resistance};
       if (write_outputs)
         {
           if (!record.final_spectra)

@@ -259,7 +259,9 @@ namespace greentread
       const CoarserGrid                             coarser(model.points, grid, tread_layer(),
                                                             study.needs(analysis::Discretisation::contact_grid));
       std::vector<std::unique_ptr<road::PatchRoad>> fine_roads, coarser_roads;
-      make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads);
+      std::vector<double>                           mpd;
+      make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads,
+                 mpd);
       const analysis::RunLevel fine{&model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
       analysis::RunLevels      levels{fine, {}};
       if (coarser.grid)
@@ -282,6 +284,18 @@ namespace greentread
       analysis::write_spectra(
         directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
         roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
+      // The rolling resistance the texture adds, from every run of the plan.
+      std::vector<analysis::RunRollingResistance> resistance;
+      for (std::size_t k = 0; k < study.jobs.size(); ++k)
+        if (study.jobs[k].estimate < 0)
+          {
+            const analysis::StudyCase   &c = study.cases[study.jobs[k].study_case];
+            const analysis::RunSpectrum &s = job_spectra[k];
+            resistance.push_back({s.road, s.run, c.speed_kmh, mpd[c.road], s.time_step,
+                                  s.time_step * s.force_history.size() * c.speed_kmh / 3.6,
+                                  s.rolling_resistance});
+          }
+      analysis::write_rolling_resistance(directory, resistance, record);
       if (sound.enabled())
         sound_stage(study, job_spectra, model, directory, record);
       if (global.print_timings)
@@ -420,14 +434,14 @@ namespace greentread
 
 
     void
-    TyreRoadContactScene::make_roads(
-      const analysis::Study                         &study,
-      const contact::ContactGrid                    &grid,
-      const contact::ContactGrid                    *coarser,
-      const std::filesystem::path                   &directory,
-      const base::ParameterRecord                   &record,
-      std::vector<std::unique_ptr<road::PatchRoad>> &fine_roads,
-      std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads) const
+    TyreRoadContactScene::make_roads(const analysis::Study                         &study,
+                                     const contact::ContactGrid                    &grid,
+                                     const contact::ContactGrid                    *coarser,
+                                     const std::filesystem::path                   &directory,
+                                     const base::ParameterRecord                   &record,
+                                     std::vector<std::unique_ptr<road::PatchRoad>> &fine_roads,
+                                     std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads,
+                                     std::vector<double>                           &mpd) const
     {
       for (std::size_t r = 0; r < roads.roads.size(); ++r)
         {
@@ -446,7 +460,7 @@ namespace greentread
           // texture (6 MB per metre).
           fine_roads.push_back(
             std::make_unique<road::PatchRoad>(texture, grid.points, roads.sampling, road_name));
-          analysis::write_road_report(directory, road_name, texture, record);
+          mpd.push_back(analysis::write_road_report(directory, road_name, texture, record));
           if (coarser != nullptr)
             coarser_roads.push_back(std::make_unique<road::PatchRoad>(texture, coarser->points,
                                                                       roads.sampling, road_name));

@@ -43,7 +43,7 @@ endif()
 foreach(file green_functions.h5 patch_model.h5 modal_errors.csv
     road_road-A_spectrum.csv road_road-A_spectrum.png road_road-A_texture.png
     history_road-A_90kmh.csv history_road-A_90kmh.png contact_road-A_90kmh.pvd
-    map_road-A_90kmh.png spectra.csv)
+    map_road-A_90kmh.png spectra.csv rolling_resistance.csv rolling_resistance.png)
   if(NOT EXISTS ${WORKDIR}/first/${file})
     message(FATAL_ERROR "the run did not write ${file}")
   endif()

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/analysis/rolling_resistance.h>
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/output.h>
@@ -55,8 +56,9 @@ namespace greentread
      * @brief The road's report: its MPD on screen, its texture spectrum
      * (road_<label>_spectrum.csv and .png) and a 10 cm x 10 cm sample as an
      * image (road_<label>_texture.png, Figure A.11).
+     * @return the MPD [m], NaN for a texture shorter than its 0.1 m segment.
      */
-    void
+    double
     write_road_report(const std::filesystem::path &directory,
                       const std::string           &road,
                       const road::Texture         &texture,
@@ -142,6 +144,9 @@ namespace greentread
       /// each Green's-function point's rectangle [N], one history per
       /// point (a run of the plan only: an error bar's level keeps none).
       std::vector<std::vector<double>> point_forces;
+      /// The run's name (road_V[_low-rate]) and its rolling resistance.
+      std::string       run;
+      RollingResistance rolling_resistance;
     };
 
     /**

@@ -159,7 +159,8 @@ namespace greentread
       /// Stage road: each road of @p study (a texture file, or made as long
       /// as its runs need), its report written in @p directory, and its
       /// profiles under @p grid's points (in @p fine_roads) and, when
-      /// @p coarser, under its points too (in @p coarser_roads).
+      /// @p coarser, under its points too (in @p coarser_roads); each
+      /// road's MPD in @p mpd.
       void
       make_roads(const analysis::Study                         &study,
                  const contact::ContactGrid                    &grid,
@@ -167,7 +168,8 @@ namespace greentread
                  const std::filesystem::path                   &directory,
                  const base::ParameterRecord                   &record,
                  std::vector<std::unique_ptr<road::PatchRoad>> &fine_roads,
-                 std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads) const;
+                 std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads,
+                 std::vector<double>                           &mpd) const;
 
       dealii::ParameterHandler       &prm;
       GlobalParameters                global;

@@ -1,0 +1,103 @@
+#pragma once
+
+#include <greentread/base/output.h>
+#include <greentread/contact/patch_contact.h>
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The rolling resistance a road's texture adds, from a rolling run: the
+ * mean power the contact forces put into the tyre, P = <sum_i f_i du_i/dt>,
+ * as a force F_RR = P / V and a coefficient F_RR / F_z, each with its
+ * standard error. Implemented in source/analysis/rolling_resistance.cc.
+ *
+ * The tyre here does not turn: its points stay under the axle while the
+ * road passes, so the static deflection does no cyclic work and the
+ * hysteresis of the rubber passing through the patch, most of a tyre's
+ * rolling resistance (a coefficient of about 0.01), is not in it. What is
+ * measured is the part the texture adds, through the vibration it excites;
+ * on a flat road it is zero.
+ */
+
+namespace greentread
+{
+  namespace analysis
+  {
+    /// A run's rolling resistance, each value with its standard error.
+    struct RollingResistance
+    {
+      double       power = 0., power_error = 0.;             ///< P [W]
+      double       force = 0., force_error = 0.;             ///< F_RR = P / V [N]
+      double       coefficient = 0., coefficient_error = 0.; ///< F_RR / F_z
+      double       load     = 0.;                            ///< F_z, the mean total force [N]
+      double       skipped  = 0.;                            ///< the start left out [s]
+      double       duration = 0.;                            ///< the record averaged [s]
+      unsigned int segments = 0;                             ///< of the standard error
+    };
+
+    /**
+     * @brief The work the contact forces do on the tyre, step by step: each
+     * step's mean force times its change of displacement, sum_i f_i (u_i(t_{n+1})
+     * - u_i(t_n)). The force is linear within a step, so this is the work to
+     * O((omega dt)^2). The tread layer's local compliance is elastic: its
+     * share of the work telescopes and adds nothing to the mean.
+     */
+    class RollingPowerMeter
+    {
+    public:
+      /// @p u_start: the displacement at the static start (t = 0).
+      RollingPowerMeter(const Eigen::VectorXd &u_start, double time_step);
+
+      void
+      add(const contact::RollingStep &step);
+
+      /// The work of each step [J].
+      const std::vector<double> &
+      step_work() const
+      {
+        return work;
+      }
+
+      /**
+       * @brief The mean power after the first @p skip_fraction of the record
+       * (the vibration the texture excites builds up from the static start),
+       * with its standard error from the scatter of the means of
+       * @p segments consecutive segments (batch means).
+       * @param speed V [m/s].
+       * @return NaN values if the record has fewer steps than segments.
+       * @throws NumericalError if a step's work is not finite.
+       */
+      RollingResistance
+      result(double speed, double skip_fraction = 0.2, unsigned int segments = 10) const;
+
+    private:
+      Eigen::VectorXd     u_last;
+      double              dt;
+      std::vector<double> work, load;
+    };
+
+    /// One run's rolling resistance, as rolling_resistance.csv lists it.
+    struct RunRollingResistance
+    {
+      std::string       road, run;
+      double            speed_kmh = 0., mpd = 0., time_step = 0., distance = 0.;
+      RollingResistance value;
+    };
+
+    /**
+     * @brief rolling_resistance.csv (every run of the plan) and
+     * rolling_resistance.png (the coefficient against the roads' MPD, one
+     * line per speed, with its standard error), under temporary names
+     * renamed when complete.
+     */
+    void
+    write_rolling_resistance(const std::filesystem::path             &directory,
+                             const std::vector<RunRollingResistance> &runs,
+                             const base::ParameterRecord             &record);
+  } // namespace analysis
+} // namespace greentread

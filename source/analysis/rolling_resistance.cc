@@ -1,0 +1,156 @@
+#include <greentread/analysis/rolling_resistance.h>
+#include <greentread/base/exceptions.h>
+#include <greentread/base/plot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace greentread
+{
+  namespace analysis
+  {
+    RollingPowerMeter::RollingPowerMeter(const Eigen::VectorXd &u_start, const double time_step)
+        : u_last(u_start)
+        , dt(time_step)
+    {
+    }
+
+
+
+    void
+    RollingPowerMeter::add(const contact::RollingStep &step)
+    {
+      work.push_back(step.force.dot(step.u - u_last));
+      load.push_back(step.force.sum());
+      u_last = step.u;
+    }
+
+
+
+    RollingResistance
+    RollingPowerMeter::result(const double       speed,
+                              const double       skip_fraction,
+                              const unsigned int segments) const
+    {
+      RollingResistance r;
+      const std::size_t n     = work.size();
+      const std::size_t first = static_cast<std::size_t>(std::ceil(skip_fraction * n));
+      if (n < first + segments || segments < 2)
+        {
+          // Too short a record for a standard error: none.
+          r.power = r.power_error = r.force = r.force_error = r.coefficient = r.coefficient_error =
+            NAN;
+          return r;
+        }
+      for (std::size_t k = 0; k < n; ++k)
+        if (!std::isfinite(work[k]))
+          throw NumericalError("rolling resistance: the contact forces' work at step " +
+                               std::to_string(k) + " is not finite");
+      // Batch means: the record after the skip in equal segments, the last
+      // steps that do not fill one left out.
+      const std::size_t   length = (n - first) / segments;
+      std::vector<double> power(segments);
+      double              load_sum = 0.;
+      for (unsigned int s = 0; s < segments; ++s)
+        {
+          double w = 0.;
+          for (std::size_t k = first + s * length; k < first + (s + 1) * length; ++k)
+            {
+              w += work[k];
+              load_sum += load[k];
+            }
+          power[s] = w / (length * dt);
+        }
+      double mean = 0., scatter = 0.;
+      for (const double p : power)
+        mean += p / segments;
+      for (const double p : power)
+        scatter += (p - mean) * (p - mean) / (segments - 1);
+      r.power             = mean;
+      r.power_error       = std::sqrt(scatter / segments);
+      r.load              = load_sum / (segments * length);
+      r.force             = r.power / speed;
+      r.force_error       = r.power_error / speed;
+      r.coefficient       = r.load > 0. ? r.force / r.load : NAN;
+      r.coefficient_error = r.load > 0. ? r.force_error / r.load : NAN;
+      r.skipped           = first * dt;
+      r.duration          = segments * length * dt;
+      r.segments          = segments;
+      return r;
+    }
+
+
+
+    void
+    write_rolling_resistance(const std::filesystem::path             &directory,
+                             const std::vector<RunRollingResistance> &runs,
+                             const base::ParameterRecord             &record)
+    {
+      {
+        base::AtomicFile f(directory / "rolling_resistance.csv");
+        f.stream().precision(6);
+        f.stream()
+          << "# The rolling resistance the texture adds (doc/methods/analysis.md): the mean "
+             "power the contact forces put into the tyre after the start, P, and F_RR = P / V, "
+             "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); the "
+             "hysteresis of a turning tyre is not in it.\n"
+             "road,mpd_mm,speed_kmh,run,dt_us,distance_m,skipped_m,load_N,power_W,power_se_W,"
+             "force_N,force_se_N,coefficient,coefficient_se\n";
+        for (const auto &r : runs)
+          {
+            const RollingResistance &v = r.value;
+            const double             V = r.speed_kmh / 3.6;
+            f.stream() << r.road << ',' << 1e3 * r.mpd << ',' << r.speed_kmh << ',' << r.run << ','
+                       << 1e6 * r.time_step << ',' << r.distance << ',' << v.skipped * V << ','
+                       << v.load << ',' << v.power << ',' << v.power_error << ',' << v.force << ','
+                       << v.force_error << ',' << v.coefficient << ',' << v.coefficient_error
+                       << '\n';
+          }
+        record.write_comments(f.stream());
+        f.commit();
+      }
+
+      // The coefficient against the MPD, one line per speed, from each
+      // case's longest run (the smallest standard error).
+      std::map<double, std::map<std::string, const RunRollingResistance *>> longest;
+      for (const auto &r : runs)
+        {
+          auto &best = longest[r.speed_kmh][r.road];
+          if (best == nullptr || r.distance > best->distance)
+            best = &r;
+        }
+      std::ostringstream data, plot;
+      data.precision(6);
+      unsigned int block = 0;
+      for (const auto &[speed, by_road] : longest)
+        {
+          std::vector<const RunRollingResistance *> sorted;
+          for (const auto &[road, r] : by_road)
+            if (std::isfinite(r->mpd))
+              sorted.push_back(r);
+          std::sort(sorted.begin(), sorted.end(), [](const auto *a, const auto *b) {
+            return a->mpd < b->mpd;
+          });
+          if (sorted.empty())
+            continue;
+          for (const auto *r : sorted)
+            data << 1e3 * r->mpd << ' ' << 1e3 * r->value.coefficient << ' '
+                 << 1e3 * r->value.coefficient_error << '\n';
+          data << "e\n";
+          plot << (block++ ? ", " : "plot ") << "'-' using 1:2:3 with yerrorlines lw 2 pt 7 title '"
+               << format_number(speed) << " km/h'";
+        }
+      if (block == 0)
+        return;
+      base::plot_png(directory / "rolling_resistance.png",
+                     "set grid\nset xlabel 'mean profile depth MPD [mm]'\n"
+                     "set ylabel 'C_{RR} added by the texture [10^{-3}]'\nset key top left\n"
+                     "set title 'GreenTread: rolling resistance the texture adds (error bars: "
+                     "standard error)'\n" +
+                       plot.str() + "\n" + data.str(),
+                     record);
+    }
+  } // namespace analysis
+} // namespace greentread
