@@ -5,7 +5,7 @@
 #   bash doc/figures/make_figures.sh [--scenes-only] [BUILD_DIR] [MAIN_JOB_OUTPUT]
 #
 # --scenes-only remakes the figures of scenes alone (those README.md and doc/
-# show; about 15 minutes on 2 cores, most of it the main job), not the
+# show; about 20 minutes on 2 cores, most of it the main job), not the
 # benchmarks' (their READMEs show them): after a change to the program that
 # moves no benchmark's reference numbers (tests/layout/check_figures.sh).
 # BUILD_DIR (default build/) holds greentread and the benchmarks.
@@ -69,6 +69,14 @@ if [[ -z "$main_out" ]]; then
   "$program" --set "Output directory=$main_out"
 fi
 place doc/figures/spectra_road-A.png "$main_out/spectra_road-A.png"
+
+# The sound of the main job's tyre (prm/tyre_sound.prm): its Green's functions
+# and modes are the main job's (the same parameters, so the same stage keys),
+# reused from its output.
+mkdir -p "$tmp/tyre_sound"
+cp "$main_out/green_functions.h5" "$main_out/modal_model.h5" "$tmp/tyre_sound/"
+"$program" prm/tyre_sound.prm --set "Output directory=$tmp/tyre_sound" > /dev/null
+place doc/figures/sound_road-A_70kmh.png "$tmp/tyre_sound/sound_road-A_70kmh.png"
 
 if ! $benchmarks; then
   bash "$top/tests/layout/check_figures.sh" "$top" "$program"
