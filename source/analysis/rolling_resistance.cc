@@ -94,31 +94,35 @@ namespace greentread
         f.stream()
           << "# The rolling resistance the texture adds (doc/methods/analysis.md): the mean "
              "power the contact forces put into the tyre after the start, P, and F_RR = P / V, "
-             "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); the "
+             "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); level: a "
+             "run of the plan, or of an error bar's other level (its short window); the "
              "hysteresis of a turning tyre is not in it.\n"
-             "road,mpd_mm,speed_kmh,run,dt_us,distance_m,skipped_m,load_N,power_W,power_se_W,"
+             "road,mpd_mm,speed_kmh,run,level,dt_us,distance_m,skipped_m,load_N,power_W,power_se_W,"
              "force_N,force_se_N,coefficient,coefficient_se\n";
         for (const auto &r : runs)
           {
             const RollingResistance &v = r.value;
             const double             V = r.speed_kmh / 3.6;
             f.stream() << r.road << ',' << 1e3 * r.mpd << ',' << r.speed_kmh << ',' << r.run << ','
-                       << 1e6 * r.time_step << ',' << r.distance << ',' << v.skipped * V << ','
-                       << v.load << ',' << v.power << ',' << v.power_error << ',' << v.force << ','
-                       << v.force_error << ',' << v.coefficient << ',' << v.coefficient_error
-                       << '\n';
+                       << (r.error_bar ? "error bar" : "plan") << ',' << 1e6 * r.time_step << ','
+                       << r.distance << ',' << v.skipped * V << ',' << v.load << ',' << v.power
+                       << ',' << v.power_error << ',' << v.force << ',' << v.force_error << ','
+                       << v.coefficient << ',' << v.coefficient_error << '\n';
           }
         record.write_comments(f.stream());
         f.commit();
       }
 
       // The coefficient against the MPD, one line per speed, from each
-      // case's longest run (the smallest standard error).
+      // case's run of the plan at the finest step (the longest of those).
       std::map<double, std::map<std::string, const RunRollingResistance *>> longest;
       for (const auto &r : runs)
         {
+          if (r.error_bar || !std::isfinite(r.value.coefficient))
+            continue;
           auto &best = longest[r.speed_kmh][r.road];
-          if (best == nullptr || r.distance > best->distance)
+          if (best == nullptr || r.time_step < best->time_step ||
+              (r.time_step == best->time_step && r.distance > best->distance))
             best = &r;
         }
       std::ostringstream data, plot;

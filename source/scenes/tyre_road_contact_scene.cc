@@ -284,17 +284,16 @@ namespace greentread
       analysis::write_spectra(
         directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
         roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
-      // The rolling resistance the texture adds, from every run of the plan.
+      // The rolling resistance the texture adds, from every run.
       std::vector<analysis::RunRollingResistance> resistance;
       for (std::size_t k = 0; k < study.jobs.size(); ++k)
-        if (study.jobs[k].estimate < 0)
-          {
-            const analysis::StudyCase   &c = study.cases[study.jobs[k].study_case];
-            const analysis::RunSpectrum &s = job_spectra[k];
-            resistance.push_back({s.road, s.run, c.speed_kmh, mpd[c.road], s.time_step,
-                                  s.time_step * s.force_history.size() * c.speed_kmh / 3.6,
-                                  s.rolling_resistance});
-          }
+        {
+          const analysis::StudyCase   &c = study.cases[study.jobs[k].study_case];
+          const analysis::RunSpectrum &s = job_spectra[k];
+          resistance.push_back(
+            {s.road, s.run, study.jobs[k].estimate >= 0, c.speed_kmh, mpd[c.road], s.time_step,
+             s.time_step * s.force_history.size() * c.speed_kmh / 3.6, s.rolling_resistance});
+        }
       analysis::write_rolling_resistance(directory, resistance, record);
       if (sound.enabled())
         sound_stage(study, job_spectra, model, directory, record);

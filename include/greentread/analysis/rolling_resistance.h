@@ -85,15 +85,18 @@ namespace greentread
     struct RunRollingResistance
     {
       std::string       road, run;
+      bool              error_bar = false; ///< a run of an error bar's other level, not of the plan
       double            speed_kmh = 0., mpd = 0., time_step = 0., distance = 0.;
       RollingResistance value;
     };
 
     /**
-     * @brief rolling_resistance.csv (every run of the plan) and
-     * rolling_resistance.png (the coefficient against the roads' MPD, one
-     * line per speed, with its standard error), under temporary names
-     * renamed when complete.
+     * @brief rolling_resistance.csv (every run, those of the error bars'
+     * other levels marked) and rolling_resistance.png (the coefficient
+     * against the roads' MPD, one line per speed, with its standard error,
+     * from each case's run of the plan at the finest time step: a coarser
+     * step resolves less of the power), under temporary names renamed when
+     * complete.
      */
     void
     write_rolling_resistance(const std::filesystem::path             &directory,
