@@ -1,4 +1,5 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/parameters.h>
 #include <greentread/road/texture_files.h>
 
 #include <algorithm>
@@ -13,15 +14,6 @@ namespace greentread
   {
     namespace
     {
-      std::string
-      trimmed(const std::string &s)
-      {
-        const auto first = s.find_first_not_of(" \t\r\n");
-        if (first == std::string::npos)
-          return "";
-        return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-      }
-
       /// The key of a header line 'key: value', or "" if it is not one.
       std::string
       header_key(const std::string &line)
@@ -29,7 +21,7 @@ namespace greentread
         const auto colon = line.find(':');
         if (colon == std::string::npos || colon == 0)
           return "";
-        const std::string key  = trimmed(line.substr(0, colon));
+        const std::string key  = base::trim(line.substr(0, colon));
         const bool        word = std::all_of(key.begin(), key.end(), [](const unsigned char c) {
           return std::isalnum(c) || c == '_';
         });
@@ -46,7 +38,7 @@ namespace greentread
       std::string        line;
       while (std::getline(in, line))
         {
-          if (trimmed(line).empty())
+          if (base::trim(line).empty())
             continue;
           const std::string key = header_key(line);
           return key == "profile_name" || key == "sample_spacing_mm";
@@ -68,7 +60,7 @@ namespace greentread
       while (std::getline(in, line))
         {
           ++number;
-          const std::string text = trimmed(line);
+          const std::string text = base::trim(line);
           if (text.empty())
             continue;
           const std::string where =
@@ -76,7 +68,7 @@ namespace greentread
           if (header && !header_key(text).empty())
             {
               const std::string key   = header_key(text);
-              const std::string value = trimmed(text.substr(text.find(':') + 1));
+              const std::string value = base::trim(text.substr(text.find(':') + 1));
               if (key == "sample_spacing_mm")
                 {
                   char *end = nullptr;

@@ -1,5 +1,6 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
+#include <greentread/base/parameters.h>
 #include <greentread/road/texture_files.h>
 
 #include <boost/property_tree/ptree.hpp>
@@ -54,14 +55,6 @@ namespace greentread
         return s;
       }
 
-      std::string
-      trimmed(const std::string &s)
-      {
-        const auto first = s.find_first_not_of(" \t\r\n");
-        if (first == std::string::npos)
-          return "";
-        return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-      }
 
       /// The members of an X3P archive, read whole.
       class Archive
@@ -184,7 +177,7 @@ namespace greentread
         const ptree *c = child(tree, name);
         if (!c)
           return fallback;
-        const std::string t = trimmed(c->data());
+        const std::string t = base::trim(c->data());
         return t.empty() ? fallback : t;
       }
 
@@ -392,7 +385,7 @@ namespace greentread
               if (k == n)
                 throw InputError("X3P file '" + file + "': Record3/DataList holds more than " +
                                  std::to_string(n) + " Datum elements");
-              const std::string value = trimmed(datum.data());
+              const std::string value = base::trim(datum.data());
               if (!value.empty())
                 {
                   char        *end = nullptr;
