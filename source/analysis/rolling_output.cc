@@ -67,8 +67,31 @@ namespace greentread
 
 
     std::string
+    slick_road(const std::string &road)
+    {
+      return road + " slick";
+    }
+
+
+
+    std::string
+    texture_of_road(const std::string &road)
+    {
+      const std::string suffix = slick_road("");
+      if (road.size() > suffix.size() &&
+          road.compare(road.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return road.substr(0, road.size() - suffix.size());
+      return road;
+    }
+
+
+
+    std::string
     road_label(const std::string &road)
     {
+      const std::string texture = texture_of_road(road);
+      if (texture != road)
+        return road_label(texture) + "_slick";
       std::string label = std::filesystem::path(road).stem().string();
       for (auto &c : label)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-')

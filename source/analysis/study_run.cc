@@ -167,8 +167,10 @@ namespace greentread
       const contact::RollingParameters &rolling    = settings.rolling;
       const road::PatchRoad            &patch_road = *level.roads.at(road);
       const contact::ContactGrid       &grid       = *level.grid;
-      const double                      V          = speed_kmh / 3.6;
-      const double                      dt         = band_run.time_step;
+      const contact::TreadPattern      *pattern =
+        road < level.patterns.size() ? level.patterns[road] : nullptr;
+      const double V  = speed_kmh / 3.6;
+      const double dt = band_run.time_step;
       if (band_run.distance > patch_road.usable_length())
         throw InputError("parameter 'Rolling/Distance' = " + format_short(band_run.distance) +
                          " m is longer than road '" + road_name + "' allows (" +
@@ -191,6 +193,8 @@ namespace greentread
       const contact::PatchRoadHeights road_heights = [&](const double s, Eigen::VectorXd &z,
                                                          Eigen::VectorXd &slope) {
         patch_road.heights(s, z, slope);
+        if (pattern != nullptr)
+          pattern->recess(grid.points, s, z);
       };
       const contact::RollingSetup setup = rolling_setup(rolling, band_run, V, threads);
       const auto                  equilibrium =

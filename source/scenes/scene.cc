@@ -5,6 +5,7 @@
 #include <greentread/contact/contact_grid.h>
 #include <greentread/contact/contact_parameters.h>
 #include <greentread/contact/rolling_parameters.h>
+#include <greentread/contact/tread_pattern_parameters.h>
 #include <greentread/convolution/convolution_parameters.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
@@ -46,6 +47,7 @@ namespace greentread
       analysis::SpectraParameters::declare_parameters(prm);
       analysis::ErrorBarParameters::declare_parameters(prm);
       contact::ContactGridParameters::declare_parameters(prm);
+      contact::TreadPatternParameters::declare_parameters(prm);
       radiation::SoundParameters::declare_parameters(prm);
       declare_renamed_parameters(prm);
     }
@@ -97,7 +99,7 @@ namespace greentread
            {"Geometry", "Materials", "Inflation", "Green's functions", "Identification",
             "Patch model", "Road texture", "Road/Sinusoid", "Rolling", "Contact grid",
             "Time stepping/Time step", "Convolution/Method", "Convolution/Shape precision", "Spectra",
-            "Error bars", "Sound"},
+            "Error bars", "Tread pattern", "Sound"},
            false,
            make<TyreRoadContactScene>}};
       return registry;

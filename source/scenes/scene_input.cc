@@ -220,8 +220,9 @@ namespace greentread
       // The shipped tyre, which the built-in scene names relative to the
       // checkout: found from any working directory.
       const std::string shipped_geometry = "geometry/tyre_165_65_r13.geo";
-      for (const std::string path : {"Geometry/Geometry file", "Identification/FRF file",
-                                     "Identification/Green's function file"})
+      for (const std::string path :
+           {"Geometry/Geometry file", "Identification/FRF file",
+            "Identification/Green's function file", "Tread pattern/Footprint image"})
         if (reads(path))
           {
             const std::string value = get(prm, path);

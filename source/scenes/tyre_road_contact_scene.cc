@@ -105,6 +105,18 @@ namespace greentread
       // the Green's functions.
       contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
                                green.patch.points_along * green.patch.points_across);
+      // The tread pattern against the tread and the contact grid, on the
+      // parameters' tyre now; the run builds it on the contact points' radius.
+      tread_pattern.parse_parameters(prm);
+      if (tread_pattern.enabled())
+        {
+          const unsigned int s = contact_grid.subdivisions;
+          contact::check_pattern(tread_pattern,
+                                 contact::TreadPattern(tread_pattern, geometry.outer_radius()),
+                                 geometry.tread_width, geometry.tread_thickness,
+                                 green.patch.length / (double(green.patch.points_along) * s),
+                                 green.patch.width / (double(green.patch.points_across) * s), s);
+        }
 
       // A run's files are named by its road's and speed's labels: two roads
       // or two speeds with one label would overwrite each other's.
@@ -117,15 +129,22 @@ namespace greentread
                                given[i] + "', whose runs would write the same files (both '" +
                                labels[i] + "'); allowed: each once");
       };
-      std::vector<std::string> road_labels, speed_labels, speeds_given;
+      run_roads.clear();
       for (const auto &r : roads.roads)
+        {
+          run_roads.push_back(r);
+          if (tread_pattern.enabled() && tread_pattern.compare_with_slick)
+            run_roads.push_back(analysis::slick_road(r));
+        }
+      std::vector<std::string> road_labels, speed_labels, speeds_given;
+      for (const auto &r : run_roads)
         road_labels.push_back(analysis::road_label(r));
       for (const double v : rolling.speeds)
         {
           speed_labels.push_back(analysis::speed_label(v));
           speeds_given.push_back(format_number(v));
         }
-      once(road_labels, roads.roads, "Road texture/Roads");
+      once(road_labels, run_roads, "Road texture/Roads");
       once(speed_labels, speeds_given, "Rolling/Speeds (kph)");
 
       // The reporting cell must lie in the patch; checked now, not after the
@@ -262,12 +281,25 @@ namespace greentread
       std::vector<double>                           mpd;
       make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads,
                  mpd);
-      const analysis::RunLevel fine{&model, &grid, &G0, &tread, &lattice, pointers(fine_roads)};
+      // The tread pattern on the contact points' radius, for every level.
+      std::unique_ptr<contact::TreadPattern> pattern;
+      if (tread_pattern.enabled())
+        {
+          pattern = std::make_unique<contact::TreadPattern>(tread_pattern, grid.points[0][2]);
+          std::cout << "Tread pattern '" << tread_pattern.pattern << "': " << pattern->summary()
+                    << "\n";
+        }
+      std::vector<const contact::TreadPattern *> patterns;
+      for (const auto &r : run_roads)
+        patterns.push_back(patterned(r) ? pattern.get() : nullptr);
+      const analysis::RunLevel fine{&model,  &grid, &G0, &tread, &lattice, pointers(fine_roads),
+                                    patterns};
       analysis::RunLevels      levels{fine, {}};
       if (coarser.grid)
         levels.other[analysis::Discretisation::contact_grid] = {
           &model,         coarser.grid.get(),    &G0,
-          &coarser.tread, coarser.lattice.get(), pointers(coarser_roads)};
+          &coarser.tread, coarser.lattice.get(), pointers(coarser_roads),
+          patterns};
       if (coarser_model)
         levels.other[analysis::Discretisation::mode_cutoff] =
           with_model(fine, coarser_model->model);
@@ -283,7 +315,7 @@ namespace greentread
       // bars; the spectra per road (speeds) and per speed (roads).
       analysis::write_spectra(
         directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
-        roads.roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
+        run_roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
       // The rolling resistance the texture adds, from every run.
       std::vector<analysis::RunRollingResistance> resistance;
       for (std::size_t k = 0; k < study.jobs.size(); ++k)
@@ -335,6 +367,22 @@ namespace greentread
 
 
 
+    std::string
+    TyreRoadContactScene::texture_of(const std::string &run_road)
+    {
+      return analysis::texture_of_road(run_road);
+    }
+
+
+
+    bool
+    TyreRoadContactScene::patterned(const std::string &run_road) const
+    {
+      return tread_pattern.enabled() && texture_of(run_road) == run_road;
+    }
+
+
+
     contact::ElasticLayer
     TyreRoadContactScene::tread_layer() const
     {
@@ -346,7 +394,7 @@ namespace greentread
     double
     TyreRoadContactScene::road_spacing(const std::string &road_name) const
     {
-      const auto file = texture_files.find(road_name);
+      const auto file = texture_files.find(texture_of(road_name));
       return file != texture_files.end() ? file->second.dx : roads.spacing;
     }
 
@@ -415,9 +463,9 @@ namespace greentread
     TyreRoadContactScene::study_roads(const contact::ContactGrid &grid) const
     {
       std::vector<analysis::StudyRoad> study_roads;
-      for (const auto &name : roads.roads)
+      for (const auto &name : run_roads)
         {
-          const auto file = texture_files.find(name);
+          const auto file = texture_files.find(texture_of(name));
           // A texture file bounds the runs by the length its points can roll.
           const double longest =
             file == texture_files.end() ?
@@ -442,9 +490,25 @@ namespace greentread
                                      std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads,
                                      std::vector<double>                           &mpd) const
     {
-      for (std::size_t r = 0; r < roads.roads.size(); ++r)
+      // The slick tyre's runs on a road (run_roads) share its texture, made once.
+      std::map<std::string, double> mpd_of;
+      for (std::size_t r = 0; r < run_roads.size(); ++r)
         {
-          const std::string &road_name = roads.roads[r];
+          const std::string road_name = texture_of(run_roads[r]);
+          const bool        made      = mpd_of.count(road_name) > 0;
+          double            length    = 0.;
+          for (std::size_t o = 0; o < run_roads.size(); ++o)
+            if (texture_of(run_roads[o]) == road_name)
+              length = std::max(length, study.road_length[o]);
+          if (made && r > 0 && texture_of(run_roads[r - 1]) == road_name)
+            {
+              // The same profiles under the same points as the road before.
+              fine_roads.push_back(std::make_unique<road::PatchRoad>(*fine_roads.back()));
+              mpd.push_back(mpd_of[road_name]);
+              if (coarser != nullptr)
+                coarser_roads.push_back(std::make_unique<road::PatchRoad>(*coarser_roads.back()));
+              continue;
+            }
           // The texture's width from the patch's, not the grid's: every
           // contact grid rolls on the same realisation; its length what the
           // longest run needs (the patch and a margin of 0.1 m beyond it).
@@ -454,12 +518,13 @@ namespace greentread
           const road::Texture texture =
             file != texture_files.end() ?
               file->second :
-              roads.make(road_name, width, study.road_length[r] + green.patch.length + 0.1);
+              roads.make(road_name, width, length + green.patch.length + 0.1);
           // A road's runs need its profiles under the points only, not the
           // texture (6 MB per metre).
           fine_roads.push_back(
             std::make_unique<road::PatchRoad>(texture, grid.points, roads.sampling, road_name));
           mpd.push_back(analysis::write_road_report(directory, road_name, texture, record));
+          mpd_of[road_name] = mpd.back();
           if (coarser != nullptr)
             coarser_roads.push_back(std::make_unique<road::PatchRoad>(texture, coarser->points,
                                                                       roads.sampling, road_name));

@@ -28,9 +28,19 @@ namespace greentread
 {
   namespace analysis
   {
-    /// A file name part for a road: its name without directories or dots.
+    /// A file name part for a road: its name without directories or dots
+    /// (a slick_road()'s: its texture's and "_slick").
     std::string
     road_label(const std::string &road);
+
+    /// The name of the runs of the slick tyre on @p road when the scene
+    /// rolls a tread pattern: "<road> slick".
+    std::string
+    slick_road(const std::string &road);
+
+    /// The road a slick_road() rolls on (@p road itself if it is not one).
+    std::string
+    texture_of_road(const std::string &road);
 
     /// A file name part for a speed: "90kmh".
     std::string

@@ -7,6 +7,7 @@
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/contact/contact_grid.h>
 #include <greentread/contact/rolling_parameters.h>
+#include <greentread/contact/tread_pattern.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/patch_road.h>
 
@@ -43,6 +44,8 @@ namespace greentread
       const PatchLattice         *lattice = nullptr;
       /// By road, in the order of the study's roads.
       std::vector<const road::PatchRoad *> roads;
+      /// By road: the tread pattern its runs roll (nullptr or none: slick).
+      std::vector<const contact::TreadPattern *> patterns;
     };
 
     /// The levels of a study: the run's own, and the other levels that roll

@@ -10,6 +10,7 @@
 #include <greentread/contact/elastic_layer.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/contact/rolling_parameters.h>
+#include <greentread/contact/tread_pattern.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
 #include <greentread/modal/identification.h>
@@ -171,6 +172,14 @@ namespace greentread
                  std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads,
                  std::vector<double>                           &mpd) const;
 
+      /// The texture a road of run_roads rolls on ('Road texture/Roads').
+      static std::string
+      texture_of(const std::string &run_road);
+
+      /// Whether a road of run_roads rolls the patterned tyre.
+      bool
+      patterned(const std::string &run_road) const;
+
       dealii::ParameterHandler       &prm;
       GlobalParameters                global;
       geometry::GeometryParameters    geometry;
@@ -184,7 +193,12 @@ namespace greentread
       analysis::SpectraParameters     spectra;
       analysis::ErrorBarParameters    error_bars;
       contact::ContactGridParameters  contact_grid;
+      contact::TreadPatternParameters tread_pattern;
       radiation::SoundParameters      sound;
+      /// The study's roads: each of 'Road texture/Roads', and with a tread
+      /// pattern and 'Tread pattern/Compare with slick' each again rolled
+      /// by the slick tyre (analysis::slick_road()).
+      std::vector<std::string> run_roads;
       /// The texture files among the roads, read (and checked against the
       /// patch and the distance) when the scene is set up, before the
       /// Green's functions.
