@@ -98,6 +98,20 @@ namespace greentread
 
 
 
+      /// A road's name in a plot's (enhanced) text: its label with its
+      /// underscores shown as such, a slick_road()'s as "<label> slick".
+      std::string
+      plot_label(const std::string &road)
+      {
+        const std::string texture = texture_of_road(road);
+        std::string       label;
+        for (const char c : road_label(texture))
+          label += c == '_' ? std::string("\\_") : std::string(1, c);
+        return texture != road ? label + " slick" : label;
+      }
+
+
+
       /// A plot of the runs that @p take selects, from their spectrum files
       /// `<kind><run>.csv`.
       void
@@ -126,7 +140,7 @@ namespace greentread
                        "):($6+" + e + ") with filledcurves fs transparent solid 0.2 noborder" + lc +
                        " notitle";
               curves += ", " + csv + " skip 2 using 1:6 with linespoints lw 2" + lc + " title '" +
-                        road_label(r.road) + ", " + format_number(r.speed_kmh) + " km/h'";
+                        plot_label(r.road) + ", " + format_number(r.speed_kmh) + " km/h'";
             }
         const std::string plot = bands + curves;
         base::plot_png(
@@ -305,18 +319,25 @@ namespace greentread
             return r.road == road_name;
           };
           plot(directory / ("spectra_" + road_label(road_name) + ".png"),
-               "Contact stress at the patch centre, road " + road_name + " (Figure A.14)",
+               "Contact stress at the patch centre, road " + plot_label(road_name) +
+                 " (Figure A.14)",
                "spectrum_", stress_label, take);
           plot(directory / ("spectra_force_" + road_label(road_name) + ".png"),
-               "Total contact force, road " + road_name, "spectrum_force_", "L_F [dB re 1 N]",
-               take);
+               "Total contact force, road " + plot_label(road_name), "spectrum_force_",
+               "L_F [dB re 1 N]", take);
         }
       for (const double v : speeds)
-        plot(directory / ("spectra_" + speed_label(v) + ".png"),
-             "Contact stress at the patch centre, " + format_number(v) + " km/h (Figure A.15)",
-             "spectrum_", stress_label, [&](const RunSpectrum &r) {
-               return r.speed_kmh == v;
-             });
+        {
+          const auto take = [&](const RunSpectrum &r) {
+            return r.speed_kmh == v;
+          };
+          plot(directory / ("spectra_" + speed_label(v) + ".png"),
+               "Contact stress at the patch centre, " + format_number(v) + " km/h (Figure A.15)",
+               "spectrum_", stress_label, take);
+          plot(directory / ("spectra_force_" + speed_label(v) + ".png"),
+               "Total contact force, " + format_number(v) + " km/h", "spectrum_force_",
+               "L_F [dB re 1 N]", take);
+        }
 
       // The band of the highest level per run: does it rise with the speed?
       std::cout << "Spectra (one-third octaves of the contact stress at the patch centre, dB re "
