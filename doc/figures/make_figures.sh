@@ -78,6 +78,13 @@ cp "$main_out/green_functions.h5" "$main_out/modal_model.h5" "$tmp/tyre_sound/"
 "$program" prm/tyre_sound.prm --set "Output directory=$tmp/tyre_sound" > /dev/null
 place doc/figures/sound_road-A_70kmh.png "$tmp/tyre_sound/sound_road-A_70kmh.png"
 
+# The patterned tyre beside the slick one (prm/tyre_pattern.prm), on the main
+# job's Green's functions and modes likewise.
+mkdir -p "$tmp/tyre_pattern"
+cp "$main_out/green_functions.h5" "$main_out/modal_model.h5" "$tmp/tyre_pattern/"
+"$program" prm/tyre_pattern.prm --set "Output directory=$tmp/tyre_pattern" > /dev/null
+place doc/figures/pattern_force_70kmh.png "$tmp/tyre_pattern/spectra_force_70kmh.png"
+
 if ! $benchmarks; then
   bash "$top/tests/layout/check_figures.sh" "$top" "$program"
   exit

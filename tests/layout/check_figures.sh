@@ -62,9 +62,10 @@ parameters() {
     }' "$1"
 }
 # normalised: "Path = value" lines, the output directory left out and
-# absolute paths cut to their geometry/ or prm/ on.
+# absolute paths cut to their geometry/ or prm/ on, also inside a list
+# ("Roads = road-A, /.../prm/dense_asphalt.x3p").
 normalised() {
-  grep -v '^Output directory = ' | sed -E 's#= /.*/((geometry|prm)/[^/]*)$#= \1#'
+  grep -v '^Output directory = ' | sed -E 's#/[^ ,]*/((geometry|prm)/[^/ ,]*)#\1#g'
 }
 
 declare -A listed
