@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# A patterned tyre against the slick one on the same contact grid
+# ('Tread pattern', doc/methods/contact.md#tread-patterns): the scene's
+# pattern of prm/tyre_pattern.prm (three pitch lengths in a sequence of 19,
+# lateral grooves 5 mm and two circumferential grooves 8 mm wide, 6 mm deep)
+# and the slick tyre, rolled side by side on road-A at 70 km/h over 1.2 m, on
+# the main job's saved stages, on 4 x 4 and 8 x 8 subdivisions (1920 and
+# 7680 points). For each tyre and grid: the time per step, and how far its
+# force band levels (100 Hz to 5 kHz) moved from the coarser grid to the
+# finer, the error the grid leaves in them; and the pattern's effect, the
+# largest band-level difference between the patterned and the slick tyre.
+#
+#   bash benchmarks/tread_pattern/tread_pattern.sh [--quick] [--output DIR] \
+#     [main job's output] [program] [subdivisions...]
+#
+# defaults: output/, $GREENTREAD_PROGRAM else build/greentread, subdivisions
+# 4 8. --quick makes its own stages on the coarse ring
+# (common/saved_stages.sh) in DIR/stages and rolls on subdivisions 2 and 4
+# (480 and 1920 points) at 3 road samples per step. Every run writes the
+# table as DIR/tread_pattern.csv (DIR: build/benchmark-output/tread_pattern).
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
+parse_options tread_pattern.sh "$@"
+set -- "${arguments[@]}"
+saved=${1:-output}
+program_argument tread_pattern.sh "${2:-}"
+shift $(( $# < 2 ? $# : 2 ))
+grids=("$@")
+step=()
+if $quick; then
+  (( ${#grids[@]} > 0 )) || grids=(2 4)
+  step=(--set "Time stepping/Time step=5.926e-05")
+  saved=$output/stages
+  make_quick_stages "$saved"
+fi
+(( ${#grids[@]} > 0 )) || grids=(4 8)
+for s in "${grids[@]}"; do check_number tread_pattern.sh subdivisions "$s" integer; done
+(( ${#grids[@]} >= 2 )) || input_error "tread_pattern.sh: give two subdivisions or more (the grid's error is their difference)"
+check_saved_stages tread_pattern.sh
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+
+# The pattern of prm/tyre_pattern.prm, read from it so that the two agree.
+pattern=()
+while IFS= read -r line; do
+  pattern+=(--set "Tread pattern/$line")
+done < <(awk '/^subsection Tread pattern/ { on = 1; next } on && /^end/ { on = 0 }
+              on { sub(/#.*/, ""); sub(/^ *set */, ""); sub(/ *= */, "="); sub(/ *$/, ""); if ($0 != "") print }' \
+           "$top/prm/tyre_pattern.prm")
+
+# ms per step of run $2 in log $1.
+per_step() {
+  awk -v run="$2" 'index($0, "    " run "_70kmh:") == 1 && / ms per step/ { print $4; exit }' \
+    "$work/$1.log"
+}
+
+# Largest |force band-level difference| [dB] between file $1 and file $2.
+difference() {
+  awk -F, 'FNR == 1 { file++ }
+    /^[0-9]/ { if (file == 1) a[$1] = $6; else b[$1] = $6 }
+    END { worst = 0; for (f in a) if (f in b) { d = a[f] - b[f]; if (d < 0) d = -d; if (d > worst) worst = d }
+          printf "%.6e", worst }' "$1" "$2"
+}
+
+for s in "${grids[@]}"; do
+  echo "  running s$s ..." >&2
+  run_saved "s$s" --set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=70" \
+    --set "Rolling/Distance=1.2" --set "Spectra/Low bands up to=0" --set "Error bars/Estimates=" \
+    --set "Contact grid/Subdivisions=$s" "${pattern[@]}" "${step[@]}"
+done
+
+g2() { awk -v x="$1" 'BEGIN { printf "%.2g", x }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
+
+finest=${grids[-1]}
+echo "Tread pattern against slick: road-A at 70 km/h over 1.2 m, on the $($quick && echo "coarse ring's" || echo "main job's") saved stages"
+echo "| points | patterned [ms per step] | slick [ms per step] | ratio | patterned: largest band move to ${finest} x ${finest} [dB] | slick: the same [dB] | pattern's effect: largest band difference from slick [dB] |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
+echo "points,patterned_ms_per_step,slick_ms_per_step,ratio,patterned_grid_dB,slick_grid_dB,pattern_effect_dB" > "$work/table.csv"
+for s in "${grids[@]}"; do
+  p=$(per_step "s$s" road-A) q=$(per_step "s$s" road-A_slick)
+  fine="$work/s$finest" here="$work/s$s"
+  move_p=$(difference "$here/spectrum_force_road-A_70kmh.csv" "$fine/spectrum_force_road-A_70kmh.csv")
+  move_s=$(difference "$here/spectrum_force_road-A_slick_70kmh.csv" "$fine/spectrum_force_road-A_slick_70kmh.csv")
+  effect=$(difference "$here/spectrum_force_road-A_70kmh.csv" "$here/spectrum_force_road-A_slick_70kmh.csv")
+  echo "| $(( 120 * s * s )) | $p | $q | $(ratio "$p" "$q") | $(g2 "$move_p") | $(g2 "$move_s") | $(g2 "$effect") |"
+  echo "$(( 120 * s * s )),$p,$q,$(ratio "$p" "$q"),$move_p,$move_s,$effect" >> "$work/table.csv"
+done
+write_csv "$output/tread_pattern.csv" < "$work/table.csv"
