@@ -62,10 +62,13 @@ parameters() {
     }' "$1"
 }
 # normalised: "Path = value" lines, the output directory left out and
-# absolute paths cut to their geometry/ or prm/ on, also inside a list
-# ("Roads = road-A, /.../prm/dense_asphalt.x3p").
+# absolute paths cut as a scene file in prm/ names them, also inside a list:
+# to their geometry/ on, and a file of prm/ to its name, relative to the
+# scene's folder ("Roads = road-A, /.../prm/dense_asphalt.x3p" as
+# prm/tyre_pattern.prm gives it, "dense_asphalt.x3p").
 normalised() {
-  grep -v '^Output directory = ' | sed -E 's#/[^ ,]*/((geometry|prm)/[^/ ,]*)#\1#g'
+  grep -v '^Output directory = ' |
+    sed -E 's#/[^ ,]*/prm/([^/ ,]*)#\1#g; s#/[^ ,]*/(geometry/[^/ ,]*)#\1#g'
 }
 
 declare -A listed
