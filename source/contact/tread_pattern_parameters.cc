@@ -50,7 +50,8 @@ namespace greentread
                         "With 'image': a PGM file (P2 or P5) of one pitch's footprint, "
                         "rows along the pitch (the first at its start), columns across "
                         "'Footprint width' centred on the tread; a pixel darker than "
-                        "half the largest grey is a groove.");
+                        "half the largest grey is a groove. Every pitch must span at "
+                        "least 4 contact rectangles along.");
       prm.declare_entry("Footprint width", "0.12", dealii::Patterns::Double(0.),
                         "With 'image': the width [m] across the tread the image's columns "
                         "span, at most 'Geometry/Tread width'.");

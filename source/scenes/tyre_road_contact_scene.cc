@@ -132,6 +132,15 @@ namespace greentread
       run_roads.clear();
       for (const auto &r : roads.roads)
         {
+          // The slick tyre's runs are named by a suffix; a road of that name
+          // would be taken for them.
+          if (tread_pattern.enabled() && tread_pattern.compare_with_slick &&
+              analysis::texture_of_road(r) != r)
+            throw InputError("parameter 'Road texture/Roads' gives '" + r +
+                             "', which ends as the slick tyre's runs are named ('" +
+                             analysis::slick_road("<road>") +
+                             "') with 'Tread pattern/Compare with slick' = true; allowed: "
+                             "another name, or 'Compare with slick' = false");
           run_roads.push_back(r);
           if (tread_pattern.enabled() && tread_pattern.compare_with_slick)
             run_roads.push_back(analysis::slick_road(r));
@@ -368,9 +377,11 @@ namespace greentread
 
 
     std::string
-    TyreRoadContactScene::texture_of(const std::string &run_road)
+    TyreRoadContactScene::texture_of(const std::string &run_road) const
     {
-      return analysis::texture_of_road(run_road);
+      return tread_pattern.enabled() && tread_pattern.compare_with_slick ?
+               analysis::texture_of_road(run_road) :
+               run_road;
     }
 
 

@@ -172,9 +172,11 @@ namespace greentread
                  std::vector<std::unique_ptr<road::PatchRoad>> &coarser_roads,
                  std::vector<double>                           &mpd) const;
 
-      /// The texture a road of run_roads rolls on ('Road texture/Roads').
-      static std::string
-      texture_of(const std::string &run_road);
+      /// The texture a road of run_roads rolls on ('Road texture/Roads'):
+      /// @p run_road itself unless the scene rolls the slick tyre beside a
+      /// pattern.
+      std::string
+      texture_of(const std::string &run_road) const;
 
       /// Whether a road of run_roads rolls the patterned tyre.
       bool
