@@ -189,16 +189,23 @@ namespace greentread
       printer.flush();
       const auto t_run = std::chrono::steady_clock::now();
 
-      // The road under the points, the static start and the run's set-up.
+      // The road under the points, the pattern's grooves and blocks at the
+      // same position, the static start and the run's set-up.
+      std::optional<contact::BlockState> blocks;
+      if (pattern != nullptr && level.blocks != nullptr)
+        blocks.emplace(*level.blocks, grid.points);
       const contact::PatchRoadHeights road_heights = [&](const double s, Eigen::VectorXd &z,
                                                          Eigen::VectorXd &slope) {
         patch_road.heights(s, z, slope);
         if (pattern != nullptr)
           pattern->recess(grid.points, s, z);
+        if (blocks)
+          blocks->set_position(s);
       };
-      const contact::RollingSetup setup = rolling_setup(rolling, band_run, V, threads);
-      const auto                  equilibrium =
-        contact::start_grid_contact(grid, *level.G0, *level.tread, road_heights, setup);
+      const contact::BlockState  *block_state = blocks ? &*blocks : nullptr;
+      const contact::RollingSetup setup       = rolling_setup(rolling, band_run, V, threads);
+      const auto equilibrium = contact::start_grid_contact(grid, *level.G0, *level.tread,
+                                                           road_heights, setup, block_state);
       printer.out << "    " << run << ": static contact: indentation "
                   << format_printf("%.4g", 1e3 * equilibrium.delta) << " mm, load "
                   << format_printf("%.4g", equilibrium.q.sum()) << " N, " << equilibrium.n_contact
@@ -253,7 +260,7 @@ namespace greentread
       const auto convolution = contact::make_grid_convolution(
         contact::make_patch_convolution(setup.convolution, *level.model, dt, band_run.steps,
                                         setup.direct_kernel, setup.threads, setup.shape_precision),
-        grid);
+        grid, block_state);
       const auto summary =
         contact::roll_patch(*convolution, *level.tread, road_heights, equilibrium, setup, observe,
                             [&](const unsigned int done) {

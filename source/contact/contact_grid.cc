@@ -1,6 +1,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_grid.h>
 #include <greentread/contact/projected_cg.h>
+#include <greentread/contact/tread_block.h>
 
 #include <algorithm>
 #include <cmath>
@@ -357,12 +358,18 @@ namespace greentread
       {
       public:
         GridConvolution(std::unique_ptr<convolution::PatchConvolution> coarse_,
-                        const ContactGrid                             &grid_)
+                        const ContactGrid                             &grid_,
+                        const BlockState                              *blocks_)
             : convolution::PatchConvolution(grid_.n_points(), coarse_->time_step())
             , coarse(std::move(coarse_))
             , grid(grid_)
+            , blocks(blocks_)
             , coarse_load(coarse->n_points())
         {
+          if (blocks != nullptr && !grid.matrix_free)
+            throw InputError("'Tread pattern/Block compliance' = finite blocks needs 'Contact "
+                             "grid/Solver' = projected CG (or auto with 'Patch model/Source' = "
+                             "fe modes); the pivoting solver's compliance is fixed");
           const convolution::PatchInfluence &c = coarse->influence();
           psi.instantaneous                    = true;
           if (grid.matrix_free)
@@ -391,6 +398,8 @@ namespace greentread
                   {
                     // The step's end, the solve's operator: in one pass.
                     grid.add_product(&end_compliance, x, y);
+                    if (blocks != nullptr)
+                      blocks->add_product(x, y);
                     return;
                   }
                 const Eigen::VectorXd xc = grid.gather(x);
@@ -402,7 +411,18 @@ namespace greentread
                                      const std::vector<unsigned int> &columns,
                                      Eigen::MatrixXd                 &out) {
                   grid.block(end_compliance, rows, columns, out);
+                  if (blocks != nullptr)
+                    blocks->add_block(rows, columns, out);
                 };
+              // The blocks move: the solve's step length from a bound over
+              // every position.
+              if (blocks != nullptr)
+                psi.end_norm = operator_norm(
+                                 [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+                                   grid.apply(end_compliance, x, y);
+                                 },
+                                 grid.n_points()) +
+                               blocks->norm_bound();
               return;
             }
           for (unsigned int g = 0; g < 4; ++g)
@@ -457,6 +477,7 @@ namespace greentread
       private:
         std::unique_ptr<convolution::PatchConvolution> coarse;
         const ContactGrid                             &grid;
+        const BlockState                              *blocks;
         convolution::PatchLoad                         coarse_load;
         Eigen::VectorXd                                uc, vc;
         /// The symmetric part of the coarse end compliance (matrix-free).
@@ -468,11 +489,12 @@ namespace greentread
 
     std::unique_ptr<convolution::PatchConvolution>
     make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse,
-                          const ContactGrid                             &grid)
+                          const ContactGrid                             &grid,
+                          const BlockState                              *blocks)
     {
-      if (grid.subdivisions == 1 && !grid.matrix_free)
+      if (grid.subdivisions == 1 && !grid.matrix_free && blocks == nullptr)
         return coarse;
-      return std::make_unique<GridConvolution>(std::move(coarse), grid);
+      return std::make_unique<GridConvolution>(std::move(coarse), grid, blocks);
     }
 
 
@@ -482,15 +504,28 @@ namespace greentread
                        const Eigen::MatrixXd  &coarse_static,
                        const Eigen::VectorXd  &tread,
                        const PatchRoadHeights &road,
-                       const RollingSetup     &setup)
+                       const RollingSetup     &setup,
+                       const BlockState       *blocks)
     {
-      if (!grid.matrix_free)
+      if (!grid.matrix_free && blocks == nullptr)
         return start_contact(grid.compliance(coarse_static), tread, road, setup);
+      if (!grid.matrix_free)
+        throw InputError("'Tread pattern/Block compliance' = finite blocks needs 'Contact "
+                         "grid/Solver' = projected CG; the pivoting solver's compliance is fixed");
       const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
         grid.apply(coarse_static, x, y);
+        if (blocks != nullptr)
+          blocks->add_product(x, y);
       };
       ProjectedCgOptions options;
-      options.operator_norm = operator_norm(W, grid.n_points());
+      // (The blocks' share is bounded, not measured: road() sets their
+      // position only when the solve starts.)
+      options.operator_norm = operator_norm(
+                                [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+                                  grid.apply(coarse_static, x, y);
+                                },
+                                grid.n_points()) +
+                              (blocks != nullptr ? blocks->norm_bound() : 0.);
       Eigen::VectorXd last; // each bisection's solve starts from the last one's forces
       return start_contact(
         [&](const Eigen::VectorXd &c) {

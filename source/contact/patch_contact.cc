@@ -42,7 +42,9 @@ namespace greentread
       if (matrix_free && !psi.instantaneous)
         throw InputError("patch contact: a matrix-free influence needs an instantaneous "
                          "compliance (a continuous contact force)");
-      if (matrix_free)
+      if (matrix_free && psi.end_norm > 0.)
+        end_norm = psi.end_norm;
+      else if (matrix_free)
         end_norm = operator_norm(
           [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
             y.setZero(x.size());

@@ -1,6 +1,8 @@
 #include <greentread/base/exceptions.h>
+#include <greentread/base/job_runner.h>
 #include <greentread/base/mesh_ids.h>
 #include <greentread/base/output.h>
+#include <greentread/base/serial_deal_ii.h>
 #include <greentread/contact/tread_block.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -12,14 +14,21 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <Eigen/CholmodSupport>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCore>
+
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <map>
+#include <mutex>
 #include <set>
+#include <sstream>
 
 namespace greentread
 {
@@ -51,9 +60,14 @@ namespace greentread
                            " m; allowed: " + (zero_allowed ? ">= 0" : "> 0"));
       }
 
-      /// Steps of at most @p cell between sorted, distinct breakpoints.
+      /// Steps of at most @p cell between sorted, distinct breakpoints; of
+      /// at most twice that outside [@p inner_low, @p inner_high] (the
+      /// margins, away from the loads).
       std::vector<double>
-      steps_through(std::vector<double> points, const double cell)
+      steps_through(std::vector<double> points,
+                    const double        cell,
+                    const double        inner_low  = -INFINITY,
+                    const double        inner_high = INFINITY)
       {
         std::sort(points.begin(), points.end());
         std::vector<double> kept;
@@ -64,7 +78,9 @@ namespace greentread
         for (std::size_t k = 1; k < kept.size(); ++k)
           {
             const double       length = kept[k] - kept[k - 1];
-            const unsigned int n = std::max(1u, unsigned(std::ceil(length / cell * (1. - 1e-9))));
+            const double       mid    = 0.5 * (kept[k] + kept[k - 1]);
+            const double       size   = mid > inner_low && mid < inner_high ? cell : 2. * cell;
+            const unsigned int n = std::max(1u, unsigned(std::ceil(length / size * (1. - 1e-9))));
             steps.insert(steps.end(), n, length / n);
           }
         return steps;
@@ -83,14 +99,16 @@ namespace greentread
     TreadBlock::TreadBlock(const TreadBlockGeometry        &shape,
                            const ElasticLayer              &rubber,
                            const std::vector<TopRectangle> &rectangles,
-                           const double                     cell_size)
+                           const double                     cell_size,
+                           const bool                       grooves)
         : model(std::make_unique<Model>())
     {
       check_size("length", shape.length);
       check_size("width", shape.width);
       check_size("height", shape.height);
-      check_size("base", shape.base);
-      check_size("margin", shape.margin, true);
+      check_size("base", shape.base, true);
+      check_size("margin along", shape.margin_along, true);
+      check_size("margin across", shape.margin_across, true);
       check_size("cell size", cell_size);
       ElasticLayer material = rubber;
       material.thickness    = shape.height + shape.base;
@@ -100,8 +118,9 @@ namespace greentread
       // The mesh: a box over block and margins, its lines through the block's
       // sides and every rectangle's edges, less the cells beside the block
       // above the undertread.
-      std::vector<double> xs{-shape.margin, 0., shape.length, shape.length + shape.margin};
-      std::vector<double> ys{-shape.margin, 0., shape.width, shape.width + shape.margin};
+      const double        mx = shape.margin_along, my = shape.margin_across;
+      std::vector<double> xs{-mx, 0., shape.length, shape.length + mx};
+      std::vector<double> ys{-my, 0., shape.width, shape.width + my};
       for (const TopRectangle &r : rectangles)
         {
           const double tiny = 0.01 * cell_size;
@@ -116,21 +135,21 @@ namespace greentread
           ys.insert(ys.end(), {r.y0, r.y1});
         }
       const std::vector<std::vector<double>> steps = {
-        steps_through(xs, cell_size), steps_through(ys, cell_size),
+        steps_through(xs, cell_size, 0., shape.length),
+        steps_through(ys, cell_size, 0., shape.width),
         steps_through({0., shape.base, top}, cell_size)};
       const double cells = double(steps[0].size()) * steps[1].size() * steps[2].size();
       if (cells > 2e5)
         throw InputError("tread block: a cell size of " + format_short(cell_size) + " m makes " +
                          format_short(cells) + " cells; allowed: at most 200000");
       Triangulation<3> box;
-      GridGenerator::subdivided_hyper_rectangle(
-        box, steps, Point<3>(-shape.margin, -shape.margin, 0.),
-        Point<3>(shape.length + shape.margin, shape.width + shape.margin, top));
+      GridGenerator::subdivided_hyper_rectangle(box, steps, Point<3>(-mx, -my, 0.),
+                                                Point<3>(shape.length + mx, shape.width + my, top));
       std::set<Triangulation<3>::active_cell_iterator> beside;
       for (const auto &cell : box.active_cell_iterators())
         {
           const Point<3> c = cell->center();
-          if (c[2] > shape.base &&
+          if (grooves && c[2] > shape.base &&
               (c[0] < 0. || c[0] > shape.length || c[1] < 0. || c[1] > shape.width))
             beside.insert(cell);
         }
@@ -148,11 +167,9 @@ namespace greentread
                 const double   e = 1e-9 * top;
                 if (std::abs(c[2]) < e)
                   face->set_boundary_id(geometry::rim_seat);
-                else if (std::abs(c[0] + shape.margin) < e ||
-                         std::abs(c[0] - shape.length - shape.margin) < e)
+                else if (std::abs(c[0] + mx) < e || std::abs(c[0] - shape.length - mx) < e)
                   face->set_boundary_id(tread_block_side_x);
-                else if (std::abs(c[1] + shape.margin) < e ||
-                         std::abs(c[1] - shape.width - shape.margin) < e)
+                else if (std::abs(c[1] + my) < e || std::abs(c[1] - shape.width - my) < e)
                   face->set_boundary_id(tread_block_side_y);
                 else
                   face->set_boundary_id(geometry::free_surface);
@@ -260,28 +277,39 @@ namespace greentread
     Eigen::MatrixXd
     TreadBlock::compliance() const
     {
-      const Model        &m = *model;
-      SparseDirectUMFPACK inverse;
-      inverse.initialize(m.stiffness);
-      const std::size_t n = m.loads.size();
-      Eigen::MatrixXd   C(n, n);
-      Vector<double>    x;
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          x = m.loads[i];
-          inverse.solve(x);
-          m.constraints.distribute(x);
-          // The load pushes down (-z): the displacement into the block is
-          // -u_z, and the load vectors carry that sign already.
-          for (std::size_t j = 0; j < n; ++j)
-            C(i, j) = m.loads[j] * x;
-        }
-      for (Eigen::Index i = 0; i < C.rows(); ++i)
-        for (Eigen::Index j = 0; j < C.cols(); ++j)
-          if (!std::isfinite(C(i, j)))
-            throw NumericalError("tread block: the compliance between rectangles " +
-                                 std::to_string(i) + " and " + std::to_string(j) +
-                                 " is not finite");
+      // K X = B for every rectangle's load at once: K is symmetric positive
+      // definite (the constrained rows keep their diagonal), so CHOLMOD's
+      // supernodal Cholesky factor, with its fill-reducing ordering, and one
+      // solve with all the loads as columns. (UMFPACK's LU, one load at a
+      // time, took 76 s for 273 loads on 44,000 unknowns.)
+      const Model                        &m = *model;
+      const Eigen::Index                  n = m.dofs.n_dofs();
+      std::vector<Eigen::Triplet<double>> entries;
+      entries.reserve(m.stiffness.n_nonzero_elements());
+      for (const auto &entry : m.stiffness)
+        if (entry.row() >= entry.column()) // the lower triangle
+          entries.emplace_back(entry.row(), entry.column(), entry.value());
+      Eigen::SparseMatrix<double> K(n, n);
+      K.setFromTriplets(entries.begin(), entries.end());
+      // One factorisation at a time: two at once on two threads (CHOLMOD's
+      // dense kernels through OpenBLAS) both reported matrices that are not
+      // positive definite; one at a time, OpenBLAS's threads serve it.
+      static std::mutex                                                      one_at_a_time;
+      const std::lock_guard<std::mutex>                                      lock(one_at_a_time);
+      Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> factor(K);
+      if (factor.info() != Eigen::Success)
+        throw NumericalError("tread block: the stiffness matrix (" + std::to_string(n) +
+                             " unknowns) is not positive definite");
+      Eigen::MatrixXd B(n, m.loads.size());
+      for (std::size_t r = 0; r < m.loads.size(); ++r)
+        for (Eigen::Index i = 0; i < n; ++i)
+          B(i, r) = m.loads[r][i];
+      const Eigen::MatrixXd X = factor.solve(B);
+      // The load pushes down (-z): the displacement into the block is -u_z,
+      // and the load vectors carry that sign already.
+      const Eigen::MatrixXd C = B.transpose() * X;
+      if (!C.allFinite())
+        throw NumericalError("tread block: a compliance between its rectangles is not finite");
       return 0.5 * (C + C.transpose());
     }
 
@@ -299,6 +327,270 @@ namespace greentread
     TreadBlock::n_dofs() const
     {
       return model->dofs.n_dofs();
+    }
+
+
+
+    BlockCompliance::BlockCompliance(const TreadPattern           &pattern_,
+                                     const TreadPatternParameters &parameters,
+                                     const ElasticLayer           &tread,
+                                     const double                  tread_width,
+                                     const double                  mesh_size,
+                                     const unsigned int            n_threads,
+                                     const bool                    progress)
+        : pattern(pattern_)
+        , lateral(parameters.lateral_groove_width)
+    {
+      if (parameters.pattern != "blocks")
+        throw InputError("parameter 'Tread pattern/Block compliance' = finite blocks needs "
+                         "'Tread pattern/Pattern' = blocks; it is '" +
+                         parameters.pattern + "' (allowed with it: endless layer)");
+      if (!(mesh_size > 0.) || !std::isfinite(mesh_size))
+        throw InputError("parameter 'Tread pattern/Block mesh size' = " + format_short(mesh_size) +
+                         " m; allowed: > 0");
+      // The ribs: the tread less the circumferential grooves.
+      const double                       w = parameters.circumferential_width;
+      std::vector<std::array<double, 2>> grooves;
+      for (const double c : parameters.circumferential_centres)
+        grooves.push_back({{c - 0.5 * w, c + 0.5 * w}});
+      std::sort(grooves.begin(), grooves.end());
+      double edge = -0.5 * tread_width;
+      for (const auto &g : grooves)
+        {
+          if (g[0] > edge)
+            ribs.push_back({{edge, g[0]}});
+          edge = std::max(edge, g[1]);
+        }
+      if (0.5 * tread_width > edge)
+        ribs.push_back({{edge, 0.5 * tread_width}});
+
+      // One table per shape: the blocks' lengths and the ribs' widths.
+      TreadBlockGeometry geometry;
+      geometry.height = pattern.depth();
+      geometry.base   = std::max(0., tread.thickness - pattern.depth());
+      // An isolated block: the undertread reaches twice the tread's
+      // thickness beyond it, so that neither model feels its walls' images.
+      geometry.margin_along = geometry.margin_across = 2. * tread.thickness;
+      std::map<std::array<long long, 2>, unsigned int> known;
+      const auto                                       key = [](const double x) {
+        return std::llround(x * 1e9);
+      };
+      shape_of.resize(pattern.pitches().size());
+      for (std::size_t k = 0; k < pattern.pitches().size(); ++k)
+        for (const auto &rib : ribs)
+          {
+            const double length = pattern.pitches()[k] - lateral, width = rib[1] - rib[0];
+            const auto [found, added] = known.emplace(
+              std::array<long long, 2>{{key(length), key(width)}}, unsigned(shape_list.size()));
+            if (added)
+              {
+                Shape shape;
+                shape.length = length;
+                shape.width  = width;
+                shape.nx     = std::max(1u, unsigned(std::ceil(length / mesh_size * (1. - 1e-9))));
+                shape.ny     = std::max(1u, unsigned(std::ceil(width / mesh_size * (1. - 1e-9))));
+                shape_list.push_back(shape);
+              }
+            shape_of[k].push_back(found->second);
+          }
+
+      // Each shape's tables, on threads (each a result of its own: the same
+      // whatever their number), deal.II's own set-up serial
+      // (base/serial_deal_ii.h).
+      const base::SerialDealII serial;
+      base::for_each_index(
+        shape_list.size(), std::max(1u, n_threads), [&](const std::size_t i, unsigned int) {
+          Shape                    &shape = shape_list[i];
+          std::vector<TopRectangle> table;
+          const double              a = shape.length / shape.nx, b = shape.width / shape.ny;
+          for (unsigned int x = 0; x < shape.nx; ++x)
+            for (unsigned int y = 0; y < shape.ny; ++y)
+              table.push_back({x * a, (x + 1) * a, y * b, (y + 1) * b});
+          table.push_back({0., shape.length, 0., shape.width});
+          TreadBlockGeometry block_geometry = geometry;
+          block_geometry.length             = shape.length;
+          block_geometry.width              = shape.width;
+          const Eigen::MatrixXd block =
+            TreadBlock(block_geometry, tread, table, mesh_size, true).compliance();
+          const Eigen::MatrixXd layer =
+            TreadBlock(block_geometry, tread, table, mesh_size, false).compliance();
+          const Eigen::Index n = table.size() - 1;
+          shape.delta          = block.topLeftCorner(n, n) - layer.topLeftCorner(n, n);
+          shape.norm =
+            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(shape.delta, Eigen::EigenvaluesOnly)
+              .eigenvalues()
+              .cwiseAbs()
+              .maxCoeff();
+          shape.top_block    = block(n, n);
+          shape.top_layer    = layer(n, n);
+          shape.corner_block = block(0, 0);
+          shape.corner_layer = layer(0, 0);
+          if (progress)
+            {
+              std::ostringstream line;
+              line << "  Tread block " << format_printf("%.2f", 1e3 * shape.length) << " x "
+                   << format_printf("%.2f", 1e3 * shape.width) << " mm: " << shape.nx << " x "
+                   << shape.ny << " table; its whole top "
+                   << format_printf("%.2f", shape.top_block / shape.top_layer) << " and its corner "
+                   << format_printf("%.2f", shape.corner_block / shape.corner_layer)
+                   << " times as compliant as the endless layer\n";
+              std::cout << line.str() << std::flush;
+            }
+        });
+    }
+
+
+
+    std::string
+    BlockCompliance::summary() const
+    {
+      std::ostringstream out;
+      out << shape_list.size() << " block shapes on " << ribs.size()
+          << " ribs; under a uniform load on the whole top, "
+          << "the blocks are";
+      double low = INFINITY, high = 0.;
+      for (const Shape &s : shape_list)
+        {
+          low  = std::min(low, s.top_block / s.top_layer);
+          high = std::max(high, s.top_block / s.top_layer);
+        }
+      out << ' ' << format_printf("%.2f", low) << " to " << format_printf("%.2f", high)
+          << " times as compliant as the endless layer";
+      return out.str();
+    }
+
+
+
+    BlockState::BlockState(const BlockCompliance                    &blocks_,
+                           const std::vector<std::array<double, 3>> &points_)
+        : blocks(blocks_)
+        , points(points_)
+        , slot(points_.size(), -1)
+        , cell(points_.size(), 0)
+    {
+      // The lattice's spacing, and from it the most points a table
+      // rectangle a x b can hold.
+      const auto spacing = [&](const unsigned int axis) {
+        std::vector<double> x;
+        for (const auto &p : points)
+          x.push_back(p[axis]);
+        std::sort(x.begin(), x.end());
+        double gap = INFINITY;
+        for (std::size_t k = 1; k < x.size(); ++k)
+          if (x[k] - x[k - 1] > 1e-12)
+            gap = std::min(gap, x[k] - x[k - 1]);
+        return gap;
+      };
+      const double dx = spacing(0), dy = spacing(1);
+      for (const BlockCompliance::Shape &s : blocks.shape_list)
+        {
+          const double most =
+            (std::floor(s.length / s.nx / dx) + 1.) * (std::floor(s.width / s.ny / dy) + 1.);
+          bound = std::max(bound, most * s.norm);
+        }
+    }
+
+
+
+    void
+    BlockState::set_position(const double s)
+    {
+      const TreadPattern        &p      = blocks.pattern;
+      const std::vector<double> &starts = p.pitch_starts();
+      const std::size_t          n_ribs = blocks.ribs.size();
+      slot_shape.clear();
+      slot_block.clear();
+      for (std::size_t q = 0; q < points.size(); ++q)
+        {
+          slot[q]      = -1;
+          double sigma = std::fmod(s + points[q][0], p.circumference());
+          if (sigma < 0.)
+            sigma += p.circumference();
+          const std::size_t k = std::max<std::ptrdiff_t>(
+            0, std::upper_bound(starts.begin(), starts.end(), sigma) - starts.begin() - 1);
+          const double along = sigma - starts[k] - blocks.lateral;
+          if (along < 0.)
+            continue;
+          const double y = points[q][1];
+          std::size_t  r = 0;
+          while (r < n_ribs && !(y >= blocks.ribs[r][0] && y < blocks.ribs[r][1]))
+            ++r;
+          if (r == n_ribs)
+            continue;
+          // The block's slot: a handful of blocks are in the patch.
+          const std::size_t block = k * n_ribs + r;
+          std::size_t       b     = 0;
+          while (b < slot_block.size() && slot_block[b] != block)
+            ++b;
+          if (b == slot_block.size())
+            {
+              slot_block.push_back(block);
+              slot_shape.push_back(blocks.shape_of[k][r]);
+            }
+          const BlockCompliance::Shape &shape = blocks.shape_list[slot_shape[b]];
+          const unsigned int            i =
+            std::min(shape.nx - 1, unsigned(along / shape.length * double(shape.nx)));
+          const unsigned int j = std::min(
+            shape.ny - 1, unsigned((y - blocks.ribs[r][0]) / shape.width * double(shape.ny)));
+          slot[q] = int(b);
+          cell[q] = i * shape.ny + j;
+        }
+      load.resize(slot_shape.size());
+      response.resize(slot_shape.size());
+      loaded.resize(slot_shape.size());
+    }
+
+
+
+    void
+    BlockState::add_product(const Eigen::VectorXd &x, Eigen::VectorXd &y) const
+    {
+      // The forces are zero but at the few points in contact: each block's
+      // table loads, and its response from the loaded rectangles' columns.
+      std::fill(loaded.begin(), loaded.end(), false);
+      for (std::size_t q = 0; q < points.size(); ++q)
+        if (slot[q] >= 0 && x[q] != 0.)
+          {
+            const int b = slot[q];
+            if (!loaded[b])
+              {
+                load[b].setZero(blocks.shape_list[slot_shape[b]].delta.rows());
+                loaded[b] = true;
+              }
+            load[b][cell[q]] += x[q];
+          }
+      for (std::size_t b = 0; b < slot_shape.size(); ++b)
+        if (loaded[b])
+          {
+            const Eigen::MatrixXd &delta = blocks.shape_list[slot_shape[b]].delta;
+            response[b].setZero(delta.rows());
+            for (Eigen::Index I = 0; I < delta.cols(); ++I)
+              if (load[b][I] != 0.)
+                response[b] += load[b][I] * delta.col(I);
+          }
+      for (std::size_t q = 0; q < points.size(); ++q)
+        if (slot[q] >= 0 && loaded[slot[q]])
+          y[q] += response[slot[q]][cell[q]];
+    }
+
+
+
+    void
+    BlockState::add_block(const std::vector<unsigned int> &rows,
+                          const std::vector<unsigned int> &columns,
+                          Eigen::MatrixXd                 &out) const
+    {
+      for (std::size_t l = 0; l < columns.size(); ++l)
+        {
+          const int b = slot[columns[l]];
+          if (b < 0)
+            continue;
+          const Eigen::MatrixXd &delta = blocks.shape_list[slot_shape[b]].delta;
+          const unsigned int     J     = cell[columns[l]];
+          for (std::size_t k = 0; k < rows.size(); ++k)
+            if (slot[rows[k]] == b)
+              out(k, l) += delta(cell[rows[k]], J);
+        }
     }
   } // namespace contact
 } // namespace greentread

@@ -59,6 +59,20 @@ namespace greentread
                         "With a pattern: each road is also rolled by the slick tyre, "
                         "named '<road> slick', so that its spectra are plotted beside "
                         "the patterned tyre's.");
+      prm.declare_entry(
+        "Block compliance", "auto", dealii::Patterns::Selection("auto|endless layer|finite blocks"),
+        "The tread's local compliance under the contact points: 'endless layer' (as the slick "
+        "tyre's), or 'finite blocks' (with 'blocks': what each block adds to it, by a 3D "
+        "finite-element model of the block on its undertread, computed when the run starts; "
+        "a block's edges and corners are softer, and it is softer on the whole since its "
+        "sides bulge; doc/methods/contact.md#tread-patterns). 'auto': finite blocks with "
+        "'blocks', the endless layer with 'image'. Finite blocks need 'Contact grid/Solver' "
+        "= projected CG (auto chooses it with the ring's own modes).");
+      prm.declare_entry("Block mesh size", "0.002", dealii::Patterns::Double(0.),
+                        "With finite blocks: the side [m] of the rectangles of the table "
+                        "over each block's top, and of its finite-element mesh's cells "
+                        "(quadratic bricks). Smaller: finer and slower (the cost grows as "
+                        "its cube); benchmarks/tread_pattern measures what it moves.");
       prm.leave_subsection();
     }
 
@@ -83,6 +97,8 @@ namespace greentread
       footprint_image       = prm.get("Footprint image");
       footprint_width       = prm.get_double("Footprint width");
       compare_with_slick    = prm.get_bool("Compare with slick");
+      block_compliance      = prm.get("Block compliance");
+      block_mesh_size       = prm.get_double("Block mesh size");
       prm.leave_subsection();
       for (const unsigned int i : sequence)
         if (i > pitch_lengths.size())
@@ -93,6 +109,13 @@ namespace greentread
         if (!(p > 0.))
           throw InputError("parameter 'Tread pattern/Pitch lengths' gives " + format_number(p) +
                            " m; allowed: lengths above 0");
+      if (block_compliance == "finite blocks" && pattern != "blocks")
+        throw InputError("parameter 'Tread pattern/Block compliance' = finite blocks needs "
+                         "'Tread pattern/Pattern' = blocks; it is '" +
+                         pattern + "' (allowed with it: auto, endless layer)");
+      if (finite_blocks() && !(block_mesh_size > 0.))
+        throw InputError("parameter 'Tread pattern/Block mesh size' = " +
+                         format_number(block_mesh_size) + " m; allowed: above 0");
       if (pattern == "image" && footprint_image.empty())
         throw InputError("parameter 'Tread pattern/Footprint image' is empty; 'Pattern' = image "
                          "needs a PGM file");

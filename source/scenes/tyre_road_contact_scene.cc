@@ -116,6 +116,13 @@ namespace greentread
                                  geometry.tread_width, geometry.tread_thickness,
                                  green.patch.length / (double(green.patch.points_along) * s),
                                  green.patch.width / (double(green.patch.points_across) * s), s);
+          if (tread_pattern.finite_blocks() &&
+              !contact_grid.matrix_free(patch_model.source == modal::PatchModelSource::fe_modes,
+                                        green.patch.points_along * green.patch.points_across))
+            throw InputError(
+              "parameter 'Tread pattern/Block compliance' = " + tread_pattern.block_compliance +
+              " takes the finite blocks, which need 'Contact grid/Solver' = "
+              "projected CG; allowed with 'pivoting': endless layer");
         }
 
       // A run's files are named by its road's and speed's labels: two roads
@@ -301,14 +308,28 @@ namespace greentread
       std::vector<const contact::TreadPattern *> patterns;
       for (const auto &r : run_roads)
         patterns.push_back(patterned(r) ? pattern.get() : nullptr);
-      const analysis::RunLevel fine{&model,  &grid, &G0, &tread, &lattice, pointers(fine_roads),
-                                    patterns};
-      analysis::RunLevels      levels{fine, {}};
+      // Its blocks' own compliance, once for every level (the table does
+      // not depend on the contact grid).
+      std::unique_ptr<contact::BlockCompliance> blocks;
+      if (pattern && tread_pattern.finite_blocks())
+        {
+          std::cout << "Finite tread blocks (3D finite elements, cells of "
+                    << format_number(1e3 * tread_pattern.block_mesh_size) << " mm):\n";
+          const auto set_up = std::chrono::steady_clock::now();
+          blocks            = std::make_unique<contact::BlockCompliance>(
+            *pattern, tread_pattern, tread_layer(), geometry.tread_width,
+            tread_pattern.block_mesh_size, dealii::MultithreadInfo::n_threads(), true);
+          std::cout << "  " << blocks->summary() << " (set up in "
+                    << format_printf("%.3g", base::seconds_since(set_up)) << " s)\n";
+        }
+      const analysis::RunLevel fine{
+        &model, &grid, &G0, &tread, &lattice, pointers(fine_roads), patterns, blocks.get()};
+      analysis::RunLevels levels{fine, {}};
       if (coarser.grid)
         levels.other[analysis::Discretisation::contact_grid] = {
           &model,         coarser.grid.get(),    &G0,
           &coarser.tread, coarser.lattice.get(), pointers(coarser_roads),
-          patterns};
+          patterns,       blocks.get()};
       if (coarser_model)
         levels.other[analysis::Discretisation::mode_cutoff] =
           with_model(fine, coarser_model->model);

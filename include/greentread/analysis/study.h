@@ -7,6 +7,7 @@
 #include <greentread/analysis/spectra_parameters.h>
 #include <greentread/contact/contact_grid.h>
 #include <greentread/contact/rolling_parameters.h>
+#include <greentread/contact/tread_block.h>
 #include <greentread/contact/tread_pattern.h>
 #include <greentread/modal/patch_model.h>
 #include <greentread/road/patch_road.h>
@@ -46,6 +47,9 @@ namespace greentread
       std::vector<const road::PatchRoad *> roads;
       /// By road: the tread pattern its runs roll (nullptr or none: slick).
       std::vector<const contact::TreadPattern *> patterns;
+      /// The pattern's finite blocks (nullptr: the endless layer), for the
+      /// roads with a pattern.
+      const contact::BlockCompliance *blocks = nullptr;
     };
 
     /// The levels of a study: the run's own, and the other levels that roll

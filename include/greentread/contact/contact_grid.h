@@ -76,6 +76,8 @@ namespace greentread
 {
   namespace contact
   {
+    class BlockState;
+
     /**
      * @brief The contact points of a subdivided patch and the split of the
      * file documentation.
@@ -212,21 +214,28 @@ namespace greentread
      * @brief The convolution of the contact points: the patch model's
      * convolution @p coarse driven by the forces gathered per coarse cell,
      * its history seen by each contact point, plus the local term at the end
-     * of each step. With s = 1, @p coarse itself.
+     * of each step. With s = 1 and no @p blocks, @p coarse itself.
+     * @param[in] blocks A tread pattern's finite blocks at the run's patch
+     *            position (the road's heights set it before each step's
+     *            solve), added to the local term; nullptr: none.
+     * @throws InputError if @p blocks is given with the `pivoting` solver.
      */
     std::unique_ptr<convolution::PatchConvolution>
     make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse,
-                          const ContactGrid                             &grid);
+                          const ContactGrid                             &grid,
+                          const BlockState                              *blocks = nullptr);
 
     /**
      * @brief contact::start_contact() on the grid: the static compliance
-     * \f$A^T G_0 A\f$ + the local term, by the grid's solver.
+     * \f$A^T G_0 A\f$ + the local term (+ the finite @p blocks' at the start),
+     * by the grid's solver.
      */
     StaticContact
     start_grid_contact(const ContactGrid      &grid,
                        const Eigen::MatrixXd  &coarse_static,
                        const Eigen::VectorXd  &tread,
                        const PatchRoadHeights &road,
-                       const RollingSetup     &setup);
+                       const RollingSetup     &setup,
+                       const BlockState       *blocks = nullptr);
   } // namespace contact
 } // namespace greentread

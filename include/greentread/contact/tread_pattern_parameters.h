@@ -38,6 +38,20 @@ namespace greentread
       double              footprint_width = 0.12;
       /// `Compare with slick`: each road also rolled by the slick tyre.
       bool compare_with_slick = true;
+      /// `Block compliance`: `auto` (finite blocks with `blocks`, the endless
+      /// layer with `image`), `endless layer` or `finite blocks`
+      /// (greentread/contact/tread_block.h).
+      std::string block_compliance = "auto";
+      /// `Block mesh size` [m]: the finite blocks' table and mesh.
+      double block_mesh_size = 0.002;
+
+      /// Whether the blocks' own compliance is in the contact.
+      bool
+      finite_blocks() const
+      {
+        return enabled() && (block_compliance == "finite blocks" ||
+                             (block_compliance == "auto" && pattern == "blocks"));
+      }
 
       bool
       enabled() const

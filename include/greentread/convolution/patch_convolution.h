@@ -67,6 +67,11 @@ namespace greentread
       /// gradient it ends at relative to the road's largest demand
       /// (greentread/contact/projected_cg.h).
       double tolerance = 1e-10;
+      /// With add_u: a bound on \f$\|\Psi^u_{end}\|_2\f$ over the whole
+      /// run, when that compliance changes from step to step (a tread
+      /// pattern's finite blocks, contact/tread_block.h); 0: it does not,
+      /// and the solve measures its norm once.
+      double end_norm = 0.;
     };
 
     /// y += \f$\Psi^u_g\f$ x, from the matrix's columns where x is not zero
