@@ -9,6 +9,11 @@
 # force band levels (100 Hz to 5 kHz) moved from the coarser grid to the
 # finer, the error the grid leaves in them; and the pattern's effect, the
 # largest band-level difference between the patterned and the slick tyre.
+# Then, on the finest grid, the blocks' own compliance ('Tread pattern/Block
+# compliance'): the patterned tyre with the endless layer instead of the
+# finite blocks, and with the blocks' mesh ('Block mesh size') refined by
+# 3/2: the time the blocks' set-up took, the time per step, and how far the
+# force band levels moved from the finite blocks on the scene's mesh.
 #
 #   bash benchmarks/tread_pattern/tread_pattern.sh [--quick] [--output DIR] \
 #     [main job's output] [program] [subdivisions...]
@@ -16,7 +21,8 @@
 # defaults: output/, $GREENTREAD_PROGRAM else build/greentread, subdivisions
 # 4 8. --quick makes its own stages on the coarse ring
 # (common/saved_stages.sh) in DIR/stages and rolls on subdivisions 2 and 4
-# (480 and 1920 points) at 3 road samples per step. Every run writes the
+# (480 and 1920 points) at 3 road samples per step, the blocks' mesh 4 mm
+# (6 mm at first for the refinement). Every run writes the
 # table as DIR/tread_pattern.csv (DIR: build/benchmark-output/tread_pattern).
 set -euo pipefail
 
@@ -28,9 +34,11 @@ program_argument tread_pattern.sh "${2:-}"
 shift $(( $# < 2 ? $# : 2 ))
 grids=("$@")
 step=()
+block_mesh=0.002
 if $quick; then
   (( ${#grids[@]} > 0 )) || grids=(2 4)
   step=(--set "Time stepping/Time step=5.926e-05")
+  block_mesh=0.004
   saved=$output/stages
   make_quick_stages "$saved"
 fi
@@ -56,6 +64,12 @@ per_step() {
     "$work/$1.log"
 }
 
+# Seconds the finite blocks' set-up took in log $1 (0: none).
+setup_time() {
+  awk '/block shapes on/ { for (i = 1; i <= NF; i++) if ($i == "s)") { print $(i - 1); found = 1 } }
+       END { if (!found) print 0 }' "$work/$1.log"
+}
+
 # Largest |force band-level difference| [dB] between file $1 and file $2.
 difference() {
   awk -F, 'FNR == 1 { file++ }
@@ -64,17 +78,24 @@ difference() {
           printf "%.6e", worst }' "$1" "$2"
 }
 
+common=(--set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=70"
+  --set "Rolling/Distance=1.2" --set "Spectra/Low bands up to=0" --set "Error bars/Estimates="
+  "${pattern[@]}" "${step[@]}" --set "Tread pattern/Block mesh size=$block_mesh")
 for s in "${grids[@]}"; do
   echo "  running s$s ..." >&2
-  run_saved "s$s" --set "Road texture/Roads=road-A" --set "Rolling/Speeds (kph)=70" \
-    --set "Rolling/Distance=1.2" --set "Spectra/Low bands up to=0" --set "Error bars/Estimates=" \
-    --set "Contact grid/Subdivisions=$s" "${pattern[@]}" "${step[@]}"
+  run_saved "s$s" "${common[@]}" --set "Contact grid/Subdivisions=$s"
 done
+finest=${grids[-1]}
+fine_mesh=$(awk -v h="$block_mesh" 'BEGIN { printf "%.6g", h * 2 / 3 }')
+echo "  running the blocks' alternatives on s$finest ..." >&2
+run_saved endless "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
+  --set "Tread pattern/Block compliance=endless layer" --set "Tread pattern/Compare with slick=false"
+run_saved fine_blocks "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
+  --set "Tread pattern/Block mesh size=$fine_mesh" --set "Tread pattern/Compare with slick=false"
 
 g2() { awk -v x="$1" 'BEGIN { printf "%.2g", x }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
 
-finest=${grids[-1]}
 echo "Tread pattern against slick: road-A at 70 km/h over 1.2 m, on the $($quick && echo "coarse ring's" || echo "main job's") saved stages"
 echo "| points | patterned [ms per step] | slick [ms per step] | ratio | patterned: largest band move to ${finest} x ${finest} [dB] | slick: the same [dB] | pattern's effect: largest band difference from slick [dB] |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
@@ -88,4 +109,32 @@ for s in "${grids[@]}"; do
   echo "| $(( 120 * s * s )) | $p | $q | $(ratio "$p" "$q") | $(g2 "$move_p") | $(g2 "$move_s") | $(g2 "$effect") |"
   echo "$(( 120 * s * s )),$p,$q,$(ratio "$p" "$q"),$move_p,$move_s,$effect" >> "$work/table.csv"
 done
-write_csv "$output/tread_pattern.csv" < "$work/table.csv"
+
+mm() { awk -v x="$1" 'BEGIN { printf "%.3g mm", 1e3 * x }'; }
+fine="$work/s$finest/spectrum_force_road-A_70kmh.csv"
+slick_ms=$(per_step "s$finest" road-A_slick)
+echo
+echo "The blocks' own compliance on $(( 120 * finest * finest )) points (the patterned tyre; the slick one $slick_ms ms per step):"
+echo "| the tread's local compliance | blocks' set-up [s] | patterned [ms per step] | ratio to slick | largest band move from the finite blocks on $(mm "$block_mesh") [dB] |"
+echo "| --- | --- | --- | --- | --- |"
+echo "blocks,setup_s,patterned_ms_per_step,ratio,blocks_dB" > "$work/blocks.csv"
+for case in "s$finest:finite blocks, $(mm "$block_mesh")" "fine_blocks:finite blocks, $(mm "$fine_mesh")" "endless:endless layer"; do
+  log=${case%%:*} label=${case#*:}
+  p=$(per_step "$log" road-A)
+  move=$(difference "$work/$log/spectrum_force_road-A_70kmh.csv" "$fine")
+  echo "| $label | $(setup_time "$log") | $p | $(ratio "$p" "$slick_ms") | $(g2 "$move") |"
+  echo "\"$label\",$(setup_time "$log"),$p,$(ratio "$p" "$slick_ms"),$move" >> "$work/blocks.csv"
+done
+# One file for the smoke test's key numbers: the grids' rows (the finite
+# blocks on the scene's mesh), then the blocks' rows on the finest grid
+# (n/a: a column of the other table).
+{
+  head -1 "$work/table.csv" | tr -d '\n'; echo ",blocks,setup_s,blocks_dB"
+  for s in "${grids[@]}"; do
+    grep "^$(( 120 * s * s ))," "$work/table.csv" |
+      sed "s/\$/,\"finite blocks, $(mm "$block_mesh")\",$(setup_time "s$s"),n\/a/"
+  done
+  tail -n +2 "$work/blocks.csv" |
+    awk -F'",' -v points=$(( 120 * finest * finest )) \
+      '{ split($2, f, ","); print points ",n/a,n/a,n/a,n/a,n/a,n/a," $1 "\"," f[1] "," f[4] }'
+} | write_csv "$output/tread_pattern.csv"
