@@ -29,10 +29,13 @@
  * the contact changes, and the carcass (the Green's functions, the modes)
  * stays the axisymmetric ring.
  *
- * **What it leaves out.** The blocks' own compliance: the contact grid's
- * local term is that of an endless tread layer (contact_grid.h), so a
- * block's edges are as stiff as its centre and a groove's sides carry no
- * shear; the grooves' air (pumping, pipe resonances). A point is in a groove
+ * **The blocks' own compliance** is in greentread/contact/tread_block.h
+ * (BlockCompliance, `Block compliance`): what a finite block adds to the
+ * endless tread layer of the contact grid, for `blocks`. With `image` the
+ * blocks are as stiff as the endless layer.
+ *
+ * **What it leaves out.** A groove's sides carry no shear; the grooves' air
+ * (pumping, pipe resonances). A point is in a groove
  * when its centre is (no partial cover), so a groove's edges are resolved to
  * a contact rectangle: the study's contact-grid error bar measures that.
  *
