@@ -44,8 +44,10 @@ namespace greentread
       AffineConstraints<double> constraints;
       SparsityPattern           pattern;
       SparseMatrix<double>      stiffness;
-      /// One load vector per rectangle: a unit force spread uniformly over it.
-      std::vector<Vector<double>> loads;
+      /// One load vector per rectangle, a unit force spread uniformly over
+      /// it: the columns of a sparse matrix, as (dof, rectangle, value).
+      std::vector<Eigen::Triplet<double>> loads;
+      Eigen::Index                        n_loads = 0;
     };
 
 
@@ -231,7 +233,7 @@ namespace greentread
       const QGauss<2> face_quadrature(3);
       FEFaceValues<3> face_values(m.fe, face_quadrature, update_values | update_JxW_values);
       Vector<double>  local_load(n);
-      m.loads.assign(rectangles.size(), Vector<double>(m.dofs.n_dofs()));
+      m.n_loads = rectangles.size();
       std::vector<double> covered(rectangles.size(), 0.);
       for (const auto &cell : m.dofs.active_cell_iterators())
         for (unsigned int f = 0; f < cell->n_faces(); ++f)
@@ -254,7 +256,9 @@ namespace greentread
                       face_values[u].value(i, q)[2] * (-1. / area) * face_values.JxW(q);
                 covered[r] += face->measure();
                 cell->get_dof_indices(indices);
-                m.constraints.distribute_local_to_global(local_load, indices, m.loads[r]);
+                for (unsigned int i = 0; i < n; ++i)
+                  if (local_load[i] != 0. && !m.constraints.is_constrained(indices[i]))
+                    m.loads.emplace_back(indices[i], r, local_load[i]);
               }
           }
       for (std::size_t r = 0; r < rectangles.size(); ++r)
@@ -300,14 +304,22 @@ namespace greentread
       if (factor.info() != Eigen::Success)
         throw NumericalError("tread block: the stiffness matrix (" + std::to_string(n) +
                              " unknowns) is not positive definite");
-      Eigen::MatrixXd B(n, m.loads.size());
-      for (std::size_t r = 0; r < m.loads.size(); ++r)
-        for (Eigen::Index i = 0; i < n; ++i)
-          B(i, r) = m.loads[r][i];
-      const Eigen::MatrixXd X = factor.solve(B);
+      // The loads are sparse (the faces of one rectangle each), and the
+      // solves go 64 loads at a time, so that memory holds the factor and
+      // little more (all at once, two blocks of 1.33 mm cells on two
+      // threads exhausted 24 GB).
+      const Eigen::Index          r = m.n_loads;
+      Eigen::SparseMatrix<double> B(n, r);
+      B.setFromTriplets(m.loads.begin(), m.loads.end());
       // The load pushes down (-z): the displacement into the block is -u_z,
       // and the load vectors carry that sign already.
-      const Eigen::MatrixXd C = B.transpose() * X;
+      Eigen::MatrixXd C(r, r);
+      for (Eigen::Index j = 0; j < r; j += 64)
+        {
+          const Eigen::Index    width = std::min<Eigen::Index>(64, r - j);
+          const Eigen::MatrixXd X     = factor.solve(Eigen::MatrixXd(B.middleCols(j, width)));
+          C.middleCols(j, width)      = B.transpose() * X;
+        }
       if (!C.allFinite())
         throw NumericalError("tread block: a compliance between its rectangles is not finite");
       return 0.5 * (C + C.transpose());
