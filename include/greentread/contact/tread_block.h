@@ -18,7 +18,8 @@
  * (deal.II): the reference for the finite blocks of a tread pattern
  * (greentread/contact/tread_pattern.h), whose contact grid otherwise sees an
  * endless tread layer (greentread/contact/elastic_layer.h). Implemented in
- * source/contact/tread_block.cc.
+ * source/contact/tread_block.cc (the block) and block_compliance.cc (the
+ * blocks in the contact).
  *
  * **The block.** An isotropic rubber prism, @p length along the road by
  * @p width across and @p height high (the grooves' depth), standing on the
