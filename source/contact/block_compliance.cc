@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 // The finite blocks of a tread pattern in the contact grid
 // (greentread/contact/tread_block.h): each block shape's table from the
@@ -31,10 +32,10 @@ namespace greentread
         : pattern(pattern_)
         , lateral(parameters.lateral_groove_width)
     {
+      // TreadPatternParameters refuses finite blocks with another pattern.
       if (parameters.pattern != "blocks")
-        throw InputError("parameter 'Tread pattern/Block compliance' = finite blocks needs "
-                         "'Tread pattern/Pattern' = blocks; it is '" +
-                         parameters.pattern + "' (allowed with it: endless layer)");
+        throw std::logic_error("BlockCompliance: the pattern is '" + parameters.pattern +
+                               "', not blocks");
       if (!(mesh_size > 0.) || !std::isfinite(mesh_size))
         throw InputError("parameter 'Tread pattern/Block mesh size' = " + format_short(mesh_size) +
                          " m; allowed: > 0");
@@ -185,20 +186,14 @@ namespace greentread
     void
     BlockState::set_position(const double s)
     {
-      const TreadPattern        &p      = blocks.pattern;
-      const std::vector<double> &starts = p.pitch_starts();
-      const std::size_t          n_ribs = blocks.ribs.size();
+      const std::size_t n_ribs = blocks.ribs.size();
       slot_shape.clear();
       slot_block.clear();
       for (std::size_t q = 0; q < points.size(); ++q)
         {
-          slot[q]      = -1;
-          double sigma = std::fmod(s + points[q][0], p.circumference());
-          if (sigma < 0.)
-            sigma += p.circumference();
-          const std::size_t k = std::max<std::ptrdiff_t>(
-            0, std::upper_bound(starts.begin(), starts.end(), sigma) - starts.begin() - 1);
-          const double along = sigma - starts[k] - blocks.lateral;
+          slot[q]                  = -1;
+          const auto [k, position] = blocks.pattern.locate(s + points[q][0]);
+          const double along       = position - blocks.lateral;
           if (along < 0.)
             continue;
           const double y = points[q][1];

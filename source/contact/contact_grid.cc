@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 namespace greentread
@@ -366,10 +367,10 @@ namespace greentread
             , blocks(blocks_)
             , coarse_load(coarse->n_points())
         {
+          // The scene refuses finite blocks with the pivoting solver.
           if (blocks != nullptr && !grid.matrix_free)
-            throw InputError("'Tread pattern/Block compliance' = finite blocks needs 'Contact "
-                             "grid/Solver' = projected CG (or auto with 'Patch model/Source' = "
-                             "fe modes); the pivoting solver's compliance is fixed");
+            throw std::logic_error("make_grid_convolution: finite blocks need the matrix-free "
+                                   "solver");
           const convolution::PatchInfluence &c = coarse->influence();
           psi.instantaneous                    = true;
           if (grid.matrix_free)
@@ -510,8 +511,7 @@ namespace greentread
       if (!grid.matrix_free && blocks == nullptr)
         return start_contact(grid.compliance(coarse_static), tread, road, setup);
       if (!grid.matrix_free)
-        throw InputError("'Tread pattern/Block compliance' = finite blocks needs 'Contact "
-                         "grid/Solver' = projected CG; the pivoting solver's compliance is fixed");
+        throw std::logic_error("start_grid_contact: finite blocks need the matrix-free solver");
       const SymmetricOperator W = [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
         grid.apply(coarse_static, x, y);
         if (blocks != nullptr)

@@ -139,15 +139,23 @@ namespace greentread
 
 
 
-    bool
-    TreadPattern::in_groove(const double sigma, const double y) const
+    TreadPattern::Place
+    TreadPattern::locate(const double sigma) const
     {
       double s = std::fmod(sigma, total);
       if (s < 0.)
         s += total;
       const std::size_t k = std::max<std::ptrdiff_t>(
         0, std::upper_bound(starts.begin(), starts.end(), s) - starts.begin() - 1);
-      const double along = s - starts[k];
+      return {k, s - starts[k]};
+    }
+
+
+
+    bool
+    TreadPattern::in_groove(const double sigma, const double y) const
+    {
+      const auto [k, along] = locate(sigma);
       if (!footprint.image.empty())
         {
           const auto  &rows = footprint.image;

@@ -218,7 +218,8 @@ namespace greentread
      * @param[in] blocks A tread pattern's finite blocks at the run's patch
      *            position (the road's heights set it before each step's
      *            solve), added to the local term; nullptr: none.
-     * @throws InputError if @p blocks is given with the `pivoting` solver.
+     * @throws std::logic_error if @p blocks is given with the `pivoting`
+     *         solver (the scene refuses that).
      */
     std::unique_ptr<convolution::PatchConvolution>
     make_grid_convolution(std::unique_ptr<convolution::PatchConvolution> coarse,
@@ -229,6 +230,8 @@ namespace greentread
      * @brief contact::start_contact() on the grid: the static compliance
      * \f$A^T G_0 A\f$ + the local term (+ the finite @p blocks' at the start),
      * by the grid's solver.
+     * @throws std::logic_error if @p blocks is given with the `pivoting`
+     *         solver.
      */
     StaticContact
     start_grid_contact(const ContactGrid      &grid,

@@ -24,15 +24,15 @@
  * **The block.** An isotropic rubber prism, @p length along the road by
  * @p width across and @p height high (the grooves' depth), standing on the
  * undertread, a slab @p base thick that reaches @p margin_along beyond the
- * block's ends and @p margin_across beyond its sides (half the grooves'
- * widths) and is bonded to the belt (rigid: it
- * is a hundred times stiffer than the rubber). The slab's own sides slide
- * (no normal displacement): it goes on under the next block, taken as this
- * one's mirror image. The block's sides and the top are free: the block's
- * sides bulge. Without the grooves (@p grooves false, or margins 0), the
- * box is one period of an endless layer under a periodic load: what the
- * contact grid's layer kernel (elastic_layer.h) gives in closed form. Coordinates: x along from the
- * block's corner, y across from it, z up from the belt; the top at z = base + height.
+ * block's ends and @p margin_across beyond its sides, bonded to the belt
+ * (rigid: it is a hundred times stiffer than the rubber). The slab's own
+ * sides slide (no normal displacement): a mirror plane. The block's sides
+ * and the top are free: the block's sides bulge. Without the grooves
+ * (@p grooves false, or margins 0), the box is one period of an endless
+ * layer under a periodic load: what the contact grid's layer kernel
+ * (elastic_layer.h) gives in closed form. Coordinates: x along from the
+ * block's corner, y across from it, z up from the belt; the top at
+ * z = base + height.
  *
  * **What it gives.** Rectangles of the top are loaded one at a time by a
  * unit force spread uniformly over each; C(i, j) is the mean displacement
@@ -42,10 +42,11 @@
  * same functional) and positive definite.
  *
  * **The discretisation.** Hexahedra of degree 2 (27 nodes; rubber at
- * nu = 0.49 does not lock them), about @p cell_size on a side; the mesh's
- * lines pass through every rectangle's edges, so each rectangle is a union of
- * faces and its load is integrated exactly. One sparse LU factorisation
- * (UMFPACK), one back substitution per rectangle.
+ * nu = 0.49 does not lock them), about @p cell_size on a side (twice that in
+ * the margins); the mesh's lines pass through every rectangle's edges, so
+ * each rectangle is a union of faces and its load is integrated exactly.
+ * One sparse Cholesky factor (CHOLMOD, supernodal), the loads solved 64 at
+ * a time.
  *
  * **The finite blocks in the contact** (BlockCompliance). The contact grid's
  * local term is the endless layer's (contact_grid.h). A `blocks` pattern
@@ -54,20 +55,22 @@
  * mesh (the grooves' cells removed, or kept), between the rectangles of a
  * table over the block's top (about @p mesh_size each, one cell each). The
  * block stands alone on an undertread that reaches twice the tread's
- * thickness beyond it (cells twice as large there): with the margins of
- * half a groove, the ungrooved model's mirror images at its walls lowered
- * its compliance (a nearly incompressible layer rises around a load) by
- * 8% of the endless layer's, an error the difference did not cancel. The
- * mesh's own error largely cancels in the difference, and removing cells
- * can only soften a finite-element model, so \f$\Delta C\f$ is symmetric
- * positive semidefinite and the contact points' compliance stays positive
- * definite. Left out: the blocks' coupling to each other stays the
- * endless layer's (through the rubber under a groove). A contact point takes the table rectangle
- * its centre lies in, in the block under it at the pattern's position (the blocks move with the
- * road, tread_pattern.h), so contact points i, j on one block get \f$\Delta C_{IJ}\f$ of their
- * rectangles I, J: the table spread piecewise constant over the contact points, as the Green's
- * functions' compliance is over the coarse cells. One table per block shape (pitch length and rib
- * width); a rib at the tread's edge is a block there too.
+ * thickness beyond it: with margins of half a groove, the ungrooved
+ * model's mirror images at its walls lowered its compliance (a nearly
+ * incompressible layer rises around a load) by 8% of the endless layer's,
+ * an error the difference did not cancel. The mesh's own error largely
+ * cancels in the difference, and removing cells can only soften a
+ * finite-element model, so \f$\Delta C\f$ is symmetric positive
+ * semidefinite and the contact points' compliance stays positive definite.
+ * A contact point takes the table rectangle its centre lies in, in the
+ * block under it at the pattern's position (the blocks move with the road,
+ * tread_pattern.h), so contact points i, j on one block get
+ * \f$\Delta C_{IJ}\f$ of their rectangles I, J: the table spread piecewise
+ * constant over the contact points, as the Green's functions' compliance is
+ * over the coarse cells. One table per block shape (pitch length and rib
+ * width); a rib at the tread's edge is a block there too. Left out: the
+ * blocks' coupling to each other stays the endless layer's (through the
+ * rubber under a groove).
  */
 
 namespace greentread
@@ -158,8 +161,8 @@ namespace greentread
        * @param[in] mesh_size The table's rectangles and the mesh's cells [m].
        * @param[in] n_threads The shapes computed side by side.
        * @param[in] progress Whether to print a line per block shape.
-       * @throws InputError if the pattern is not `blocks` or a size is not
-       *         positive.
+       * @throws InputError if a size is not positive; std::logic_error if
+       *         the pattern is not `blocks` (its parameters refuse that).
        */
       BlockCompliance(const TreadPattern           &pattern,
                       const TreadPatternParameters &parameters,

@@ -74,6 +74,18 @@ namespace greentread
        */
       TreadPattern(const TreadPatternParameters &parameters, double radius);
 
+      /// A tread point's pitch and its distance from the pitch's start [m].
+      struct Place
+      {
+        std::size_t pitch = 0;
+        double      along = 0.;
+      };
+
+      /// The place of the tread point at arc length @p sigma [m] (any
+      /// sign: the pattern repeats round the circumference).
+      Place
+      locate(double sigma) const;
+
       /// Whether the tread point at arc length @p sigma [m] and @p y [m]
       /// across lies in a groove.
       bool
