@@ -277,8 +277,8 @@ namespace greentread
                                  unsigned(model.points.size())),
         contact_grid.candidate_set(), contact_grid.tolerance);
       const analysis::PatchLattice lattice(grid.points, h5.string());
-      const Eigen::VectorXd        tread = contact::tread_heights(grid.points);
-      const Eigen::MatrixXd        G0    = synthesis::static_line(G);
+      const Eigen::VectorXd        heights = contact::tread_heights(grid.points);
+      const Eigen::MatrixXd        G0      = synthesis::static_line(G);
       report_contact_setup(grid, model, G0);
 
       // The study: every road at every speed, and the error bars' levels.
@@ -297,39 +297,17 @@ namespace greentread
       std::vector<double>                           mpd;
       make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads,
                  mpd);
-      // The tread pattern on the contact points' radius, for every level.
-      std::unique_ptr<contact::TreadPattern> pattern;
-      if (tread_pattern.enabled())
-        {
-          pattern = std::make_unique<contact::TreadPattern>(tread_pattern, grid.points[0][2]);
-          std::cout << "Tread pattern '" << tread_pattern.pattern << "': " << pattern->summary()
-                    << "\n";
-        }
-      std::vector<const contact::TreadPattern *> patterns;
-      for (const auto &r : run_roads)
-        patterns.push_back(patterned(r) ? pattern.get() : nullptr);
-      // Its blocks' own compliance, once for every level (the table does
-      // not depend on the contact grid).
-      std::unique_ptr<contact::BlockCompliance> blocks;
-      if (pattern && tread_pattern.finite_blocks())
-        {
-          std::cout << "Finite tread blocks (3D finite elements, cells of "
-                    << format_number(1e3 * tread_pattern.block_mesh_size) << " mm):\n";
-          const auto set_up = std::chrono::steady_clock::now();
-          blocks            = std::make_unique<contact::BlockCompliance>(
-            *pattern, tread_pattern, tread_layer(), geometry.tread_width,
-            tread_pattern.block_mesh_size, dealii::MultithreadInfo::n_threads(), true);
-          std::cout << "  " << blocks->summary() << " (set up in "
-                    << format_printf("%.3g", base::seconds_since(set_up)) << " s)\n";
-        }
-      const analysis::RunLevel fine{
-        &model, &grid, &G0, &tread, &lattice, pointers(fine_roads), patterns, blocks.get()};
-      analysis::RunLevels levels{fine, {}};
+      const TreadStage         tread = tread_stage(grid.points[0][2]);
+      const analysis::RunLevel fine{&model,        &grid,
+                                    &G0,           &heights,
+                                    &lattice,      pointers(fine_roads),
+                                    tread.of_road, tread.blocks.get()};
+      analysis::RunLevels      levels{fine, {}};
       if (coarser.grid)
         levels.other[analysis::Discretisation::contact_grid] = {
           &model,         coarser.grid.get(),    &G0,
           &coarser.tread, coarser.lattice.get(), pointers(coarser_roads),
-          patterns,       blocks.get()};
+          tread.of_road,  tread.blocks.get()};
       if (coarser_model)
         levels.other[analysis::Discretisation::mode_cutoff] =
           with_model(fine, coarser_model->model);

@@ -3,6 +3,7 @@
 #include <greentread/base/exceptions.h>
 #include <greentread/base/output.h>
 #include <greentread/base/parameters.h>
+#include <greentread/base/progress.h>
 #include <greentread/modal/passivity.h>
 #include <greentread/periodic/green_stage.h>
 #include <greentread/scenes/tyre_road_contact_scene.h>
@@ -10,6 +11,9 @@
 #include <greentread/synthesis/mode_synthesis.h>
 #include <greentread/synthesis/mode_truncation.h>
 
+#include <deal.II/base/multithread_info.h>
+
+#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -130,6 +134,9 @@ namespace greentread
         }
       return synthesis::to_patch_model(synthesis, E, G.df * (G.n_lines - 1));
     }
+
+
+
     std::optional<TyreRoadContactScene::CoarserSection>
     TyreRoadContactScene::coarser_section(const std::filesystem::path &directory,
                                           const base::ParameterRecord &record) const
@@ -176,6 +183,36 @@ namespace greentread
                 << format_printf("%.3g", section.factor) << " times the level difference (order "
                 << format_number(analysis::ring_section_order) << " in the mesh size)\n";
       return section;
+    }
+
+
+
+    TyreRoadContactScene::TreadStage
+    TyreRoadContactScene::tread_stage(const double radius) const
+    {
+      TreadStage stage;
+      if (!tread_pattern.enabled())
+        {
+          stage.of_road.assign(run_roads.size(), nullptr);
+          return stage;
+        }
+      stage.pattern = std::make_unique<contact::TreadPattern>(tread_pattern, radius);
+      std::cout << "Tread pattern '" << tread_pattern.pattern << "': " << stage.pattern->summary()
+                << "\n";
+      for (const auto &r : run_roads)
+        stage.of_road.push_back(patterned(r) ? stage.pattern.get() : nullptr);
+      if (tread_pattern.finite_blocks())
+        {
+          std::cout << "Finite tread blocks (3D finite elements, cells of "
+                    << format_number(1e3 * tread_pattern.block_mesh_size) << " mm):\n";
+          const auto set_up = std::chrono::steady_clock::now();
+          stage.blocks      = std::make_unique<contact::BlockCompliance>(
+            *stage.pattern, tread_pattern, tread_layer(), geometry.tread_width,
+            tread_pattern.block_mesh_size, dealii::MultithreadInfo::n_threads(), true);
+          std::cout << "  " << stage.blocks->summary() << " (set up in "
+                    << format_printf("%.3g", base::seconds_since(set_up)) << " s)\n";
+        }
+      return stage;
     }
   } // namespace scenes
 } // namespace greentread

@@ -10,6 +10,7 @@
 #include <greentread/contact/elastic_layer.h>
 #include <greentread/contact/rolling.h>
 #include <greentread/contact/rolling_parameters.h>
+#include <greentread/contact/tread_block.h>
 #include <greentread/contact/tread_pattern.h>
 #include <greentread/fe/material.h>
 #include <greentread/geometry/tyre_cell.h>
@@ -143,7 +144,6 @@ namespace greentread
                  const std::filesystem::path &directory,
                  const base::ParameterRecord &record) const;
 
-      /// The roads of the study, with how far their runs may roll on @p grid.
       /// Stage radiation: the sound of every road and speed from its runs'
       /// forces at the Green's-function points (@p job_spectra, one per job
       /// of @p study), at the points of @p model.
@@ -154,8 +154,23 @@ namespace greentread
                   const std::filesystem::path              &directory,
                   const base::ParameterRecord              &record) const;
 
+      /// The roads of the study, with how far their runs may roll on @p grid.
       std::vector<analysis::StudyRoad>
       study_roads(const contact::ContactGrid &grid) const;
+
+      /// The tread pattern of every level's runs, and its finite blocks.
+      struct TreadStage
+      {
+        std::unique_ptr<contact::TreadPattern>    pattern;
+        std::unique_ptr<contact::BlockCompliance> blocks; ///< with finite blocks
+        /// Per road of run_roads: the pattern, or nullptr (slick).
+        std::vector<const contact::TreadPattern *> of_road;
+      };
+      /// The pattern on the contact points' @p radius [m], and its blocks'
+      /// compliance (once for every level: it does not depend on the contact
+      /// grid); each printed. Empty when the tyre is slick.
+      TreadStage
+      tread_stage(double radius) const;
 
       /// Stage road: each road of @p study (a texture file, or made as long
       /// as its runs need), its report written in @p directory, and its
