@@ -12,10 +12,12 @@ namespace greentread
     {
       /// The candidate set is solved on while |N|^2 <= dense_limit n: its
       /// products cost |N|^2, the whole grid's FFT products about n log n.
-      /// Chosen on the main job's 7680-point grid, where the crossover was
-      /// near |N| = 510 (CHANGELOG.md); the runs of
+      /// On the main job's 7680-point grid: |N| up to 700. A tread
+      /// pattern's finite blocks, softer, bring up to 620 points into
+      /// contact on road-A, and on the whole grid their step cost 10.4 ms
+      /// against 7.8 on the set (benchmarks/tread_pattern); the runs of
       /// benchmarks/contact_solvers/contact_solvers.sh show both sides.
-      constexpr double dense_limit = 34.;
+      constexpr double dense_limit = 64.;
     } // namespace
 
 
@@ -49,11 +51,16 @@ namespace greentread
         *report = {unsigned(joined.size()), unsigned(joined.size()), false};
       Eigen::VectorXd z =
         start.size() == n ? Eigen::VectorXd(start.cwiseMax(0.)) : Eigen::VectorXd::Zero(n);
-      LcpResult              result;
-      unsigned int           products = 0;
-      Eigen::MatrixXd        M, back, corner;
-      Eigen::VectorXd        q_set, z_set, w(n);
-      constexpr unsigned int max_rounds = 50;
+      LcpResult       result;
+      unsigned int    products = 0;
+      Eigen::MatrixXd M, back, corner;
+      Eigen::VectorXd q_set, z_set, w(n);
+      // |M|'s row sums: their largest bounds ||M||_2 (M is symmetric), and
+      // on a few hundred candidates it is far below the whole grid's norm,
+      // so the reduced solve takes longer projected steps.
+      Eigen::VectorXd        row_sums;
+      ProjectedCgOptions     reduced_options = options;
+      constexpr unsigned int max_rounds      = 50;
       for (unsigned int round = 0; round < max_rounds; ++round)
         {
           const double size = set.size() + joined.size();
@@ -79,6 +86,11 @@ namespace greentread
               M.conservativeResize(m, m);
               M.bottomLeftCorner(m - old, old)      = back;
               M.bottomRightCorner(m - old, m - old) = corner;
+              row_sums.conservativeResize(m);
+              row_sums.head(old) += back.cwiseAbs().colwise().sum().transpose();
+              row_sums.tail(m - old) =
+                back.cwiseAbs().rowwise().sum() + corner.cwiseAbs().rowwise().sum();
+              reduced_options.operator_norm = std::min(options.operator_norm, row_sums.maxCoeff());
               set.insert(set.end(), joined.begin(), joined.end());
               joined.clear();
             }
@@ -97,7 +109,7 @@ namespace greentread
                 [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
                   y.noalias() = M.selfadjointView<Eigen::Lower>() * x;
                 },
-                q_set, z_set, options);
+                q_set, z_set, reduced_options);
               products += reduced.iterations;
               z.setZero();
               for (Eigen::Index k = 0; k < m; ++k)
