@@ -11,7 +11,8 @@ namespace greentread
     namespace
     {
       constexpr Discretisation all[] = {Discretisation::time_step, Discretisation::contact_grid,
-                                        Discretisation::mode_cutoff, Discretisation::ring_section};
+                                        Discretisation::mode_cutoff, Discretisation::ring_section,
+                                        Discretisation::block_mesh};
     } // namespace
 
 
@@ -29,6 +30,8 @@ namespace greentread
             return "mode_cutoff";
           case Discretisation::ring_section:
             return "ring_section";
+          case Discretisation::block_mesh:
+            return "block_mesh";
         }
       return "";
     }
@@ -59,14 +62,17 @@ namespace greentread
       prm.enter_subsection("Error bars");
       {
         prm.declare_entry(
-          "Estimates", "time step, contact grid, mode cutoff, ring section",
-          dealii::Patterns::MultipleSelection("time step|contact grid|mode cutoff|ring section"),
+          "Estimates", "time step, contact grid, mode cutoff, ring section, block mesh",
+          dealii::Patterns::MultipleSelection(
+            "time step|contact grid|mode cutoff|ring section|block mesh"),
           "The discretisations whose error each band level gets an estimate of, each from one "
           "other level on the saved stages: 'time step' (the scene's step halved; the "
           "low-rate run's bands against the run at the scene's step, no extra run), 'contact "
           "grid' ('Contact grid/Subdivisions' halved), 'mode cutoff' (the modes up to 'Coarser "
           "mode cutoff' times 'Patch model/Mode cutoff'), 'ring section' ('Geometry/Mesh size' "
-          "doubled: its own Green's functions and modes, saved in coarser_section/). The "
+          "doubled: its own Green's functions and modes, saved in coarser_section/), 'block "
+          "mesh' (with finite tread blocks, 'Tread pattern/Block mesh size' times 3/2; the "
+          "patterned runs only). The "
           "estimate is the level difference scaled by the order (doc/methods/analysis.md); "
           "spectra.csv gives each, and their combination with the standard error. Empty: no "
           "estimate, no extra run.");

@@ -108,6 +108,8 @@ namespace greentread
                 }
               else if (d == Discretisation::ring_section)
                 e.factor = richardson_factor(2., ring_section_order);
+              else if (d == Discretisation::block_mesh)
+                e.factor = richardson_factor(block_mesh_ratio, block_mesh_order);
               // Whole steps of the other level, both levels over the same
               // record (the window: the other run's duration, whole steps
               // of the run's own step too).
@@ -266,6 +268,8 @@ namespace greentread
                 parameter = "'Contact grid/Subdivisions'";
               else if (name == label(Discretisation::ring_section))
                 parameter = "'Geometry/Mesh size'";
+              else if (name == label(Discretisation::block_mesh))
+                parameter = "'Tread pattern/Block mesh size'";
               std::string what = name;
               std::replace(what.begin(), what.end(), '_', ' ');
               consider(what, parameter, error[b], f);

@@ -86,6 +86,8 @@ namespace greentread
                     e.what == Discretisation::time_step || e.what == Discretisation::contact_grid;
                   if (!own_inputs && factor == factors.end())
                     continue;
+                  if (e.what == Discretisation::block_mesh && !roads[r].finite_blocks)
+                    continue;
                   if (factor != factors.end())
                     e.factor = factor->second;
                   if (e.run.steps > 0)

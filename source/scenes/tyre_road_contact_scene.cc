@@ -281,8 +281,14 @@ namespace greentread
       const Eigen::MatrixXd        G0      = synthesis::static_line(G);
       report_contact_setup(grid, model, G0);
 
+      // The tread pattern and its finite blocks, for every level.
+      const TreadStage tread = tread_stage(grid.points[0][2]);
+
       // The study: every road at every speed, and the error bars' levels.
       std::map<analysis::Discretisation, double> factors;
+      if (tread.coarser_blocks)
+        factors[analysis::Discretisation::block_mesh] =
+          analysis::richardson_factor(analysis::block_mesh_ratio, analysis::block_mesh_order);
       if (coarser_model)
         factors[analysis::Discretisation::mode_cutoff] = coarser_model->factor;
       if (section)
@@ -297,7 +303,6 @@ namespace greentread
       std::vector<double>                           mpd;
       make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads,
                  mpd);
-      const TreadStage         tread = tread_stage(grid.points[0][2]);
       const analysis::RunLevel fine{&model,        &grid,
                                     &G0,           &heights,
                                     &lattice,      pointers(fine_roads),
@@ -314,6 +319,12 @@ namespace greentread
       if (section)
         levels.other[analysis::Discretisation::ring_section] =
           with_model(fine, section->model, &section->G0);
+      if (tread.coarser_blocks)
+        {
+          analysis::RunLevel coarser_blocks                  = fine;
+          coarser_blocks.blocks                              = tread.coarser_blocks.get();
+          levels.other[analysis::Discretisation::block_mesh] = coarser_blocks;
+        }
 
       // Stage contact: the runs, side by side (base::for_each_index()).
       const std::vector<analysis::RunSpectrum> job_spectra =
@@ -483,7 +494,8 @@ namespace greentread
               std::min(
                 spectra.longest_distance,
                 road::PatchRoad(file->second, grid.points, roads.sampling, name).usable_length());
-          study_roads.push_back({name, road_spacing(name), longest, file != texture_files.end()});
+          study_roads.push_back({name, road_spacing(name), longest, file != texture_files.end(),
+                                 patterned(name) && tread_pattern.finite_blocks()});
         }
       return study_roads;
     }

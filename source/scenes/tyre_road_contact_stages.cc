@@ -201,17 +201,25 @@ namespace greentread
                 << "\n";
       for (const auto &r : run_roads)
         stage.of_road.push_back(patterned(r) ? stage.pattern.get() : nullptr);
-      if (tread_pattern.finite_blocks())
-        {
-          std::cout << "Finite tread blocks (3D finite elements, cells of "
-                    << format_number(1e3 * tread_pattern.block_mesh_size) << " mm):\n";
-          const auto set_up = std::chrono::steady_clock::now();
-          stage.blocks      = std::make_unique<contact::BlockCompliance>(
-            *stage.pattern, tread_pattern, tread_layer(), geometry.tread_width,
-            tread_pattern.block_mesh_size, dealii::MultithreadInfo::n_threads(), true);
-          std::cout << "  " << stage.blocks->summary() << " (set up in "
-                    << format_printf("%.3g", base::seconds_since(set_up)) << " s)\n";
-        }
+      if (!tread_pattern.finite_blocks())
+        return stage;
+      const auto blocks = [&](const double mesh_size, const std::string &what) {
+        std::cout << "Finite tread blocks" << what << " (3D finite elements, cells of "
+                  << format_number(1e3 * mesh_size) << " mm):\n";
+        const auto set_up = std::chrono::steady_clock::now();
+        auto       made   = std::make_unique<contact::BlockCompliance>(
+          *stage.pattern, tread_pattern, tread_layer(), geometry.tread_width, mesh_size,
+          dealii::MultithreadInfo::n_threads(), true);
+        std::cout << "  " << made->summary() << " (set up in "
+                  << format_printf("%.3g", base::seconds_since(set_up)) << " s)\n";
+        return made;
+      };
+      stage.blocks = blocks(tread_pattern.block_mesh_size, "");
+      if (error_bars.estimates_any(analysis::Discretisation::block_mesh))
+        stage.coarser_blocks =
+          blocks(analysis::block_mesh_ratio * tread_pattern.block_mesh_size,
+                 ", the error bar's coarser level ('Error bars/Estimates' = block mesh; order " +
+                   format_number(analysis::block_mesh_order) + " assumed)");
       return stage;
     }
   } // namespace scenes

@@ -8,10 +8,13 @@
 //   the contact grid's from the subdivisions halved, against the measured
 //   difference from a run refined further in that discretisation, within a
 //   factor 2 over the bands from 250 Hz (the rms over the bands: a single
-//   band's difference between two runs can pass through zero).
+//   band's difference between two runs can pass through zero);
+// - the study plans the finite tread blocks' coarser level on the patterned
+//   roads only.
 #include "synthetic_patch.h"
 
 #include <greentread/analysis/error_bars.h>
+#include <greentread/analysis/study.h>
 #include <greentread/analysis/third_octave.h>
 #include <greentread/base/exceptions.h>
 #include <greentread/contact/contact_grid.h>
@@ -24,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -191,7 +195,7 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
   plan[1].f_high    = 1000.;
   const analysis::ErrorBarParameters parameters;
   const auto estimates = analysis::plan_estimate_runs(plan, parameters, 250., V, 8);
-  BOOST_TEST_REQUIRE(estimates.size() == 8u);
+  BOOST_TEST_REQUIRE(estimates.size() == 10u);
   const auto band = [](const double f) {
     return analysis::third_octave_bands(f, f)[0];
   };
@@ -227,6 +231,9 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
       // observed 0.86 to 1.62), written here and not taken from the program.
       if (e.what == analysis::Discretisation::ring_section)
         BOOST_TEST(e.factor == 1. / (std::pow(2., 1.5) - 1.), boost::test_tools::tolerance(1e-12));
+      // The blocks' mesh 3/2 as coarse, order 1 assumed: 1 / (3/2 - 1).
+      else if (e.what == analysis::Discretisation::block_mesh)
+        BOOST_TEST(e.factor == 2., boost::test_tools::tolerance(1e-12));
       else if (e.what != analysis::Discretisation::mode_cutoff)
         BOOST_TEST(e.factor == (step ? 4. / 3. : 1. / (std::pow(2., 1.5) - 1.)),
                    boost::test_tools::tolerance(1e-12));
@@ -247,6 +254,40 @@ BOOST_AUTO_TEST_CASE(the_coarser_runs_of_the_main_jobs_plan)
   // One subdivision: no coarser grid.
   for (const auto &e : analysis::plan_estimate_runs(plan, parameters, 250., V, 1))
     BOOST_TEST(label(e.what) != "contact_grid");
+}
+
+BOOST_AUTO_TEST_CASE(the_blocks_mesh_estimate_only_on_patterned_runs)
+{
+  // A patterned road with finite blocks beside the same road rolled slick:
+  // the study plans the blocks' coarser level for the first only, and for
+  // neither when the scene has no coarser blocks (no factor for it).
+  std::vector<analysis::StudyRoad> roads(2);
+  roads[0] = {"road-A", 3.84e-4, 2., false, true};
+  roads[1] = {"road-A_slick", 3.84e-4, 2., false, false};
+  contact::RollingParameters rolling;
+  rolling.speeds = {70.};
+  analysis::SpectraParameters spectra;
+  spectra.low_bands_up_to = 0.;
+  analysis::ErrorBarParameters error_bars;
+  error_bars.estimates = {analysis::Discretisation::block_mesh};
+  const auto count     = [&](const std::map<analysis::Discretisation, double> &factors) {
+    std::array<unsigned int, 2> per_road{};
+    const analysis::Study       study =
+      analysis::plan_study(roads, rolling, spectra, error_bars, 8, factors);
+    for (const analysis::StudyCase &c : study.cases)
+      for (const auto &e : c.estimates)
+        {
+          BOOST_TEST((e.what == analysis::Discretisation::block_mesh));
+          BOOST_TEST(e.factor == 2.);
+          ++per_road[c.road];
+        }
+    return per_road;
+  };
+  const auto with = count({{analysis::Discretisation::block_mesh, 2.}});
+  BOOST_TEST(with[0] == 1u);
+  BOOST_TEST(with[1] == 0u);
+  const auto without = count({});
+  BOOST_TEST(without[0] + without[1] == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(the_time_steps_estimate_against_a_refined_step)

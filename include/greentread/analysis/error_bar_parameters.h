@@ -10,7 +10,8 @@
  * The parameters of the discretisation error bars (subsection "Error bars"):
  * which discretisations get an estimate, how long the coarser runs roll and
  * how coarse the modes' level is (the ring section's coarser level is
- * 'Geometry/Mesh size' doubled). The method is in analysis/error_bars.h.
+ * 'Geometry/Mesh size' doubled, the finite tread blocks' 'Tread
+ * pattern/Block mesh size' times 3/2). The method is in analysis/error_bars.h.
  */
 
 namespace greentread
@@ -23,7 +24,8 @@ namespace greentread
       time_step,
       contact_grid,
       mode_cutoff,
-      ring_section
+      ring_section,
+      block_mesh
     };
 
     /// Subsection "Error bars".
@@ -32,7 +34,7 @@ namespace greentread
       /// The discretisations estimated, in the order of 'Estimates'.
       std::vector<Discretisation> estimates = {
         Discretisation::time_step, Discretisation::contact_grid, Discretisation::mode_cutoff,
-        Discretisation::ring_section};
+        Discretisation::ring_section, Discretisation::block_mesh};
       /// The Fourier lines the lowest band of a coarser run's window holds.
       unsigned int window_lines = 4;
       /// The coarser level's mode cut-off over 'Patch model/Mode cutoff'.
@@ -47,13 +49,13 @@ namespace greentread
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// "time_step", "contact_grid", "mode_cutoff", "ring_section": a
-    /// column's name part.
+    /// "time_step", "contact_grid", "mode_cutoff", "ring_section",
+    /// "block_mesh": a column's name part.
     std::string
     label(Discretisation d);
 
-    /// "time step", "contact grid", "mode cutoff", "ring section": as
-    /// 'Estimates' names it.
+    /// "time step", "contact grid", "mode cutoff", "ring section", "block
+    /// mesh": as 'Estimates' names it.
     std::string
     describe(Discretisation d);
   } // namespace analysis

@@ -45,6 +45,13 @@ namespace greentread
     /// did not choose it, another tyre section, 1.18 and 1.14 (observed order
     /// 1.11 and 1.06).
     constexpr double ring_section_order = 1.5;
+    /// The finite tread blocks' coarser level: 'Tread pattern/Block mesh
+    /// size' times this, and the order assumed in it: 1, below the
+    /// elements' own, for the blocks' edges and corners are singular
+    /// (benchmarks/tread_pattern gives the order the band levels show over
+    /// three levels).
+    constexpr double block_mesh_ratio = 1.5;
+    constexpr double block_mesh_order = 1.;
 
     /// Richardson's factor: the finer level's error is
     /// |L_coarse - L_fine| / (ratio^order - 1) for a coarsening by @p ratio.

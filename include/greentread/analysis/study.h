@@ -75,6 +75,9 @@ namespace greentread
       /// less for a texture file.
       double longest_distance = 0.;
       bool   from_file        = false;
+      /// Whether its runs roll a pattern's finite tread blocks (the only
+      /// runs with a 'block mesh' estimate).
+      bool finite_blocks = false;
     };
 
     /// One road at one speed: its band runs and their other levels.

@@ -163,12 +163,16 @@ namespace greentread
       {
         std::unique_ptr<contact::TreadPattern>    pattern;
         std::unique_ptr<contact::BlockCompliance> blocks; ///< with finite blocks
+        /// With 'Error bars/Estimates' holding 'block mesh': the blocks on
+        /// the mesh analysis::block_mesh_ratio times as coarse.
+        std::unique_ptr<contact::BlockCompliance> coarser_blocks;
         /// Per road of run_roads: the pattern, or nullptr (slick).
         std::vector<const contact::TreadPattern *> of_road;
       };
       /// The pattern on the contact points' @p radius [m], and its blocks'
       /// compliance (once for every level: it does not depend on the contact
-      /// grid); each printed. Empty when the tyre is slick.
+      /// grid), and their coarser level for the error bar; each printed.
+      /// Empty when the tyre is slick.
       TreadStage
       tread_stage(double radius) const;
 
