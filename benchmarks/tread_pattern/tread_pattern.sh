@@ -92,6 +92,13 @@ run_saved endless "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
   --set "Tread pattern/Block compliance=endless layer" --set "Tread pattern/Compare with slick=false"
 run_saved fine_blocks "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
   --set "Tread pattern/Block mesh size=$fine_mesh" --set "Tread pattern/Compare with slick=false"
+coarse_mesh=$(awk -v h="$block_mesh" 'BEGIN { printf "%.6g", h * 3 / 2 }')
+run_saved coarse_blocks "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
+  --set "Tread pattern/Block mesh size=$coarse_mesh" --set "Tread pattern/Compare with slick=false"
+# The scene's error bar of the blocks' mesh (its level on the mesh 3/2 as
+# coarse), on the same record.
+run_saved estimate "${common[@]}" --set "Contact grid/Subdivisions=$finest" \
+  --set "Tread pattern/Compare with slick=false" --set "Error bars/Estimates=block mesh"
 
 g2() { awk -v x="$1" 'BEGIN { printf "%.2g", x }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
@@ -118,13 +125,31 @@ echo "The blocks' own compliance on $(( 120 * finest * finest )) points (the pat
 echo "| the tread's local compliance | blocks' set-up [s] | patterned [ms per step] | ratio to slick | largest band move from the finite blocks on $(mm "$block_mesh") [dB] |"
 echo "| --- | --- | --- | --- | --- |"
 echo "blocks,setup_s,patterned_ms_per_step,ratio,blocks_dB" > "$work/blocks.csv"
-for case in "s$finest:finite blocks, $(mm "$block_mesh")" "fine_blocks:finite blocks, $(mm "$fine_mesh")" "endless:endless layer"; do
+for case in "coarse_blocks:finite blocks, $(mm "$coarse_mesh")" "s$finest:finite blocks, $(mm "$block_mesh")" \
+  "fine_blocks:finite blocks, $(mm "$fine_mesh")" "endless:endless layer"; do
   log=${case%%:*} label=${case#*:}
   p=$(per_step "$log" road-A)
   move=$(difference "$work/$log/spectrum_force_road-A_70kmh.csv" "$fine")
   echo "| $label | $(setup_time "$log") | $p | $(ratio "$p" "$slick_ms") | $(g2 "$move") |"
   echo "\"$label\",$(setup_time "$log"),$p,$(ratio "$p" "$slick_ms"),$move" >> "$work/blocks.csv"
 done
+# The blocks' mesh over its three levels, band by band from 250 Hz (the
+# bands the error bars cover): the rms of the differences between
+# successive levels, the order they show, and the scene's estimate of the
+# middle level's error against its difference from the finest.
+mesh_order=$(awk -F, -v from=250 -v ratio=1.5 'FNR == 1 { file++ }
+    file == 4 && FNR == 2 { for (i = 1; i <= NF; i++) if ($i == "block_mesh_dB") column = i }
+    /^[0-9]/ && $1 >= from { l[file, $1] = $6; if (file == 1) bands[$1] = 1; if (file == 4) e[$1] = $column }
+    END {
+      if (!column) { print "tread_pattern.sh: no block_mesh_dB column in the estimate run" > "/dev/stderr"; exit 1 }
+      for (f in bands) { a = l[1, f] - l[2, f]; b = l[2, f] - l[3, f]; sa += a * a; sb += b * b; se += e[f] * e[f]; n++ }
+      sa = sqrt(sa / n); sb = sqrt(sb / n); se = sqrt(se / n)
+      printf "%.6e,%.6e,%.3f,%.6e,%.3f", sa, sb, log(sa / sb) / log(ratio), se, se / sb }' \
+  "$work/coarse_blocks/spectrum_force_road-A_70kmh.csv" "$fine" \
+  "$work/fine_blocks/spectrum_force_road-A_70kmh.csv" "$work/estimate/spectrum_force_road-A_70kmh.csv")
+IFS=, read -r coarse_move fine_move observed_order estimate_rms estimate_ratio <<< "$mesh_order"
+echo
+echo "The blocks' mesh, force bands from 250 Hz (rms over the bands): $(mm "$coarse_mesh") to $(mm "$block_mesh") moved them $(g2 "$coarse_move") dB, $(mm "$block_mesh") to $(mm "$fine_mesh") $(g2 "$fine_move") dB: observed order $observed_order; the scene's error bar on $(mm "$block_mesh") ('Error bars/Estimates' = block mesh) $(g2 "$estimate_rms") dB, $estimate_ratio times the move to $(mm "$fine_mesh")"
 # One file for the smoke test's key numbers: the grids' rows (the finite
 # blocks on the scene's mesh), then the blocks' rows on the finest grid
 # (n/a: a column of the other table).
@@ -137,4 +162,5 @@ done
   tail -n +2 "$work/blocks.csv" |
     awk -F'",' -v points=$(( 120 * finest * finest )) \
       '{ split($2, f, ","); print points ",n/a,n/a,n/a,n/a,n/a,n/a," $1 "\"," f[1] "," f[4] }'
+  echo "$(( 120 * finest * finest )),n/a,n/a,n/a,n/a,n/a,n/a,\"the error bar of the blocks' mesh\",n/a,$estimate_rms"
 } | write_csv "$output/tread_pattern.csv"
