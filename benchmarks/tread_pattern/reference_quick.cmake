@@ -4,7 +4,9 @@
 # 5 kHz) from the 1920-point grid, patterned and slick, and between the
 # patterned and the slick tyre; on 1920 points, the largest move of the
 # patterned tyre's force band levels from its finite blocks on their 4 mm
-# mesh to their 2.67 mm mesh and to the endless layer. The runs are deterministic (the same bytes
+# mesh to their 6 mm and 2.67 mm meshes and to the endless layer, and the
+# scene's error bar of the blocks' mesh on 4 mm (rms over the bands from
+# 250 Hz). The runs are deterministic (the same bytes
 # at any thread count), so the numbers are a reproduction, not a
 # measurement with a spread: 0.01 dB leaves room for another libm and still
 # fails a pattern moved by a contact rectangle (which moves them by tenths
