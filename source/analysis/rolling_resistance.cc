@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace greentread
 {
@@ -83,6 +84,74 @@ namespace greentread
 
 
 
+    double
+    mean_power(const std::vector<double> &work, const double dt, const double from, const double to)
+    {
+      // The steps that start at or after from, and before to (within
+      // round-off of a step's start).
+      const double      eps   = 1e-9;
+      const std::size_t first = static_cast<std::size_t>(std::max(0., std::ceil(from / dt - eps)));
+      const std::size_t last =
+        std::min(work.size(), static_cast<std::size_t>(std::max(0., std::ceil(to / dt - eps))));
+      if (!(dt > 0.) || first >= last)
+        throw std::invalid_argument("mean_power: no step of " + std::to_string(dt) +
+                                    " s starts in [" + std::to_string(from) + ", " +
+                                    std::to_string(to) + ") s of a record of " +
+                                    std::to_string(work.size()) + " steps");
+      double w = 0.;
+      for (std::size_t k = first; k < last; ++k)
+        w += work[k];
+      return w / ((last - first) * dt);
+    }
+
+
+
+    double
+    rolling_resistance_step_error(const RollingResistance   &run,
+                                  const std::vector<double> &work,
+                                  const double               dt,
+                                  const std::vector<double> &finer_work,
+                                  const double               finer_dt,
+                                  const double               window,
+                                  const double               skip_fraction)
+    {
+      if (!std::isfinite(run.coefficient))
+        return NAN;
+      const double from   = skip_fraction * window;
+      const double coarse = mean_power(work, dt, from, window);
+      const double fine   = mean_power(finer_work, finer_dt, from, window);
+      if (coarse == 0.)
+        return NAN;
+      const double factor = 1. + 1. / (std::pow(dt / finer_dt, rolling_resistance_step_order) - 1.);
+      return std::abs(fine / coarse - 1.) * factor * std::abs(run.coefficient);
+    }
+
+
+
+    void
+    print_rolling_resistance_errors(std::ostream                            &out,
+                                    const std::vector<RunRollingResistance> &runs)
+    {
+      bool header = false;
+      for (const auto &r : runs)
+        {
+          const RollingResistance &v = r.value;
+          if (!std::isfinite(v.coefficient_step_error))
+            continue;
+          if (!header)
+            out << "Rolling resistance the texture adds, with the time step's error bar (half the "
+                   "step over its error bar's window, order "
+                << format_number(rolling_resistance_step_order) << "):\n";
+          header = true;
+          out << "    " << r.run << ": C_RR " << format_printf("%.3g", 1e3 * v.coefficient)
+              << " +- " << format_printf("%.2g", 1e3 * v.coefficient_error)
+              << " (standard error) +- " << format_printf("%.2g", 1e3 * v.coefficient_step_error)
+              << " (time step) x 1e-3\n";
+        }
+    }
+
+
+
     void
     write_rolling_resistance(const std::filesystem::path             &directory,
                              const std::vector<RunRollingResistance> &runs,
@@ -94,11 +163,13 @@ namespace greentread
         f.stream()
           << "# The rolling resistance the texture adds (doc/methods/analysis.md): the mean "
              "power the contact forces put into the tyre after the start, P, and F_RR = P / V, "
-             "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); level: a "
-             "run of the plan, or of an error bar's other level (its short window); the "
-             "hysteresis of a turning tyre is not in it.\n"
+             "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); "
+             "coefficient_step_error: the time step's error bar on C_RR (from the level at half "
+             "the step, at order 1; empty where none was rolled); level: a run of the plan, or of "
+             "an error bar's other level (its short window); the hysteresis of a turning tyre is "
+             "not in it.\n"
              "road,mpd_mm,speed_kmh,run,level,dt_us,distance_m,skipped_m,load_N,power_W,power_se_W,"
-             "force_N,force_se_N,coefficient,coefficient_se\n";
+             "force_N,force_se_N,coefficient,coefficient_se,coefficient_step_error\n";
         for (const auto &r : runs)
           {
             const RollingResistance &v = r.value;
@@ -107,7 +178,10 @@ namespace greentread
                        << (r.error_bar ? "error bar" : "plan") << ',' << 1e6 * r.time_step << ','
                        << r.distance << ',' << v.skipped * V << ',' << v.load << ',' << v.power
                        << ',' << v.power_error << ',' << v.force << ',' << v.force_error << ','
-                       << v.coefficient << ',' << v.coefficient_error << '\n';
+                       << v.coefficient << ',' << v.coefficient_error << ',';
+            if (std::isfinite(v.coefficient_step_error))
+              f.stream() << v.coefficient_step_error;
+            f.stream() << '\n';
           }
         record.write_comments(f.stream());
         f.commit();
@@ -140,8 +214,14 @@ namespace greentread
           if (sorted.empty())
             continue;
           for (const auto *r : sorted)
-            data << 1e3 * r->mpd << ' ' << 1e3 * r->value.coefficient << ' '
-                 << 1e3 * r->value.coefficient_error << '\n';
+            {
+              // The standard error and the time step's error bar in quadrature.
+              const RollingResistance &v = r->value;
+              const double             step =
+                std::isfinite(v.coefficient_step_error) ? v.coefficient_step_error : 0.;
+              data << 1e3 * r->mpd << ' ' << 1e3 * v.coefficient << ' '
+                   << 1e3 * std::hypot(v.coefficient_error, step) << '\n';
+            }
           data << "e\n";
           plot << (block++ ? ", " : "plot ") << "'-' using 1:2:3 with yerrorlines lw 2 pt 7 title '"
                << format_number(speed) << " km/h'";
@@ -152,7 +232,7 @@ namespace greentread
                      "set grid\nset xlabel 'mean profile depth MPD [mm]'\n"
                      "set ylabel 'C_{RR} added by the texture [10^{-3}]'\nset key top left\n"
                      "set title 'GreenTread: rolling resistance the texture adds (error bars: "
-                     "standard error)'\n" +
+                     "standard error and time step)'\n" +
                        plot.str() + "\n" + data.str(),
                      record);
     }

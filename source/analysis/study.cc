@@ -162,5 +162,49 @@ namespace greentread
         }
       return merged_spectra;
     }
+
+
+
+    std::vector<RunRollingResistance>
+    Study::rolling_resistance(const std::vector<RunSpectrum> &job_spectra,
+                              const std::vector<double>      &mpd) const
+    {
+      if (job_spectra.size() != jobs.size())
+        throw NumericalError("Study::rolling_resistance: " + std::to_string(job_spectra.size()) +
+                             " runs' results for " + std::to_string(jobs.size()) + " runs");
+      std::vector<RunRollingResistance> runs;
+      for (std::size_t k = 0; k < jobs.size(); ++k)
+        {
+          const StudyCase   &c = cases[jobs[k].study_case];
+          const RunSpectrum &s = job_spectra[k];
+          runs.push_back({s.road, s.run, jobs[k].estimate >= 0, c.speed_kmh, mpd.at(c.road),
+                          s.time_step, s.time_step * s.force_history.size() * c.speed_kmh / 3.6,
+                          s.rolling_resistance});
+        }
+      // The time step's error bar: each level at half a run's step against
+      // that run, over the level's window.
+      for (std::size_t k = 0; k < jobs.size(); ++k)
+        {
+          if (jobs[k].estimate < 0)
+            continue;
+          const StudyCase   &c        = cases[jobs[k].study_case];
+          const EstimateRun &estimate = c.estimates[jobs[k].estimate];
+          if (estimate.what != Discretisation::time_step || estimate.run.steps == 0)
+            continue;
+          const auto of = std::find_if(jobs.begin(), jobs.end(), [&](const StudyJob &j) {
+            return j.study_case == jobs[k].study_case && j.estimate < 0 &&
+                   j.run.name == c.plan[estimate.of].name;
+          });
+          if (of == jobs.end())
+            throw NumericalError("Study::rolling_resistance: no run of the plan for the level '" +
+                                 estimate.run.name + "'");
+          const std::size_t  j   = of - jobs.begin();
+          const RunSpectrum &run = job_spectra[j], &finer = job_spectra[k];
+          runs[j].value.coefficient_step_error =
+            rolling_resistance_step_error(run.rolling_resistance, run.step_work, run.time_step,
+                                          finer.step_work, finer.time_step, estimate.window);
+        }
+      return runs;
+    }
   } // namespace analysis
 } // namespace greentread

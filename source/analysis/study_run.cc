@@ -278,9 +278,17 @@ namespace greentread
                   << " x 1e-3 (after the first " << format_printf("%.3g", resistance.skipped * V)
                   << " m)\n";
 
-      RunSpectrum spectra_of_run{road_name,     speed_kmh,    {}, {},
-                                 record.centre, record.force, dt, std::move(point_forces),
-                                 run,           resistance};
+      RunSpectrum spectra_of_run{road_name,
+                                 speed_kmh,
+                                 {},
+                                 {},
+                                 record.centre,
+                                 record.force,
+                                 dt,
+                                 std::move(point_forces),
+                                 run,
+                                 resistance,
+                                 power.step_work()};
       if (write_outputs)
         {
           if (!record.final_spectra)

@@ -335,16 +335,11 @@ namespace greentread
       analysis::write_spectra(
         directory, study.merge(job_spectra, rolling.stress_reference, spectra.lines_per_segment),
         run_roads, rolling.speeds, rolling.stress_reference, model.f_max, spectra, record);
-      // The rolling resistance the texture adds, from every run.
-      std::vector<analysis::RunRollingResistance> resistance;
-      for (std::size_t k = 0; k < study.jobs.size(); ++k)
-        {
-          const analysis::StudyCase   &c = study.cases[study.jobs[k].study_case];
-          const analysis::RunSpectrum &s = job_spectra[k];
-          resistance.push_back(
-            {s.road, s.run, study.jobs[k].estimate >= 0, c.speed_kmh, mpd[c.road], s.time_step,
-             s.time_step * s.force_history.size() * c.speed_kmh / 3.6, s.rolling_resistance});
-        }
+      // The rolling resistance the texture adds, from every run, with the
+      // time step's error bar.
+      const std::vector<analysis::RunRollingResistance> resistance =
+        study.rolling_resistance(job_spectra, mpd);
+      analysis::print_rolling_resistance_errors(std::cout, resistance);
       analysis::write_rolling_resistance(directory, resistance, record);
       if (sound.enabled())
         sound_stage(study, job_spectra, model, directory, record);

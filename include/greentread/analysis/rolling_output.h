@@ -157,6 +157,9 @@ namespace greentread
       /// The run's name (road_V[_low-rate]) and its rolling resistance.
       std::string       run;
       RollingResistance rolling_resistance;
+      /// The contact forces' work at each step (RollingPowerMeter::step_work()):
+      /// the rolling resistance's error bar compares it between levels.
+      std::vector<double> step_work;
     };
 
     /**

@@ -5,7 +5,9 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -38,7 +40,47 @@ namespace greentread
       double       skipped  = 0.;                            ///< the start left out [s]
       double       duration = 0.;                            ///< the record averaged [s]
       unsigned int segments = 0;                             ///< of the standard error
+      /// The time step's error bar on the coefficient (rolling_resistance_step_error());
+      /// NaN where no level at a finer step was rolled.
+      double coefficient_step_error = NAN;
     };
+
+    /// The order in the time step the rolling resistance's error bar assumes:
+    /// 1, below the spectra's 2, for the power a step misses is that of the
+    /// contact's onsets within it (benchmarks/rolling_resistance measures the
+    /// order: 1.2 to 1.4 on the coarse ring).
+    constexpr double rolling_resistance_step_order = 1.;
+
+    /**
+     * @brief The mean power [W] of a work record @p work (one value per step
+     * of @p dt [s], RollingPowerMeter::step_work()) over the steps that start
+     * in [@p from, @p to) [s].
+     * @throws std::invalid_argument if no step starts there.
+     */
+    double
+    mean_power(const std::vector<double> &work, double dt, double from, double to);
+
+    /**
+     * @brief The time step's error bar on the coefficient of @p run, whose
+     * work record @p work is at step @p dt, from a level at the finer step
+     * @p finer_dt (@p finer_work) rolled over the same road from the same
+     * start for @p window [s]: over that window after its first
+     * @p skip_fraction, the relative change of the mean power, scaled to
+     * the run's error at rolling_resistance_step_order and applied to the
+     * run's coefficient: |P_finer / P - 1| (1 + 1 / (r^p - 1)) C_RR with
+     * r = dt / finer_dt. The relative change, not the absolute: the window is
+     * short and its vibration still building up, while the share of the
+     * power a step misses is the same over any window (doc/methods/analysis.md).
+     * @return NaN if the run has no coefficient or the window's power is 0.
+     */
+    double
+    rolling_resistance_step_error(const RollingResistance   &run,
+                                  const std::vector<double> &work,
+                                  double                     dt,
+                                  const std::vector<double> &finer_work,
+                                  double                     finer_dt,
+                                  double                     window,
+                                  double                     skip_fraction = 0.2);
 
     /**
      * @brief The work the contact forces do on the tyre, step by step: each
@@ -90,10 +132,17 @@ namespace greentread
       RollingResistance value;
     };
 
+    /// A line on @p out for each run of @p runs with a time step's error bar:
+    /// its coefficient, standard error and error bar (none if no run has one).
+    void
+    print_rolling_resistance_errors(std::ostream                            &out,
+                                    const std::vector<RunRollingResistance> &runs);
+
     /**
      * @brief rolling_resistance.csv (every run, those of the error bars'
      * other levels marked) and rolling_resistance.png (the coefficient
-     * against the roads' MPD, one line per speed, with its standard error,
+     * against the roads' MPD, one line per speed, with its standard error
+     * and its time step's error bar combined,
      * from each case's run of the plan at the finest time step: a coarser
      * step resolves less of the power), under temporary names renamed when
      * complete.

@@ -130,6 +130,17 @@ namespace greentread
       merge(const std::vector<RunSpectrum> &job_spectra,
             double                          stress_reference,
             unsigned int                    lines_per_segment) const;
+
+      /**
+       * @brief Every job's rolling resistance (RunSpectrum::rolling_resistance),
+       * in the order of #jobs, as rolling_resistance.csv lists it, @p mpd
+       * giving each road's: each run of the plan whose time step has a
+       * level at half the step gets that level's error bar
+       * (rolling_resistance_step_error(), over the level's window).
+       */
+      std::vector<RunRollingResistance>
+      rolling_resistance(const std::vector<RunSpectrum> &job_spectra,
+                         const std::vector<double>      &mpd) const;
     };
 
     /**
