@@ -3,7 +3,8 @@
 // integration of the synthetic patch's modes driven by the same forces: the
 // work equals the change of the modes' energy plus what their damping
 // dissipates, and over a long run the dissipation alone. A second method,
-// the forces on the road's slopes, and a flat road that takes no power.
+// the forces on the road's slopes, and a flat road that takes no power. The
+// time step's error bar against a run at an eighth of the step.
 #include "patch_rolling.h"
 #include "synthetic_patch.h"
 
@@ -86,10 +87,42 @@ namespace
     return e;
   }
 
+  /// The synthetic patch with eight more modes, from 600 Hz to 6.7 kHz, of a
+  /// tenth of its modes' mass and with the loss a stiffness-proportional
+  /// damping gives (zeta = 0.05 f / 450 Hz), as the tyre's ring has above a
+  /// few hundred hertz: the power these take, the most of it, is what a
+  /// coarse step misses.
+  modal::PatchModel
+  patch_with_high_modes()
+  {
+    modal::PatchModel  m = test::synthetic_patch(0.05);
+    const unsigned int n = m.n_points();
+    for (unsigned int k = 0; k < 8; ++k)
+      {
+        const double    f = 600. * std::pow(1.41, k), w = 2. * M_PI * f;
+        const double    zeta = 0.05 * f / 450., wd = w * std::sqrt(1. - zeta * zeta), mass = 0.2;
+        Eigen::VectorXd phi(n);
+        for (unsigned int p = 0; p < n; ++p)
+          {
+            // Along the patch (x, 4 points 6 mm apart) and across (y, 3 points 7 mm apart).
+            const double x = m.points[p][0] / 6e-3, y = m.points[p][1] / 7e-3;
+            phi[p] = std::cos(M_PI * (1 + k % 3) * (x + 2.) / 4.) *
+                     std::cos(M_PI * (k / 3) * (y + 1.5) / 3.);
+          }
+        m.lambda.emplace_back(-zeta * w, wd);
+        m.real.push_back(false);
+        m.residues.push_back((phi * phi.transpose()).cast<std::complex<double>>() /
+                             std::complex<double>(0., 2. * mass * wd));
+      }
+    m.f_max = 10000.;
+    return m;
+  }
+
   struct Run
   {
     std::vector<Eigen::VectorXd> ends; ///< the force at each step's end, and at the start
     analysis::RollingResistance  value;
+    std::vector<double>          step_work; ///< the meter's record
     double                       work = 0., slope_work = 0., dt = 0.;
   };
 
@@ -121,7 +154,8 @@ namespace
         d_last = s.d;
       },
       &start);
-    for (const double w : meter->step_work())
+    r.step_work = meter->step_work();
+    for (const double w : r.step_work)
       r.work += w;
     r.value = meter->result(c.speed_kmh / 3.6);
     return r;
@@ -212,6 +246,55 @@ BOOST_AUTO_TEST_CASE(rougher_road_more_flat_road_none)
   // start's: no work at all, to round-off.
   BOOST_TEST(std::abs(flat.value.power) <= 1e-9 * a.value.power);
   BOOST_TEST(flat.value.load == c.load, boost::test_tools::tolerance(1e-9));
+}
+
+BOOST_AUTO_TEST_CASE(the_time_steps_error_bar_against_a_refined_step)
+{
+  // The scene's estimate: the level at half the step over a short window
+  // from the same start (0.3 m, as the error bars' windows are), its
+  // relative change of the power applied to the run's coefficient at order
+  // 1. The reference: the same 3 m at 1/8 of a road sample per step. On the
+  // patch with high modes, which take most of the power as the tyre's do.
+  const auto                        model = patch_with_high_modes();
+  std::vector<road::WavelengthBand> bands;
+  std::vector<double>               levels;
+  road::texture_preset("road-A", bands, levels);
+  const road::Texture texture = road::synthetic_texture(bands, levels, 3.84e-4, 8192, 64, 3);
+
+  test::RollingCase c; // 3 m at 50 km/h, 600 N, one road sample per step
+  c.speed_kmh             = 50.;
+  c.distance              = 3.;
+  const Run         run   = roll(model, texture, c);
+  test::RollingCase level = c; // half the step over 0.3 m (21.6 ms)
+  level.dt_factor         = 0.5;
+  level.distance          = 0.3;
+  const Run    finer      = roll(model, texture, level);
+  const double window     = level.distance / (c.speed_kmh / 3.6);
+  const double estimate   = analysis::rolling_resistance_step_error(
+      run.value, run.step_work, run.dt, finer.step_work, finer.dt, window);
+  std::vector<double> refined_c;
+  for (const double factor : {0.5, 0.25, 0.125})
+    {
+      test::RollingCase refined = c;
+      refined.dt_factor         = factor;
+      refined_c.push_back(roll(model, texture, refined).value.coefficient);
+    }
+  const double measured = std::abs(run.value.coefficient - refined_c.back());
+  BOOST_TEST_MESSAGE("C_RR at 1, 1/2, 1/4, 1/8 road sample per step: "
+                     << run.value.coefficient << ", " << refined_c[0] << ", " << refined_c[1]
+                     << ", " << refined_c[2] << "; the error bar " << estimate
+                     << ", the difference from 1/8: " << measured << " (ratio "
+                     << estimate / measured << ")");
+  // Measured 1.51: the levels converge at order 2 here (0.039, 0.011 and
+  // 0.0028 x 1e-3 from each step to the next), above the order 1 assumed,
+  // which the tyre's ring shows (benchmarks/rolling_resistance).
+  BOOST_TEST(estimate / measured >= 0.75);
+  BOOST_TEST(estimate / measured <= 3.);
+
+  // mean_power: the steps that start in the interval, exactly.
+  const std::vector<double> work = {1., 2., 3., 4.};
+  BOOST_TEST(analysis::mean_power(work, 0.5, 0.5, 1.5) == 2.5 / 0.5);
+  BOOST_CHECK_THROW(analysis::mean_power(work, 0.5, 2., 3.), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
