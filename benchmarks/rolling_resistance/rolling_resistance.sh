@@ -128,7 +128,7 @@ awk -F, '
 echo "| road | road samples per step | dt [us] | C_RR [1e-3] | its standard error [1e-3] | change to the next finer step [1e-3] | order shown with the next two | from the extrapolated limit [%] | the scene's time step error bar [1e-3] | it over the distance from the limit | ms per step |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 awk -F, 'NR > 1 {
-    printf "| %s | %.3g | %.4g | %.4g | %.2g | %s | %s | %s | %s | %s | %s |\n", $1, 1 / $2, $3, 1e3 * $4, 1e3 * $5,
+    printf "| %s | %.3g | %.4g | %.4g | %.2g | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, 1e3 * $4, 1e3 * $5,
       ($6 == "n/a") ? "" : sprintf("%.3g", 1e3 * $6), ($7 == "n/a") ? "" : $7, $8,
       ($10 == "n/a") ? "" : sprintf("%.3g", 1e3 * $10), ($11 == "n/a") ? "" : $11, $9 }' "$work/table.csv"
 write_csv "$output/rolling_resistance.csv" < "$work/table.csv"

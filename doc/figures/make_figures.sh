@@ -69,6 +69,7 @@ if [[ -z "$main_out" ]]; then
   "$program" --set "Output directory=$main_out"
 fi
 place doc/figures/spectra_road-A.png "$main_out/spectra_road-A.png"
+place doc/figures/rolling_resistance.png "$main_out/rolling_resistance.png"
 
 # The sound of the main job's tyre (prm/tyre_sound.prm): its Green's functions
 # and modes are the main job's (the same parameters, so the same stage keys),

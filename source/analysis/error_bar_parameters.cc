@@ -67,7 +67,8 @@ namespace greentread
             "time step|contact grid|mode cutoff|ring section|block mesh"),
           "The discretisations whose error each band level gets an estimate of, each from one "
           "other level on the saved stages: 'time step' (the scene's step halved; the "
-          "low-rate run's bands against the run at the scene's step, no extra run), 'contact "
+          "low-rate run's bands against the run at the scene's step, no extra run; the run at "
+          "the scene's step also gets its rolling resistance's error bar from it), 'contact "
           "grid' ('Contact grid/Subdivisions' halved), 'mode cutoff' (the modes up to 'Coarser "
           "mode cutoff' times 'Patch model/Mode cutoff'), 'ring section' ('Geometry/Mesh size' "
           "doubled: its own Green's functions and modes, saved in coarser_section/), 'block "
