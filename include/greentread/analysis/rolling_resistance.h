@@ -46,9 +46,9 @@ namespace greentread
     };
 
     /// The order in the time step the rolling resistance's error bar assumes:
-    /// 1, below the spectra's 2, for the power a step misses is that of the
-    /// contact's onsets within it (benchmarks/rolling_resistance measures the
-    /// order: 1.2 to 1.4 on the coarse ring).
+    /// 1, below the spectra's 2 and below the orders benchmarks/rolling_resistance
+    /// measures (1.5 to 1.75 on the main job's ring, 1.2 to 1.4 on the coarse
+    /// ring), so that the error bar does not understate the error.
     constexpr double rolling_resistance_step_order = 1.;
 
     /**
