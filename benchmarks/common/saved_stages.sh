@@ -1,10 +1,11 @@
 # Shared by the contact scene's script studies (contact_grid_study.sh,
 # contact_solvers.sh, contact_studies.sh, error_bars.sh, multi_rate.sh,
-# realisations.sh): their options, and rolling runs of the program on copies
-# of saved stages, the main job's or, with --quick, a coarse ring's that the
-# script makes itself. A script sources this file, calls parse_options with
-# its arguments, and sets $saved (the stages' directory), $program and $work
-# (where the runs go) before it calls run_saved.
+# realisations.sh, rolling_resistance.sh, tread_pattern.sh): their options,
+# and rolling runs of the program on copies of saved stages, the main job's
+# or, with --quick, a coarse ring's that the script makes itself. A script
+# sources this file, calls parse_options with its arguments, and sets $saved
+# (the stages' directory), $program and $work (where the runs go) before it
+# calls run_saved.
 
 # input_error MESSAGE: print MESSAGE and exit with status 2, the status of bad
 # input (CONTRIBUTING.md).
