@@ -2,6 +2,7 @@
 #include <greentread/base/job_runner.h>
 #include <greentread/base/output.h>
 #include <greentread/base/serial_deal_ii.h>
+#include <greentread/contact/projected_cg.h>
 #include <greentread/contact/tread_block.h>
 
 #include <Eigen/Eigenvalues>
@@ -256,6 +257,30 @@ namespace greentread
       for (std::size_t q = 0; q < points.size(); ++q)
         if (slot[q] >= 0 && loaded[slot[q]])
           y[q] += response[slot[q]][cell[q]];
+    }
+
+
+
+    double
+    BlockState::largest_norm(
+      const std::function<void(const Eigen::VectorXd &, Eigen::VectorXd &)> &W,
+      const unsigned int                                                     n_positions) const
+    {
+      BlockState   probe(*this);
+      const double period = blocks.pattern.circumference(), golden = 0.5 * (std::sqrt(5.) - 1.);
+      double       largest = 0.;
+      for (unsigned int k = 0; k < n_positions; ++k)
+        {
+          const double fraction = k * golden - std::floor(k * golden);
+          probe.set_position(fraction * period);
+          largest = std::max(largest, operator_norm(
+                                        [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+                                          W(x, y);
+                                          probe.add_product(x, y);
+                                        },
+                                        points.size()));
+        }
+      return 1.05 * largest;
     }
 
 

@@ -415,15 +415,13 @@ namespace greentread
                   if (blocks != nullptr)
                     blocks->add_block(rows, columns, out);
                 };
-              // The blocks move: the solve's step length from a bound over
-              // every position.
+              // The blocks move: the solve's step length from the largest
+              // norm over positions round the pattern.
               if (blocks != nullptr)
-                psi.end_norm = operator_norm(
-                                 [&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
-                                   grid.apply(end_compliance, x, y);
-                                 },
-                                 grid.n_points()) +
-                               blocks->norm_bound();
+                psi.end_norm =
+                  blocks->largest_norm([&](const Eigen::VectorXd &x, Eigen::VectorXd &y) {
+                    grid.apply(end_compliance, x, y);
+                  });
               return;
             }
           for (unsigned int g = 0; g < 4; ++g)
