@@ -108,6 +108,10 @@ namespace greentread
             TreadBlock(block_geometry, tread, table, mesh_size, false).compliance();
           const Eigen::Index n = table.size() - 1;
           shape.delta          = block.topLeftCorner(n, n) - layer.topLeftCorner(n, n);
+          // Kept in single precision (Shape::single), and the double table
+          // made the same operator.
+          shape.single = shape.delta.cast<float>();
+          shape.delta  = shape.single.cast<double>();
           shape.norm =
             Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(shape.delta, Eigen::EigenvaluesOnly)
               .eigenvalues()
@@ -232,7 +236,8 @@ namespace greentread
     BlockState::add_product(const Eigen::VectorXd &x, Eigen::VectorXd &y) const
     {
       // The forces are zero but at the few points in contact: each block's
-      // table loads, and its response from the loaded rectangles' columns.
+      // table loads, and its response from the loaded rectangles' columns,
+      // read in single precision and summed in double.
       std::fill(loaded.begin(), loaded.end(), false);
       for (std::size_t q = 0; q < points.size(); ++q)
         if (slot[q] >= 0 && x[q] != 0.)
@@ -248,11 +253,19 @@ namespace greentread
       for (std::size_t b = 0; b < slot_shape.size(); ++b)
         if (loaded[b])
           {
-            const Eigen::MatrixXd &delta = blocks.shape_list[slot_shape[b]].delta;
-            response[b].setZero(delta.rows());
-            for (Eigen::Index I = 0; I < delta.cols(); ++I)
+            const Eigen::MatrixXf &delta = blocks.shape_list[slot_shape[b]].single;
+            const Eigen::Index     N     = delta.rows();
+            response[b].setZero(N);
+            double *r = response[b].data();
+            for (Eigen::Index I = 0; I < N; ++I)
               if (load[b][I] != 0.)
-                response[b] += load[b][I] * delta.col(I);
+                {
+                  const double a = load[b][I];
+                  const float *c = delta.data() + I * N;
+#pragma omp simd
+                  for (Eigen::Index k = 0; k < N; ++k)
+                    r[k] += a * double(c[k]);
+                }
           }
       for (std::size_t q = 0; q < points.size(); ++q)
         if (slot[q] >= 0 && loaded[slot[q]])
