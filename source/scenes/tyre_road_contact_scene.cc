@@ -77,6 +77,57 @@ namespace greentread
           p.push_back(r.get());
         return p;
       }
+
+
+
+      /// The error bars' Richardson factors of the levels the scene makes
+      /// itself (the contact grid's and the time step's are the study's).
+      std::map<analysis::Discretisation, double>
+      richardson_factors(const TyreRoadContactScene::TreadStage                    &tread,
+                         const std::optional<TyreRoadContactScene::CoarserModel>   &coarser_model,
+                         const std::optional<TyreRoadContactScene::CoarserSection> &section)
+      {
+        std::map<analysis::Discretisation, double> factors;
+        if (tread.coarser_blocks)
+          factors[analysis::Discretisation::block_mesh] =
+            analysis::richardson_factor(analysis::block_mesh_ratio, analysis::block_mesh_order);
+        if (coarser_model)
+          factors[analysis::Discretisation::mode_cutoff] = coarser_model->factor;
+        if (section)
+          factors[analysis::Discretisation::ring_section] = section->factor;
+        return factors;
+      }
+
+
+
+      /// The error bars' other levels: @p fine with one discretisation
+      /// changed, for each that the scene has.
+      std::map<analysis::Discretisation, analysis::RunLevel>
+      other_levels(const analysis::RunLevel                                  &fine,
+                   const CoarserGrid                                         &coarser,
+                   const std::vector<std::unique_ptr<road::PatchRoad>>       &coarser_roads,
+                   const std::optional<TyreRoadContactScene::CoarserModel>   &coarser_model,
+                   const std::optional<TyreRoadContactScene::CoarserSection> &section,
+                   const TyreRoadContactScene::TreadStage                    &tread)
+      {
+        std::map<analysis::Discretisation, analysis::RunLevel> other;
+        if (coarser.grid)
+          other[analysis::Discretisation::contact_grid] = {
+            fine.model,     coarser.grid.get(),    fine.G0,
+            &coarser.tread, coarser.lattice.get(), pointers(coarser_roads),
+            tread.of_road,  tread.blocks.get()};
+        if (coarser_model)
+          other[analysis::Discretisation::mode_cutoff] = with_model(fine, coarser_model->model);
+        if (section)
+          other[analysis::Discretisation::ring_section] =
+            with_model(fine, section->model, &section->G0);
+        if (tread.coarser_blocks)
+          {
+            other[analysis::Discretisation::block_mesh]        = fine;
+            other[analysis::Discretisation::block_mesh].blocks = tread.coarser_blocks.get();
+          }
+        return other;
+      }
     } // namespace
 
 
@@ -285,16 +336,9 @@ namespace greentread
       const TreadStage tread = tread_stage(grid.points[0][2]);
 
       // The study: every road at every speed, and the error bars' levels.
-      std::map<analysis::Discretisation, double> factors;
-      if (tread.coarser_blocks)
-        factors[analysis::Discretisation::block_mesh] =
-          analysis::richardson_factor(analysis::block_mesh_ratio, analysis::block_mesh_order);
-      if (coarser_model)
-        factors[analysis::Discretisation::mode_cutoff] = coarser_model->factor;
-      if (section)
-        factors[analysis::Discretisation::ring_section] = section->factor;
-      const analysis::Study study = analysis::plan_study(study_roads(grid), rolling, spectra,
-                                                         error_bars, grid.subdivisions, factors);
+      const analysis::Study study =
+        analysis::plan_study(study_roads(grid), rolling, spectra, error_bars, grid.subdivisions,
+                             richardson_factors(tread, coarser_model, section));
 
       // Stage road, and what each level's runs roll on.
       const CoarserGrid                             coarser(model.points, grid, tread_layer(),
@@ -303,28 +347,12 @@ namespace greentread
       std::vector<double>                           mpd;
       make_roads(study, grid, coarser.grid.get(), directory, record, fine_roads, coarser_roads,
                  mpd);
-      const analysis::RunLevel fine{&model,        &grid,
+      const analysis::RunLevel  fine{&model,        &grid,
                                     &G0,           &heights,
                                     &lattice,      pointers(fine_roads),
                                     tread.of_road, tread.blocks.get()};
-      analysis::RunLevels      levels{fine, {}};
-      if (coarser.grid)
-        levels.other[analysis::Discretisation::contact_grid] = {
-          &model,         coarser.grid.get(),    &G0,
-          &coarser.tread, coarser.lattice.get(), pointers(coarser_roads),
-          tread.of_road,  tread.blocks.get()};
-      if (coarser_model)
-        levels.other[analysis::Discretisation::mode_cutoff] =
-          with_model(fine, coarser_model->model);
-      if (section)
-        levels.other[analysis::Discretisation::ring_section] =
-          with_model(fine, section->model, &section->G0);
-      if (tread.coarser_blocks)
-        {
-          analysis::RunLevel coarser_blocks                  = fine;
-          coarser_blocks.blocks                              = tread.coarser_blocks.get();
-          levels.other[analysis::Discretisation::block_mesh] = coarser_blocks;
-        }
+      const analysis::RunLevels levels{
+        fine, other_levels(fine, coarser, coarser_roads, coarser_model, section, tread)};
 
       // Stage contact: the runs, side by side (base::for_each_index()).
       const std::vector<analysis::RunSpectrum> job_spectra =

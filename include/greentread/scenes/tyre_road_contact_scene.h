@@ -56,6 +56,40 @@ namespace greentread
       void
       run() override;
 
+      // The results of the stages that run() hands from one to the next.
+
+      /// A coarser level of the patch model, for the mode cut-off's error
+      /// bar, and the factor that scales its difference into an estimate.
+      struct CoarserModel
+      {
+        modal::PatchModel model;
+        double            cutoff = 0.; ///< [Hz]
+        double            factor = 0.;
+      };
+
+      /// The ring section's coarser level, for its error bar: the patch
+      /// model and static compliance of the section with 'Geometry/Mesh
+      /// size' doubled, and the factor that scales the level difference.
+      struct CoarserSection
+      {
+        modal::PatchModel model;
+        Eigen::MatrixXd   G0;
+        double            mesh_size = 0.; ///< [m]
+        double            factor    = 0.;
+      };
+
+      /// The tread pattern of every level's runs, and its finite blocks.
+      struct TreadStage
+      {
+        std::unique_ptr<contact::TreadPattern>    pattern;
+        std::unique_ptr<contact::BlockCompliance> blocks; ///< with finite blocks
+        /// With 'Error bars/Estimates' holding 'block mesh': the blocks on
+        /// the mesh analysis::block_mesh_ratio times as coarse.
+        std::unique_ptr<contact::BlockCompliance> coarser_blocks;
+        /// Per road of run_roads: the pattern, or nullptr (slick).
+        std::vector<const contact::TreadPattern *> of_road;
+      };
+
     private:
       /// Stages geometry, fe, periodic: the Green's functions of the tyre of
       /// @p tyre_geometry at the lines of @p lines, read from @p h5 when its
@@ -70,14 +104,6 @@ namespace greentread
                   const base::ParameterRecord             &record,
                   std::unique_ptr<periodic::InflatedTyre> &tyre) const;
 
-      /// A coarser level of the patch model, for the mode cut-off's error
-      /// bar, and the factor that scales its difference into an estimate.
-      struct CoarserModel
-      {
-        modal::PatchModel model;
-        double            cutoff = 0.; ///< [Hz]
-        double            factor = 0.;
-      };
       /// Stage modal: the patch model from 'Patch model/Source', the LSCE fit
       /// or the ring's own modes, each saved in @p directory and reused when
       /// its key matches. With @p coarser (the ring's modes only), also the
@@ -93,16 +119,6 @@ namespace greentread
                   const periodic::InflatedTyre        *tyre,
                   std::optional<CoarserModel>         *coarser = nullptr) const;
 
-      /// The ring section's coarser level, for its error bar: the patch
-      /// model and static compliance of the section with 'Geometry/Mesh
-      /// size' doubled, and the factor that scales the level difference.
-      struct CoarserSection
-      {
-        modal::PatchModel model;
-        Eigen::MatrixXd   G0;
-        double            mesh_size = 0.; ///< [m]
-        double            factor    = 0.;
-      };
       /// When 'Error bars/Estimates' holds 'ring section' (and the patch
       /// model is the ring's own modes on the section's harmonics): the
       /// coarser section's Green's functions and modes, stages of their own
@@ -158,17 +174,6 @@ namespace greentread
       std::vector<analysis::StudyRoad>
       study_roads(const contact::ContactGrid &grid) const;
 
-      /// The tread pattern of every level's runs, and its finite blocks.
-      struct TreadStage
-      {
-        std::unique_ptr<contact::TreadPattern>    pattern;
-        std::unique_ptr<contact::BlockCompliance> blocks; ///< with finite blocks
-        /// With 'Error bars/Estimates' holding 'block mesh': the blocks on
-        /// the mesh analysis::block_mesh_ratio times as coarse.
-        std::unique_ptr<contact::BlockCompliance> coarser_blocks;
-        /// Per road of run_roads: the pattern, or nullptr (slick).
-        std::vector<const contact::TreadPattern *> of_road;
-      };
       /// The pattern on the contact points' @p radius [m], and its blocks'
       /// compliance (once for every level: it does not depend on the contact
       /// grid), and their coarser level for the error bar; each printed.
