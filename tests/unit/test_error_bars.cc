@@ -11,7 +11,7 @@
 //   band's difference between two runs can pass through zero);
 // - the study plans the finite tread blocks' coarser level on the patterned
 //   roads only.
-#include "synthetic_patch.h"
+#include "grid_rolling.h"
 
 #include <greentread/analysis/error_bars.h>
 #include <greentread/analysis/study.h>
@@ -54,46 +54,22 @@ namespace
   std::pair<analysis::BandSpectrum, analysis::BandSpectrum>
   roll_levels(const unsigned int subdivisions, const double dt_factor, const double duration)
   {
-    static const road::Texture texture = [] {
-      std::vector<road::WavelengthBand> bands;
-      std::vector<double>               levels;
-      road::texture_preset("road-A", bands, levels);
-      return road::synthetic_texture(bands, levels, 3.84e-4, 8000, 96, 11);
-    }();
-    static const modal::PatchModel model = test::synthetic_patch(0.05);
-    const contact::ContactGrid     grid(model.points, subdivisions, contact::ElasticLayer{},
-                                        subdivisions > 2, true);
-    const road::PatchRoad          road(texture, grid.points, road::RoadSampling::envelope, "test");
-    const contact::PatchRoadHeights heights = [&](const double x, Eigen::VectorXd &z,
-                                                  Eigen::VectorXd &slope) {
-      road.heights(x, z, slope);
-    };
-    const Eigen::VectorXd tread = contact::tread_heights(grid.points);
-    contact::RollingSetup setup;
-    setup.speed       = 25.;
-    setup.time_step   = dt_factor * 3.84e-4 / 25.;
-    setup.n_steps     = unsigned(std::lround(duration / setup.time_step));
-    setup.static_load = 150.;
-    const auto start =
-      contact::start_grid_contact(grid, model.static_compliance(), tread, heights, setup);
-    const auto convolution = contact::make_grid_convolution(
-      contact::make_patch_convolution(setup.convolution, model, setup.time_step, setup.n_steps, 0,
-                                      1),
-      grid);
     // The stress over the Green's-function rectangle of point 4 (i_x = 1,
     // i_y = 1, beside the centre): the force on its contact points.
-    Eigen::VectorXd reporting = Eigen::VectorXd::Zero(grid.n_points());
-    for (unsigned int p = 0; p < grid.n_points(); ++p)
-      reporting[p] = grid.coarse_of[p] == 4 ? 1. : 0.;
     std::vector<double> stress, force;
-    const auto          summary = contact::roll_patch(*convolution, tread, heights, start, setup,
-                                                      [&](const contact::RollingStep &step) {
-                                               stress.push_back(reporting.dot(step.force));
-                                               force.push_back(step.force.sum());
-                                             });
-    BOOST_TEST(summary.failed_steps == 0u);
-    return {analysis::welch_band_spectrum(stress, setup.time_step, 1., 250., 5000., 8),
-            analysis::welch_band_spectrum(force, setup.time_step, 1., 250., 5000., 8)};
+    const test::GridRun run =
+      test::roll_grid(subdivisions, dt_factor, duration,
+                      [&](const contact::ContactGrid &grid, const contact::RollingStep &step) {
+                        double s = 0.;
+                        for (unsigned int p = 0; p < grid.n_points(); ++p)
+                          if (grid.coarse_of[p] == 4)
+                            s += step.force[p];
+                        stress.push_back(s);
+                        force.push_back(step.force.sum());
+                      });
+    BOOST_TEST(run.failed_steps == 0u);
+    return {analysis::welch_band_spectrum(stress, run.time_step, 1., 250., 5000., 8),
+            analysis::welch_band_spectrum(force, run.time_step, 1., 250., 5000., 8)};
   }
 
   /// The rms over the bands of factor |a - b| [dB].
