@@ -8,15 +8,6 @@ namespace greentread
 {
   namespace analysis
   {
-    namespace
-    {
-      constexpr Discretisation all[] = {Discretisation::time_step, Discretisation::contact_grid,
-                                        Discretisation::mode_cutoff, Discretisation::ring_section,
-                                        Discretisation::block_mesh};
-    } // namespace
-
-
-
     std::string
     label(const Discretisation d)
     {
@@ -100,7 +91,7 @@ namespace greentread
       {
         const auto chosen = dealii::Utilities::split_string_list(prm.get("Estimates"));
         estimates.clear();
-        for (const Discretisation d : all)
+        for (const Discretisation d : all_discretisations)
           if (std::find(chosen.begin(), chosen.end(), describe(d)) != chosen.end())
             estimates.push_back(d);
         window_lines = prm.get_integer("Lines in the lowest band");

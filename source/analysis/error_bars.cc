@@ -81,9 +81,9 @@ namespace greentread
                 {
                   // The low-rate run against the run at the scene's step,
                   // over that run's record: no run of its own.
-                  e.window = plan[0].steps * plan[0].time_step;
-                  e.factor =
-                    1. + richardson_factor(plan[i].time_step / plan[0].time_step, time_step_order);
+                  e.window    = plan[0].steps * plan[0].time_step;
+                  e.ratio     = plan[i].time_step / plan[0].time_step;
+                  e.factor    = 1. + richardson_factor(e.ratio, time_step_order);
                   e.run.steps = 0;
                   estimates.push_back(e);
                   continue;
@@ -95,7 +95,8 @@ namespace greentread
                   // the low bands far more than the step's own error
                   // (doc/methods/analysis.md).
                   step     = 0.5 * plan[i].time_step;
-                  e.factor = 1. + richardson_factor(2., time_step_order);
+                  e.ratio  = 2.;
+                  e.factor = 1. + richardson_factor(e.ratio, time_step_order);
                   e.run.name =
                     (plan[i].name.empty() ? "" : plan[i].name + "_") + "finer_" + label(d);
                 }
@@ -103,13 +104,19 @@ namespace greentread
                 {
                   if (subdivisions < 2)
                     continue;
-                  e.factor = richardson_factor(double(subdivisions) / (subdivisions / 2),
-                                               contact_grid_order);
+                  e.ratio  = double(subdivisions) / (subdivisions / 2);
+                  e.factor = richardson_factor(e.ratio, contact_grid_order);
                 }
               else if (d == Discretisation::ring_section)
-                e.factor = richardson_factor(2., ring_section_order);
+                {
+                  e.ratio  = 2.;
+                  e.factor = richardson_factor(e.ratio, ring_section_order);
+                }
               else if (d == Discretisation::block_mesh)
-                e.factor = richardson_factor(block_mesh_ratio, block_mesh_order);
+                {
+                  e.ratio  = block_mesh_ratio;
+                  e.factor = richardson_factor(e.ratio, block_mesh_order);
+                }
               // Whole steps of the other level, both levels over the same
               // record (the window: the other run's duration, whole steps
               // of the run's own step too).

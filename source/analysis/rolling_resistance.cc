@@ -107,23 +107,54 @@ namespace greentread
 
 
     double
-    rolling_resistance_step_error(const RollingResistance   &run,
-                                  const std::vector<double> &work,
-                                  const double               dt,
-                                  const std::vector<double> &finer_work,
-                                  const double               finer_dt,
-                                  const double               window,
-                                  const double               skip_fraction)
+    RollingResistance::coefficient_total_error() const
+    {
+      double sum = coefficient_error * coefficient_error;
+      for (const auto &[d, e] : coefficient_errors)
+        if (std::isfinite(e))
+          sum += e * e;
+      return std::sqrt(sum);
+    }
+
+
+
+    double
+    rolling_resistance_factor(const EstimateRun &estimate)
+    {
+      switch (estimate.what)
+        {
+          case Discretisation::time_step:
+            return 1. + richardson_factor(estimate.ratio, rolling_resistance_order);
+          case Discretisation::mode_cutoff:
+            return estimate.factor;
+          case Discretisation::contact_grid:
+          case Discretisation::ring_section:
+          case Discretisation::block_mesh:
+            return richardson_factor(estimate.ratio, rolling_resistance_order);
+        }
+      return NAN;
+    }
+
+
+
+    double
+    rolling_resistance_level_error(const RollingResistance   &run,
+                                   const std::vector<double> &work,
+                                   const double               dt,
+                                   const std::vector<double> &other_work,
+                                   const double               other_dt,
+                                   const double               window,
+                                   const double               factor,
+                                   const double               skip_fraction)
     {
       if (!std::isfinite(run.coefficient))
         return NAN;
-      const double from   = skip_fraction * window;
-      const double coarse = mean_power(work, dt, from, window);
-      const double fine   = mean_power(finer_work, finer_dt, from, window);
-      if (coarse == 0.)
+      const double from  = skip_fraction * window;
+      const double own   = mean_power(work, dt, from, window);
+      const double other = mean_power(other_work, other_dt, from, window);
+      if (own == 0.)
         return NAN;
-      const double factor = 1. + 1. / (std::pow(dt / finer_dt, rolling_resistance_step_order) - 1.);
-      return std::abs(fine / coarse - 1.) * factor * std::abs(run.coefficient);
+      return std::abs(other / own - 1.) * factor * std::abs(run.coefficient);
     }
 
 
@@ -136,17 +167,21 @@ namespace greentread
       for (const auto &r : runs)
         {
           const RollingResistance &v = r.value;
-          if (!std::isfinite(v.coefficient_step_error))
+          if (v.coefficient_errors.empty())
             continue;
           if (!header)
-            out << "Rolling resistance the texture adds, with the time step's error bar (half the "
-                   "step over its error bar's window, order "
-                << format_number(rolling_resistance_step_order) << "):\n";
+            out << "Rolling resistance the texture adds, with the standard error and the "
+                   "discretisations' error bars (each from its other level over the error bars' "
+                   "window, order "
+                << format_number(rolling_resistance_order)
+                << " but the mode cut-off's), in 1e-3:\n";
           header = true;
           out << "    " << r.run << ": C_RR " << format_printf("%.3g", 1e3 * v.coefficient)
-              << " +- " << format_printf("%.2g", 1e3 * v.coefficient_error)
-              << " (standard error) +- " << format_printf("%.2g", 1e3 * v.coefficient_step_error)
-              << " (time step) x 1e-3\n";
+              << " +- " << format_printf("%.2g", 1e3 * v.coefficient_error) << " (standard error)";
+          for (const auto &[d, e] : v.coefficient_errors)
+            out << " +- " << format_printf("%.2g", 1e3 * e) << " (" << describe(d) << ")";
+          out << ", together +- " << format_printf("%.2g", 1e3 * v.coefficient_total_error())
+              << '\n';
         }
     }
 
@@ -164,12 +199,17 @@ namespace greentread
           << "# The rolling resistance the texture adds (doc/methods/analysis.md): the mean "
              "power the contact forces put into the tyre after the start, P, and F_RR = P / V, "
              "C_RR = F_RR / F_z, each with its standard error (se, from 10 segments); "
-             "coefficient_step_error: the time step's error bar on C_RR (from the level at half "
-             "the step, at order 1; empty where none was rolled); level: a run of the plan, or of "
+             "coefficient_<discretisation>_error: that discretisation's error bar on C_RR "
+             "(from its other level over the error bars' window, at order 1 but the mode "
+             "cut-off's; empty where none was rolled), coefficient_total_error: the standard "
+             "error and the error bars in quadrature; level: a run of the plan, or of "
              "an error bar's other level (its short window); the hysteresis of a turning tyre is "
              "not in it.\n"
              "road,mpd_mm,speed_kmh,run,level,dt_us,distance_m,skipped_m,load_N,power_W,power_se_W,"
-             "force_N,force_se_N,coefficient,coefficient_se,coefficient_step_error\n";
+             "force_N,force_se_N,coefficient,coefficient_se";
+        for (const Discretisation d : all_discretisations)
+          f.stream() << ",coefficient_" << label(d) << "_error";
+        f.stream() << ",coefficient_total_error\n";
         for (const auto &r : runs)
           {
             const RollingResistance &v = r.value;
@@ -178,9 +218,17 @@ namespace greentread
                        << (r.error_bar ? "error bar" : "plan") << ',' << 1e6 * r.time_step << ','
                        << r.distance << ',' << v.skipped * V << ',' << v.load << ',' << v.power
                        << ',' << v.power_error << ',' << v.force << ',' << v.force_error << ','
-                       << v.coefficient << ',' << v.coefficient_error << ',';
-            if (std::isfinite(v.coefficient_step_error))
-              f.stream() << v.coefficient_step_error;
+                       << v.coefficient << ',' << v.coefficient_error;
+            for (const Discretisation d : all_discretisations)
+              {
+                f.stream() << ',';
+                const auto e = v.coefficient_errors.find(d);
+                if (e != v.coefficient_errors.end() && std::isfinite(e->second))
+                  f.stream() << e->second;
+              }
+            f.stream() << ',';
+            if (std::isfinite(v.coefficient))
+              f.stream() << v.coefficient_total_error();
             f.stream() << '\n';
           }
         record.write_comments(f.stream());
@@ -215,12 +263,9 @@ namespace greentread
             continue;
           for (const auto *r : sorted)
             {
-              // The standard error and the time step's error bar in quadrature.
               const RollingResistance &v = r->value;
-              const double             step =
-                std::isfinite(v.coefficient_step_error) ? v.coefficient_step_error : 0.;
               data << 1e3 * r->mpd << ' ' << 1e3 * v.coefficient << ' '
-                   << 1e3 * std::hypot(v.coefficient_error, step) << '\n';
+                   << 1e3 * v.coefficient_total_error() << '\n';
             }
           data << "e\n";
           plot << (block++ ? ", " : "plot ") << "'-' using 1:2:3 with yerrorlines lw 2 pt 7 title '"
@@ -232,7 +277,7 @@ namespace greentread
                      "set grid\nset xlabel 'mean profile depth MPD [mm]'\n"
                      "set ylabel 'C_{RR} added by the texture [10^{-3}]'\nset key top left\n"
                      "set title 'GreenTread: rolling resistance the texture adds (error bars: "
-                     "standard error and time step)'\n" +
+                     "standard error and discretisations)'\n" +
                        plot.str() + "\n" + data.str(),
                      record);
     }

@@ -181,15 +181,15 @@ namespace greentread
                           s.time_step, s.time_step * s.force_history.size() * c.speed_kmh / 3.6,
                           s.rolling_resistance});
         }
-      // The time step's error bar: each level at half a run's step against
-      // that run, over the level's window.
+      // The error bars: each other level against its run of the plan, over
+      // the level's window.
       for (std::size_t k = 0; k < jobs.size(); ++k)
         {
           if (jobs[k].estimate < 0)
             continue;
           const StudyCase   &c        = cases[jobs[k].study_case];
           const EstimateRun &estimate = c.estimates[jobs[k].estimate];
-          if (estimate.what != Discretisation::time_step || estimate.run.steps == 0)
+          if (estimate.run.steps == 0)
             continue;
           const auto of = std::find_if(jobs.begin(), jobs.end(), [&](const StudyJob &j) {
             return j.study_case == jobs[k].study_case && j.estimate < 0 &&
@@ -199,10 +199,12 @@ namespace greentread
             throw NumericalError("Study::rolling_resistance: no run of the plan for the level '" +
                                  estimate.run.name + "'");
           const std::size_t  j   = of - jobs.begin();
-          const RunSpectrum &run = job_spectra[j], &finer = job_spectra[k];
-          runs[j].value.coefficient_step_error =
-            rolling_resistance_step_error(run.rolling_resistance, run.step_work, run.time_step,
-                                          finer.step_work, finer.time_step, estimate.window);
+          const RunSpectrum &run = job_spectra[j], &other = job_spectra[k];
+          const double       e = rolling_resistance_level_error(
+                  run.rolling_resistance, run.step_work, run.time_step, other.step_work, other.time_step,
+                  estimate.window, rolling_resistance_factor(estimate));
+          if (std::isfinite(e))
+            runs[j].value.coefficient_errors[estimate.what] = e;
         }
       return runs;
     }

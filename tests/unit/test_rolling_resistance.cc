@@ -4,7 +4,9 @@
 // work equals the change of the modes' energy plus what their damping
 // dissipates, and over a long run the dissipation alone. A second method,
 // the forces on the road's slopes, and a flat road that takes no power. The
-// time step's error bar against a run at an eighth of the step.
+// time step's error bar against a run at an eighth of the step, and the
+// contact grid's against a grid four times as fine.
+#include "grid_rolling.h"
 #include "patch_rolling.h"
 #include "synthetic_patch.h"
 
@@ -262,16 +264,21 @@ BOOST_AUTO_TEST_CASE(the_time_steps_error_bar_against_a_refined_step)
   const road::Texture texture = road::synthetic_texture(bands, levels, 3.84e-4, 8192, 64, 3);
 
   test::RollingCase c; // 3 m at 50 km/h, 600 N, one road sample per step
-  c.speed_kmh             = 50.;
-  c.distance              = 3.;
-  const Run         run   = roll(model, texture, c);
-  test::RollingCase level = c; // half the step over 0.3 m (21.6 ms)
-  level.dt_factor         = 0.5;
-  level.distance          = 0.3;
-  const Run    finer      = roll(model, texture, level);
-  const double window     = level.distance / (c.speed_kmh / 3.6);
-  const double estimate   = analysis::rolling_resistance_step_error(
-      run.value, run.step_work, run.dt, finer.step_work, finer.dt, window);
+  c.speed_kmh                  = 50.;
+  c.distance                   = 3.;
+  const Run         run        = roll(model, texture, c);
+  test::RollingCase level      = c; // half the step over 0.3 m (21.6 ms)
+  level.dt_factor              = 0.5;
+  level.distance               = 0.3;
+  const Run             finer  = roll(model, texture, level);
+  const double          window = level.distance / (c.speed_kmh / 3.6);
+  analysis::EstimateRun half_step; // the scene's level at half the step
+  half_step.what        = analysis::Discretisation::time_step;
+  half_step.ratio       = 2.;
+  const double estimate = analysis::rolling_resistance_level_error(
+    run.value, run.step_work, run.dt, finer.step_work, finer.dt, window,
+    analysis::rolling_resistance_factor(half_step));
+  BOOST_TEST(analysis::rolling_resistance_factor(half_step) == 2.);
   std::vector<double> refined_c;
   for (const double factor : {0.5, 0.25, 0.125})
     {
@@ -295,6 +302,62 @@ BOOST_AUTO_TEST_CASE(the_time_steps_error_bar_against_a_refined_step)
   const std::vector<double> work = {1., 2., 3., 4.};
   BOOST_TEST(analysis::mean_power(work, 0.5, 0.5, 1.5) == 2.5 / 0.5);
   BOOST_CHECK_THROW(analysis::mean_power(work, 0.5, 2., 3.), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(the_contact_grids_error_bar_against_a_refined_grid)
+{
+  // The synthetic patch on a contact grid over road-A (grid_rolling.h): the
+  // run on 4 subdivisions, its coarser level on 2 over a short window as the
+  // scene rolls it, and the refined runs on 8 and 16. The error bar at order
+  // 1 against the run's measured distance from the grid of 16.
+  struct Power
+  {
+    std::vector<double>         work;
+    analysis::RollingResistance value;
+    double                      dt = 0.;
+  };
+  const auto roll = [](const unsigned int subdivisions, const double duration) {
+    Power                                        p;
+    std::unique_ptr<analysis::RollingPowerMeter> meter;
+    const test::GridRun                          run = test::roll_grid(
+                               subdivisions, 1., duration,
+                               [&](const contact::ContactGrid &, const contact::RollingStep &step) {
+        meter->add(step);
+      },
+                               [&](const contact::StaticContact &start, const double dt) {
+        meter = std::make_unique<analysis::RollingPowerMeter>(start.u, dt);
+      });
+    BOOST_TEST(run.failed_steps == 0u);
+    p.work  = meter->step_work();
+    p.value = meter->result(run.speed);
+    p.dt    = run.time_step;
+    return p;
+  };
+  // 2.5 m, within the synthetic road's 3.07 m, and a window of 0.5 m, about
+  // the scene's error bars' window on the main job (0.2 to 0.34 m).
+  const double duration = 0.1, window = 0.02;
+  const Power  run = roll(4, duration), coarser = roll(2, window);
+  const Power  finer = roll(8, duration), finest = roll(16, duration);
+
+  analysis::EstimateRun grid; // the scene's coarser grid: the subdivisions halved
+  grid.what  = analysis::Discretisation::contact_grid;
+  grid.ratio = 2.;
+  const double estimate =
+    analysis::rolling_resistance_level_error(run.value, run.work, run.dt, coarser.work, coarser.dt,
+                                             window, analysis::rolling_resistance_factor(grid));
+  const double measured = std::abs(run.value.coefficient - finest.value.coefficient);
+  BOOST_TEST_MESSAGE("C_RR on 2 (over the window), 4, 8 and 16 subdivisions: "
+                     << coarser.value.coefficient << ", " << run.value.coefficient << " +- "
+                     << run.value.coefficient_error << ", " << finer.value.coefficient << ", "
+                     << finest.value.coefficient << "; the error bar " << estimate
+                     << ", the difference from 16: " << measured << " (ratio "
+                     << estimate / measured << ")");
+  // Measured 2.88: the coefficient converges at order 1.45 from 4 to 16
+  // subdivisions (0.047 and 0.017 x 1e-3 from each grid to the next), above
+  // the order 1 assumed, and the coarser level on 2 is further from its
+  // limit than that order says.
+  BOOST_TEST(estimate / measured >= 0.75);
+  BOOST_TEST(estimate / measured <= 3.);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -28,13 +29,17 @@ namespace greentread
       block_mesh
     };
 
+    /// Every discretisation, in the order of the enumeration.
+    inline constexpr Discretisation all_discretisations[] = {
+      Discretisation::time_step, Discretisation::contact_grid, Discretisation::mode_cutoff,
+      Discretisation::ring_section, Discretisation::block_mesh};
+
     /// Subsection "Error bars".
     struct ErrorBarParameters
     {
       /// The discretisations estimated, in the order of 'Estimates'.
-      std::vector<Discretisation> estimates = {
-        Discretisation::time_step, Discretisation::contact_grid, Discretisation::mode_cutoff,
-        Discretisation::ring_section, Discretisation::block_mesh};
+      std::vector<Discretisation> estimates = {std::begin(all_discretisations),
+                                               std::end(all_discretisations)};
       /// The Fourier lines the lowest band of a coarser run's window holds.
       unsigned int window_lines = 4;
       /// The coarser level's mode cut-off over 'Patch model/Mode cutoff'.

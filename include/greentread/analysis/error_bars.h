@@ -82,6 +82,10 @@ namespace greentread
       /// scene's step); for the mode cutoff set by the scene, from the two
       /// levels' errors against the direct lines.
       double factor = 0.;
+      /// The ratio of the two levels' step, rectangle or element size (the
+      /// run's over the finer level's for the time step, the coarser
+      /// level's over the run's otherwise); 0 for the mode cut-off.
+      double ratio = 0.;
     };
 
     /**

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <greentread/analysis/error_bars.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
 
@@ -7,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -40,16 +42,39 @@ namespace greentread
       double       skipped  = 0.;                            ///< the start left out [s]
       double       duration = 0.;                            ///< the record averaged [s]
       unsigned int segments = 0;                             ///< of the standard error
-      /// The time step's error bar on the coefficient (rolling_resistance_step_error());
-      /// NaN where no level at a finer step was rolled.
-      double coefficient_step_error = NAN;
+      /// The discretisations' error bars on the coefficient
+      /// (rolling_resistance_level_error()), those whose other level was rolled.
+      std::map<Discretisation, double> coefficient_errors;
+
+      /// The standard error and the error bars in quadrature.
+      double
+      coefficient_total_error() const;
     };
 
-    /// The order in the time step the rolling resistance's error bar assumes:
-    /// 1, below the spectra's 2 and below the orders benchmarks/rolling_resistance
-    /// measures (1.5 to 1.75 on the main job's ring, 1.2 to 1.4 on the coarse
-    /// ring), so that the error bar does not understate the error.
-    constexpr double rolling_resistance_step_order = 1.;
+    /**
+     * The order the rolling resistance's error bars assume in the time step,
+     * the contact grid, the ring section and the blocks' mesh: 1. In the time
+     * step it is below the spectra's 2 and below the orders
+     * benchmarks/rolling_resistance measures (1.5 to 1.75 on the main job's
+     * ring, 1.2 to 1.4 on the coarse ring), so that the error bar does not
+     * understate the error; in the others the rolling resistance's order is
+     * not measured, and 1 is below the band levels' (1.5 in the grid and the
+     * section, analysis/error_bars.h) and equal to the blocks'.
+     */
+    constexpr double rolling_resistance_order = 1.;
+
+    /**
+     * @brief The factor that scales the relative change of the mean power
+     * from a run to its other level of @p estimate into the run's error
+     * bar: 1 + richardson_factor() at rolling_resistance_order for the time
+     * step (the other level is finer), richardson_factor() at that order for
+     * the contact grid, the ring section and the blocks' mesh (coarser), and
+     * the estimate's own factor for the mode cut-off (how much closer to the
+     * direct lines the finer modes are: a property of the modal model, not
+     * of the band levels).
+     */
+    double
+    rolling_resistance_factor(const EstimateRun &estimate);
 
     /**
      * @brief The mean power [W] of a work record @p work (one value per step
@@ -61,26 +86,28 @@ namespace greentread
     mean_power(const std::vector<double> &work, double dt, double from, double to);
 
     /**
-     * @brief The time step's error bar on the coefficient of @p run, whose
-     * work record @p work is at step @p dt, from a level at the finer step
-     * @p finer_dt (@p finer_work) rolled over the same road from the same
-     * start for @p window [s]: over that window after its first
+     * @brief A discretisation's error bar on the coefficient of @p run, whose
+     * work record @p work is at step @p dt, from its other level
+     * (@p other_work at step @p other_dt) rolled over the same road from the
+     * same start for @p window [s]: over that window after its first
      * @p skip_fraction, the relative change of the mean power, scaled to
-     * the run's error at rolling_resistance_step_order and applied to the
-     * run's coefficient: |P_finer / P - 1| (1 + 1 / (r^p - 1)) C_RR with
-     * r = dt / finer_dt. The relative change, not the absolute: the window is
-     * short and its vibration still building up, while the share of the
-     * power a step misses is the same over any window (doc/methods/analysis.md).
+     * the run's error by @p factor (rolling_resistance_factor()) and applied
+     * to the run's coefficient: |P_other / P - 1| factor C_RR. For the time
+     * step at half the step, factor = 1 + 1 / (2^p - 1). The relative change,
+     * not the absolute: the window is short and its vibration still building
+     * up, while the share of the power a discretisation misses is nearly the
+     * same over any window (doc/methods/analysis.md).
      * @return NaN if the run has no coefficient or the window's power is 0.
      */
     double
-    rolling_resistance_step_error(const RollingResistance   &run,
-                                  const std::vector<double> &work,
-                                  double                     dt,
-                                  const std::vector<double> &finer_work,
-                                  double                     finer_dt,
-                                  double                     window,
-                                  double                     skip_fraction = 0.2);
+    rolling_resistance_level_error(const RollingResistance   &run,
+                                   const std::vector<double> &work,
+                                   double                     dt,
+                                   const std::vector<double> &other_work,
+                                   double                     other_dt,
+                                   double                     window,
+                                   double                     factor,
+                                   double                     skip_fraction = 0.2);
 
     /**
      * @brief The work the contact forces do on the tyre, step by step: each
@@ -132,8 +159,9 @@ namespace greentread
       RollingResistance value;
     };
 
-    /// A line on @p out for each run of @p runs with a time step's error bar:
-    /// its coefficient, standard error and error bar (none if no run has one).
+    /// A line on @p out for each run of @p runs with an error bar: its
+    /// coefficient, standard error and each discretisation's error bar (none
+    /// if no run has one).
     void
     print_rolling_resistance_errors(std::ostream                            &out,
                                     const std::vector<RunRollingResistance> &runs);
@@ -142,7 +170,7 @@ namespace greentread
      * @brief rolling_resistance.csv (every run, those of the error bars'
      * other levels marked) and rolling_resistance.png (the coefficient
      * against the roads' MPD, one line per speed, with its standard error
-     * and its time step's error bar combined,
+     * and its error bars combined in quadrature,
      * from each case's run of the plan at the finest time step: a coarser
      * step resolves less of the power), under temporary names renamed when
      * complete.

@@ -134,9 +134,9 @@ namespace greentread
       /**
        * @brief Every job's rolling resistance (RunSpectrum::rolling_resistance),
        * in the order of #jobs, as rolling_resistance.csv lists it, @p mpd
-       * giving each road's: each run of the plan whose time step has a
-       * level at half the step gets that level's error bar
-       * (rolling_resistance_step_error(), over the level's window).
+       * giving each road's: each run of the plan gets an error bar from each
+       * of its other levels that was rolled (rolling_resistance_level_error(),
+       * over the level's window, scaled by rolling_resistance_factor()).
        */
       std::vector<RunRollingResistance>
       rolling_resistance(const std::vector<RunSpectrum> &job_spectra,
