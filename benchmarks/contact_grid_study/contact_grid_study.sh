@@ -7,7 +7,9 @@
 # run time, the points in contact, the mean force, and the largest band-level
 # difference (100 Hz to 5 kHz) of the stress at the patch centre (the mean over
 # the reporting cell) and of the total force against the next finer grid and
-# the finest; then both spectra band by band on the two finest grids.
+# the finest, and the rolling resistance's coefficient with its standard
+# error, the scene's contact grid error bar on it and its distance from the
+# finest grid's; then both spectra band by band on the two finest grids.
 #
 #   bash benchmarks/contact_grid_study/contact_grid_study.sh [--quick] [--output DIR] \
 #     [main job's output] [program] [runs directory] [subdivisions...]
@@ -96,6 +98,18 @@ difference() {
       printf "%.6f %d", worst, at
     }' "$work/$1/$4$3_90kmh.csv" "$work/$2/$4$3_90kmh.csv"
 }
+# The rolling resistance of road $2 in run $1, from its run of the plan at
+# the finest step: "C_RR se grid_error" (the scene's contact grid error bar;
+# none where the grid has no coarser level).
+resistance() {
+  awk -F, -v road="$2" '
+    !/^#/ && $1 == road && $5 == "plan" && (dt == "" || $6 < dt) {
+      dt = $6; c = $14; se = $15; e = ($17 == "" ? "none" : $17)
+    }
+    END { printf "%s %s %s", c, se, e }' "$work/$1/rolling_resistance.csv"
+}
+# A coefficient in 1e-3 to three digits, or none.
+milli() { [[ "$1" == none ]] && echo "" || awk -v c="$1" 'BEGIN { printf "%.3g", 1e3 * c }'; }
 # A difference as the table gives it: "0.12 (800 Hz)".
 shown() { [[ -z "$1" ]] || awk -v d="${1% *}" -v at="${1#* }" 'BEGIN { printf "%.2f (%d Hz)", d, at }'; }
 # A difference as the CSV gives it: "0.123456,800", or "none,none".
@@ -112,8 +126,8 @@ run point_1 --set "Contact grid/Subdivisions=1" --set "Road texture/Between poin
 run "point_$fine_rule" --set "Contact grid/Subdivisions=$fine_rule" --set "Road texture/Between points=point"
 
 echo "Contact grid: $(echo "${roads[*]}" | sed 's/ / and /') at 90 km/h over 1.2 m (3125 steps of 15.36 us); levels 100 Hz to 5 kHz; solver: $solver"
-echo "| grid (s) | contact rectangle [mm] | points | road | run time [s] | per step [ms] | points in contact | mean force [N] | stress: highest band, centroid | largest difference to the next finer grid [dB] | to the finest | force: highest band | to the next finer grid [dB] | to the finest |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| grid (s) | contact rectangle [mm] | points | road | run time [s] | per step [ms] | points in contact | mean force [N] | stress: highest band, centroid | largest difference to the next finer grid [dB] | to the finest | force: highest band | to the next finer grid [dB] | to the finest | C_RR [1e-3] | its standard error | the scene's contact grid error bar | C_RR to the finest |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 row() {
   local label=$1 name=$2 s=$3 next=$4 road=$5
   IFS='|' read -r seconds ms contact force stress peak <<< "$(figures "$name" "$road")"
@@ -126,13 +140,18 @@ row() {
     sf=$(difference "$name" "grid_$finest" "$road" spectrum_)
     ff=$(difference "$name" "grid_$finest" "$road" spectrum_force_)
   fi
-  echo "| $label | $(spacing "$s") | $(( 120 * s * s )) | $road | $seconds | $ms | $contact | $force | $stress | $(shown "$sn") | $(shown "$sf") | $peak | $(shown "$fn") | $(shown "$ff") |"
+  local rr_c rr_se rr_e rr_finest rr_to
+  read -r rr_c rr_se rr_e <<< "$(resistance "$name" "$road")"
+  read -r rr_finest _ <<< "$(resistance "grid_$finest" "$road")"
+  rr_to=$(awk -v a="$rr_c" -v b="$rr_finest" 'BEGIN { d = a - b; printf "%.6g", d < 0 ? -d : d }')
+  [[ "$name" == "grid_$finest" ]] && rr_to=none
+  echo "| $label | $(spacing "$s") | $(( 120 * s * s )) | $road | $seconds | $ms | $contact | $force | $stress | $(shown "$sn") | $(shown "$sf") | $peak | $(shown "$fn") | $(shown "$ff") | $(milli "$rr_c") | $(milli "$rr_se") | $(milli "$rr_e") | $(milli "$rr_to") |"
   # "1000 Hz, 59.7 dB; centroid 1005 Hz" and "3% to 5%" as numbers.
   local band level centroid
   read -r band level centroid <<< "$(sed 's/ Hz, / /; s/ dB; centroid / /; s/ Hz$//' <<< "$stress")"
-  echo "grids,$s,$rule,$(( 120 * s * s )),$road,$seconds,$ms,$(sed 's/% to /,/; s/%$//' <<< "$contact"),$force,$band,$level,$centroid,$(fields "$sn"),$(fields "$sf"),${peak% Hz},$(fields "$fn"),$(fields "$ff"),none,none,none" >> "$work/table.csv"
+  echo "grids,$s,$rule,$(( 120 * s * s )),$road,$seconds,$ms,$(sed 's/% to /,/; s/%$//' <<< "$contact"),$force,$band,$level,$centroid,$(fields "$sn"),$(fields "$sf"),${peak% Hz},$(fields "$fn"),$(fields "$ff"),none,none,none,$rr_c,$rr_se,$rr_e,$rr_to" >> "$work/table.csv"
 }
-echo "table,grid,rule,points,road,run_time_s,ms_per_step,contact_min_pct,contact_max_pct,mean_force_N,stress_highest_band_Hz,stress_highest_dB,stress_centroid_Hz,stress_to_next_dB,stress_to_next_band_Hz,stress_to_finest_dB,stress_to_finest_band_Hz,force_highest_band_Hz,force_to_next_dB,force_to_next_band_Hz,force_to_finest_dB,force_to_finest_band_Hz,band_Hz,stress_dB,force_dB" > "$work/table.csv"
+echo "table,grid,rule,points,road,run_time_s,ms_per_step,contact_min_pct,contact_max_pct,mean_force_N,stress_highest_band_Hz,stress_highest_dB,stress_centroid_Hz,stress_to_next_dB,stress_to_next_band_Hz,stress_to_finest_dB,stress_to_finest_band_Hz,force_highest_band_Hz,force_to_next_dB,force_to_next_band_Hz,force_to_finest_dB,force_to_finest_band_Hz,band_Hz,stress_dB,force_dB,rr_coefficient,rr_coefficient_se,rr_grid_error,rr_to_finest" > "$work/table.csv"
 for road in "${roads[@]}"; do
   for i in "${!grids[@]}"; do
     s=${grids[$i]}
@@ -166,7 +185,7 @@ for road in "${roads[@]}"; do
   for s in "$fine_rule" "$finest"; do
     paste -d, <(grep -E '^[0-9]' "$work/grid_$s/spectrum_${road}_90kmh.csv" | cut -d, -f1,6) \
       <(grep -E '^[0-9]' "$work/grid_$s/spectrum_force_${road}_90kmh.csv" | cut -d, -f6) |
-      awk -F, -v s="$s" -v road="$road" '{ printf "bands,%s,envelope,%d,%s%s,%s,%.6f,%.6f\n", s, 120 * s * s, road, ",none,none,none,none,none,none,none,none,none,none,none,none,none,none,none,none,none", $1, $2, $3 }' \
+      awk -F, -v s="$s" -v road="$road" '{ printf "bands,%s,envelope,%d,%s%s,%s,%.6f,%.6f,none,none,none,none\n", s, 120 * s * s, road, ",none,none,none,none,none,none,none,none,none,none,none,none,none,none,none,none,none", $1, $2, $3 }' \
       >> "$work/table.csv"
   done
 done
