@@ -39,9 +39,7 @@ namespace greentread
         prm.enter_subsection("Tread pattern");
         density("1000");
         isotropic("7e6", "0.49", "rubber, 7 MPa, nu = 0.49");
-        loss("0.1", "a typical tread compound. The same eta gives the tread's small-scale "
-                    "losses in the rolling resistance, below the Green's functions' scale where "
-                    "the contact keeps the tread elastic (doc/methods/analysis.md).");
+        loss("0.1", "a typical tread compound.");
         prm.declare_entry(
           "Surface mass", "consistent", dealii::Patterns::Selection("consistent|moved inward"),
           "Where the mass of the tread's contact surface sits. 'consistent': the consistent mass "
