@@ -24,7 +24,7 @@
 # row does not have is 'none'. Every run uses the matrix-free solver
 # ('Contact grid/Solver' = projected CG; SOLVER=pivoting in the environment
 # for the dense one, up to s = 8), which gives the same levels as pivoting to
-# 2e-5 dB (benchmarks/contact_solvers/README.md). About 20 minutes on this 2-core machine (each run also
+# 2e-5 dB (benchmarks/contact_solvers/README.md). About 30 minutes on 2 cores (each run also
 # checks the reused modal model against the Green's functions, about 40 s).
 set -euo pipefail
 
