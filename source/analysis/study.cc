@@ -200,11 +200,15 @@ namespace greentread
                                  estimate.run.name + "'");
           const std::size_t  j   = of - jobs.begin();
           const RunSpectrum &run = job_spectra[j], &other = job_spectra[k];
-          const double       e = rolling_resistance_level_error(
-                  run.rolling_resistance, run.step_work, run.time_step, other.step_work, other.time_step,
-                  estimate.window, rolling_resistance_factor(estimate));
-          if (std::isfinite(e))
-            runs[j].value.coefficient_errors[estimate.what] = e;
+          for (const PowerPart part : all_power_parts)
+            {
+              const double e = rolling_resistance_level_error(
+                runs[j][part], part_work(part, run.step_work, run.tread_work), run.time_step,
+                part_work(part, other.step_work, other.tread_work), other.time_step,
+                estimate.window, rolling_resistance_factor(estimate));
+              if (std::isfinite(e))
+                runs[j][part].coefficient_errors[estimate.what] = e;
+            }
         }
       return runs;
     }

@@ -236,8 +236,19 @@ namespace greentread
       record.force.reserve(band_run.steps);
       unsigned int      failed_steps = 0;
       RollingPowerMeter power(equilibrium.u, dt);
-      base::Progress    progress("    " + run, band_run.steps);
-      const auto        observe = [&](const contact::RollingStep &step) {
+      // The tread's losses: the local term's displacement under each step's
+      // end force, the finite blocks' at the step's position with it.
+      power.track_tread_losses(
+        settings.tread_loss_factor, V, TreadLossGrid{grid.nx, grid.ny, grid.dx},
+        [&](const Eigen::VectorXd &f, Eigen::VectorXd &w) {
+          w.setZero(f.size());
+          grid.add_local(f, w);
+          if (block_state != nullptr)
+            block_state->add_product(f, w);
+        },
+        equilibrium.q);
+      base::Progress progress("    " + run, band_run.steps);
+      const auto     observe = [&](const contact::RollingStep &step) {
         if (!step.report.converged && failed_steps < 5)
           printer.out << "    step " << step.step << " (" << run
                       << ", t = " << format_short(step.time)
@@ -269,14 +280,20 @@ namespace greentread
       progress.finish();
       report_run(printer.out, run, record, summary, equilibrium.q.sum(), failed_steps,
                  base::seconds_since(t_run), settings.print_timings);
-      const RollingResistance resistance = power.result(V);
-      printer.out << "    " << run << ": rolling resistance the texture adds: "
-                  << format_printf("%.4g", resistance.force) << " +- "
-                  << format_printf("%.2g", resistance.force_error) << " N, C_RR "
-                  << format_printf("%.3g", 1e3 * resistance.coefficient) << " +- "
-                  << format_printf("%.2g", 1e3 * resistance.coefficient_error)
-                  << " x 1e-3 (after the first " << format_printf("%.3g", resistance.skipped * V)
-                  << " m)\n";
+      std::array<RollingResistance, 3> resistance;
+      for (const PowerPart part : all_power_parts)
+        resistance[static_cast<std::size_t>(part)] = power.result(V, 0.2, 10, part);
+      const RollingResistance &sum = resistance[static_cast<std::size_t>(PowerPart::sum)];
+      printer.out << "    " << run
+                  << ": rolling resistance the texture adds: " << format_printf("%.4g", sum.force)
+                  << " +- " << format_printf("%.2g", sum.force_error) << " N, C_RR "
+                  << format_printf("%.3g", 1e3 * sum.coefficient) << " +- "
+                  << format_printf("%.2g", 1e3 * sum.coefficient_error) << " x 1e-3, of which "
+                  << format_printf("%.3g", 1e3 * resistance[0].coefficient)
+                  << " into the structure and "
+                  << format_printf("%.3g", 1e3 * resistance[1].coefficient)
+                  << " the tread's losses (after the first "
+                  << format_printf("%.3g", sum.skipped * V) << " m)\n";
 
       RunSpectrum spectra_of_run{road_name,
                                  speed_kmh,
@@ -288,7 +305,8 @@ namespace greentread
                                  std::move(point_forces),
                                  run,
                                  resistance,
-                                 power.step_work()};
+                                 power.step_work(),
+                                 power.tread_step_work()};
       if (write_outputs)
         {
           if (!record.final_spectra)

@@ -333,7 +333,8 @@ namespace greentread
           s.u = uh;
           for (unsigned int g = 0; g < 4; ++g)
             convolution::add_influence(conv.influence(), g, load.component[g], s.u);
-          s.force = load.impulse(dt) / dt;
+          s.force     = load.impulse(dt) / dt;
+          s.end_force = load.component[2];
           if (!s.force.allFinite() || !s.u.allFinite())
             throw NumericalError("rolling contact: the contact forces or displacements are not "
                                  "finite at step " +

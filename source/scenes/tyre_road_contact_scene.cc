@@ -394,8 +394,13 @@ namespace greentread
         static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n_runs)));
       if (side_by_side > 1)
         std::cout << "  " << n_runs << " runs, " << side_by_side << " at a time\n";
-      const analysis::RunSettings settings{
-        rolling, spectra, directory, record, global.print_timings, sound.enabled()};
+      const analysis::RunSettings        settings{rolling,
+                                           spectra,
+                                           directory,
+                                           record,
+                                           global.print_timings,
+                                           sound.enabled(),
+                                           materials.tread_loss};
       std::vector<analysis::RunSpectrum> job_spectra(n_runs);
       base::for_each_index(n_runs, side_by_side, [&](const std::size_t k, unsigned int) {
         const analysis::StudyJob  &job = study.jobs[k];

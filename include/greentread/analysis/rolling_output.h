@@ -154,12 +154,14 @@ namespace greentread
       /// each Green's-function point's rectangle [N], one history per
       /// point (a run of the plan only: an error bar's level keeps none).
       std::vector<std::vector<double>> point_forces;
-      /// The run's name (road_V[_low-rate]) and its rolling resistance.
-      std::string       run;
-      RollingResistance rolling_resistance;
-      /// The contact forces' work at each step (RollingPowerMeter::step_work()):
-      /// the rolling resistance's error bar compares it between levels.
-      std::vector<double> step_work;
+      /// The run's name (road_V[_low-rate]) and its rolling resistance, each
+      /// part in the order of all_power_parts.
+      std::string                      run;
+      std::array<RollingResistance, 3> rolling_resistance;
+      /// The contact forces' work on the structure and the tread's losses at
+      /// each step (RollingPowerMeter::step_work(), tread_step_work()): the
+      /// rolling resistance's error bars compare them between levels.
+      std::vector<double> step_work, tread_work;
     };
 
     /**

@@ -1,24 +1,32 @@
 #pragma once
 
 #include <greentread/analysis/error_bars.h>
+#include <greentread/analysis/tread_losses.h>
 #include <greentread/base/output.h>
 #include <greentread/contact/patch_contact.h>
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 /**
  * @file
- * The rolling resistance a road's texture adds, from a rolling run: the
- * mean power the contact forces put into the tyre, P = <sum_i f_i du_i/dt>,
- * as a force F_RR = P / V and a coefficient F_RR / F_z, each with its
- * standard error. Implemented in source/analysis/rolling_resistance.cc.
+ * The rolling resistance a road's texture adds, from a rolling run, in two
+ * parts: the mean power the contact forces put into the tyre's structure,
+ * P = <sum_i f_i du_i/dt> (its modes' damping dissipates it), and the
+ * tread's small-scale losses (greentread/analysis/tread_losses.h: the
+ * rubber's loss factor in the deformation below the Green's functions'
+ * scale, which the contact solve treats as elastic); each part and their sum
+ * as a force F_RR = P / V and a coefficient F_RR / F_z, with its standard
+ * error. Implemented in source/analysis/rolling_resistance.cc.
  *
  * The tyre here does not turn: its points stay under the axle while the
  * road passes, so the static deflection does no cyclic work and the
@@ -32,7 +40,24 @@ namespace greentread
 {
   namespace analysis
   {
-    /// A run's rolling resistance, each value with its standard error.
+    /// The parts of the rolling resistance (file documentation).
+    enum class PowerPart
+    {
+      structure, ///< the contact forces' work on the tyre
+      tread,     ///< the tread's small-scale losses
+      sum        ///< the two together
+    };
+
+    /// Every part, in the order rolling_resistance.csv lists them.
+    constexpr std::array<PowerPart, 3> all_power_parts = {
+      {PowerPart::structure, PowerPart::tread, PowerPart::sum}};
+
+    /// A part's prefix in rolling_resistance.csv's columns: "" for the
+    /// structure (its columns came first), "tread_", "sum_".
+    std::string
+    column_prefix(PowerPart part);
+
+    /// One part of a run's rolling resistance, each value with its standard error.
     struct RollingResistance
     {
       double       power = 0., power_error = 0.;             ///< P [W]
@@ -112,12 +137,18 @@ namespace greentread
                                    double                     factor,
                                    double                     skip_fraction = 0.2);
 
+    /// w = the local term's displacement at the contact points under the
+    /// end forces f (TreadLossMeter's w).
+    using LocalDisplacement = std::function<void(const Eigen::VectorXd &f, Eigen::VectorXd &w)>;
+
     /**
      * @brief The work the contact forces do on the tyre, step by step: each
      * step's mean force times its change of displacement, sum_i f_i (u_i(t_{n+1})
      * - u_i(t_n)). The force is linear within a step, so this is the work to
      * O((omega dt)^2). The tread layer's local compliance is elastic: its
-     * share of the work telescopes and adds nothing to the mean.
+     * share of the work telescopes and adds nothing to the mean. With
+     * track_tread_losses(), also the work the tread's rubber dissipates
+     * (TreadLossMeter); without, that part is 0.
      */
     class RollingPowerMeter
     {
@@ -125,55 +156,101 @@ namespace greentread
       /// @p u_start: the displacement at the static start (t = 0).
       RollingPowerMeter(const Eigen::VectorXd &u_start, double time_step);
 
+      /**
+       * @brief Measure the tread's losses at loss factor @p loss_factor too,
+       * at @p speed [m/s] on @p grid, the local displacement of each step's
+       * end force given by @p local, from the static start's force
+       * @p start_force.
+       */
+      void
+      track_tread_losses(double                   loss_factor,
+                         double                   speed,
+                         const TreadLossGrid     &grid,
+                         const LocalDisplacement &local,
+                         const Eigen::VectorXd   &start_force);
+
       void
       add(const contact::RollingStep &step);
 
-      /// The work of each step [J].
+      /// The contact forces' work on the structure at each step [J].
       const std::vector<double> &
       step_work() const
       {
         return work;
       }
 
+      /// The tread's losses at each step [J] (0 without track_tread_losses()).
+      const std::vector<double> &
+      tread_step_work() const
+      {
+        return tread_work;
+      }
+
       /**
-       * @brief The mean power after the first @p skip_fraction of the record
-       * (the vibration the texture excites builds up from the static start),
-       * with its standard error from the scatter of the means of
-       * @p segments consecutive segments (batch means).
+       * @brief The mean power of @p part after the first @p skip_fraction of
+       * the record (the vibration the texture excites builds up from the
+       * static start), with its standard error from the scatter of the means
+       * of @p segments consecutive segments (batch means).
        * @param speed V [m/s].
        * @return NaN values if the record has fewer steps than segments.
        * @throws NumericalError if a step's work is not finite.
        */
       RollingResistance
-      result(double speed, double skip_fraction = 0.2, unsigned int segments = 10) const;
+      result(double       speed,
+             double       skip_fraction = 0.2,
+             unsigned int segments      = 10,
+             PowerPart    part          = PowerPart::structure) const;
 
     private:
-      Eigen::VectorXd     u_last;
-      double              dt;
-      std::vector<double> work, load;
+      Eigen::VectorXd               u_last;
+      double                        dt;
+      std::vector<double>           work, tread_work, load;
+      std::optional<TreadLossMeter> tread;
+      LocalDisplacement             local;
+      Eigen::VectorXd               w;
     };
+
+    /// The work record of @p part from the structure's and the tread's.
+    std::vector<double>
+    part_work(PowerPart                  part,
+              const std::vector<double> &structure,
+              const std::vector<double> &tread);
 
     /// One run's rolling resistance, as rolling_resistance.csv lists it.
     struct RunRollingResistance
     {
-      std::string       road, run;
-      bool              error_bar = false; ///< a run of an error bar's other level, not of the plan
-      double            speed_kmh = 0., mpd = 0., time_step = 0., distance = 0.;
-      RollingResistance value;
+      std::string road, run;
+      bool        error_bar = false; ///< a run of an error bar's other level, not of the plan
+      double      speed_kmh = 0., mpd = 0., time_step = 0., distance = 0.;
+      /// Each part, in the order of all_power_parts.
+      std::array<RollingResistance, 3> parts;
+
+      const RollingResistance &
+      operator[](const PowerPart part) const
+      {
+        return parts[static_cast<std::size_t>(part)];
+      }
+
+      RollingResistance &
+      operator[](const PowerPart part)
+      {
+        return parts[static_cast<std::size_t>(part)];
+      }
     };
 
-    /// A line on @p out for each run of @p runs with an error bar: its
-    /// coefficient, standard error and each discretisation's error bar (none
-    /// if no run has one).
+    /// Lines on @p out for each run of @p runs with an error bar: each
+    /// part's coefficient, standard error and each discretisation's error
+    /// bar (none if no run has one).
     void
     print_rolling_resistance_errors(std::ostream                            &out,
                                     const std::vector<RunRollingResistance> &runs);
 
     /**
      * @brief rolling_resistance.csv (every run, those of the error bars'
-     * other levels marked) and rolling_resistance.png (the coefficient
-     * against the roads' MPD, one line per speed, with its standard error
-     * and its error bars combined in quadrature,
+     * other levels marked, each part) and rolling_resistance.png (the sum's
+     * coefficient against the roads' MPD, one line per speed, with its
+     * standard error and its error bars combined in quadrature, and the
+     * structure's part dashed,
      * from each case's run of the plan at the finest time step: a coarser
      * step resolves less of the power), under temporary names renamed when
      * complete.

@@ -134,8 +134,9 @@ namespace greentread
       /**
        * @brief Every job's rolling resistance (RunSpectrum::rolling_resistance),
        * in the order of #jobs, as rolling_resistance.csv lists it, @p mpd
-       * giving each road's: each run of the plan gets an error bar from each
-       * of its other levels that was rolled (rolling_resistance_level_error(),
+       * giving each road's: each part of each run of the plan gets an error
+       * bar from each of its other levels that was rolled
+       * (rolling_resistance_level_error() on the part's work, part_work(),
        * over the level's window, scaled by rolling_resistance_factor()).
        */
       std::vector<RunRollingResistance>

@@ -34,6 +34,9 @@ namespace greentread
       /// Keep each run's contact forces gathered on the Green's-function
       /// points (RunSpectrum::point_forces), for the sound.
       bool point_forces = false;
+      /// The tread rubber's loss factor (`Materials/Tread pattern/Loss factor`), for
+      /// the tread's small-scale losses (tread_losses.h).
+      double tread_loss_factor = 0.;
     };
 
     /**

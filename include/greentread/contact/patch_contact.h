@@ -132,6 +132,9 @@ namespace greentread
       double time = 0.;
       /// Displacement, demand (road) and the step's mean contact force.
       Eigen::VectorXd u, d, force;
+      /// The contact force at the step's end (the load's end component),
+      /// which the contact grid's local term acts on.
+      Eigen::VectorXd end_force;
       PatchStepReport report;
     };
 
