@@ -50,7 +50,6 @@ namespace greentread
                                    const Eigen::VectorXd &w_start,
                                    const double           memory)
         : eta(loss_factor)
-        , strip(speed * time_step / grid_.dx)
         , grid(grid_)
     {
       if (!std::isfinite(loss_factor) || loss_factor < 0.)
@@ -70,26 +69,41 @@ namespace greentread
                                     std::to_string(f_start.size()) + " forces and " +
                                     std::to_string(w_start.size()) + " displacements for " +
                                     std::to_string(n_points) + " points");
-      // A strip enters at the last column (position nx - 1 in columns) and
-      // is at (nx - 1) - k V dt / dx at age k; it leaves once that is below 0.
-      n_age    = static_cast<unsigned int>(std::floor((grid.nx - 1) / strip * (1. + 1e-12))) + 1;
-      n_memory = std::max(1u, static_cast<unsigned int>(std::round(memory / (speed * time_step))));
+      // A strip enters at the last column (position nx - 1 in columns)
+      // every `stride` steps, about one rectangle apart, and is at
+      // (nx - 1) - k V dt / dx at age k; it leaves once that is below 0.
+      const double step_in_columns = speed * time_step / grid.dx;
+      stride = std::max(1u, static_cast<unsigned int>(std::lround(1. / step_in_columns)));
+      strip  = stride * step_in_columns;
+      n_age =
+        static_cast<unsigned int>(std::floor((grid.nx - 1) / step_in_columns * (1. + 1e-12))) + 1;
+      n_slots  = (n_age + stride - 1) / stride + 1;
+      n_memory = std::max(1u, static_cast<unsigned int>(std::round(memory / (strip * grid.dx))));
       for (unsigned int k = 0; k < n_age; ++k)
         {
-          const double       u = std::max(0., (grid.nx - 1) - k * strip);
+          const double       u = std::max(0., (grid.nx - 1) - k * step_in_columns);
           const unsigned int i = std::min(grid.nx - 2, static_cast<unsigned int>(std::floor(u)));
           column.push_back(i);
           weight.push_back(u - i);
         }
       kernel = hysteresis_kernel(n_age);
-      history_f.assign(n_age, Eigen::MatrixXd::Zero(n_age, grid.ny));
+      history_f.assign(n_slots, Eigen::MatrixXd::Zero(n_age, grid.ny));
       history_w = history_f;
       cw.resize(n_age, grid.ny);
       // The strips that entered at time indices 1 - n_age .. 0 have spent
       // their past in the static start.
-      for (unsigned int j = 0; j < n_age; ++j) // entry at time index -j, slot (n_age - j) mod n_age
-        for (unsigned int k = 0; k <= j; ++k)
-          fill((n_age - j) % n_age, k, f_start, w_start);
+      for (long entry = 0; entry > -long(n_age); entry -= stride)
+        for (long k = 0; k <= -entry; ++k)
+          fill(slot_of(entry), static_cast<unsigned int>(k), f_start, w_start);
+    }
+
+
+
+    unsigned int
+    TreadLossMeter::slot_of(const long entry) const
+    {
+      const long s = entry / long(stride), n = long(n_slots);
+      return static_cast<unsigned int>((s % n + n) % n);
     }
 
 
@@ -121,10 +135,13 @@ namespace greentread
       const long n = next++;
       // The strip that entered at time index n - k is at age k.
       for (unsigned int k = 0; k < n_age; ++k)
-        fill(static_cast<unsigned int>((n - long(k)) % long(n_age) + long(n_age)) % n_age, k, f, w);
-      // The strip at the last age leaves: it entered at n - (n_age - 1).
-      const unsigned int slot =
-        static_cast<unsigned int>(((n - long(n_age) + 1) % long(n_age) + long(n_age)) % n_age);
+        if ((n - long(k)) % long(stride) == 0)
+          fill(slot_of(n - long(k)), k, f, w);
+      // The strip at the last age leaves, if one entered then.
+      const long entry = n - long(n_age) + 1;
+      if (entry % long(stride) != 0)
+        return 0.;
+      const unsigned int     slot = slot_of(entry);
       const Eigen::MatrixXd &hf = history_f[slot], &hw = history_w[slot];
       double                 energy = 0.;
       if (seen == 0)

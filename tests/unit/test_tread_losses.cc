@@ -159,15 +159,17 @@ BOOST_AUTO_TEST_CASE(a_frozen_imprint_dissipates_its_load_and_unload)
   const double variance = 0.5 * (0.2 * 0.2 + 0.1 * 0.1);
   const double reference =
     eta * h * (V / grid.dx) * grid.ny * variance * 1e4 * pulse_hysteresis(length / V);
-  for (const double step : {0.37, 0.79})
+  for (const double step : {0.05, 0.37, 0.79})
     {
       const double P = metered_power(frozen, grid, h, eta, V, step * grid.dx / V, 0.01, 0.11, 0.5);
       BOOST_TEST_MESSAGE("a frozen imprint, V dt / dx = " << step << ": " << P << " W against "
                                                           << reference << " W (relative "
                                                           << P / reference - 1. << ")");
-      // Measured -0.43% and -0.41%: the interpolation along x, the
-      // imprint's sample variance over 2 m of road, the running mean.
-      BOOST_TEST(std::abs(P / reference - 1.) < 0.013);
+      // Measured -0.30%, -0.28% and -0.41% (strips every 20 and 3 steps,
+      // and every step):
+      // the interpolation along x, the imprint's sample variance over 2 m
+      // of road, the running mean.
+      BOOST_TEST(std::abs(P / reference - 1.) < 0.012);
     }
 }
 
@@ -188,8 +190,8 @@ BOOST_AUTO_TEST_CASE(a_pulsating_patch_against_its_closed_form)
   const double P = metered_power(pulsating, grid, h, eta, V, 0.37 * grid.dx / V, 0.01, 0.21, 1.);
   BOOST_TEST_MESSAGE("a pulsating patch: " << P << " W against " << reference << " W (relative "
                                            << P / reference - 1. << ")");
-  // Measured -0.09%.
-  BOOST_TEST(std::abs(P / reference - 1.) < 0.003);
+  // Measured -0.012%.
+  BOOST_TEST(std::abs(P / reference - 1.) < 4e-4);
 }
 
 BOOST_AUTO_TEST_CASE(steps_beyond_the_patch_and_bad_input)

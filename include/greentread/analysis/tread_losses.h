@@ -19,12 +19,15 @@
  * hundred microseconds, but the rubber that carries it keeps it: what the
  * rubber undergoes is the load of its passage through the patch, the
  * texture's imprint, and the tyre's vibration. So the meter follows the
- * rubber: at every step a strip of tread, V dt long and one row of points
- * wide, enters at the patch's leading edge (the last column of points) and
- * moves with the road, its end force f and local displacement w (w = L f,
- * the local term) read from the grid by linear interpolation along x, until
- * it leaves behind the first column. Its history of N samples is then
- * complete.
+ * rubber: every m steps (m = dx / (V dt) rounded, at least 1: the strips
+ * about one rectangle apart, whatever the step) a strip of tread, m V dt
+ * long and one row of points wide, enters at the patch's leading edge (the
+ * last column of points) and moves with the road, its end force f and local
+ * displacement w (w = L f, the local term) read from the grid at every step
+ * by linear interpolation along x, until it leaves behind the first column.
+ * Its history of N samples, N dt the time it spends in the patch, is then
+ * complete. The cost is N^2 per row and strip: at a step m times finer, m^2
+ * times the work per unit time (a strip per step would make it m^3).
  *
  * **The rubber's law.** A loss factor eta independent of frequency
  * (`Materials/Tread pattern/Loss factor`, the one the finite-element tread turns into
@@ -51,12 +54,12 @@
  * rolling resistance is. The passage's own hysteresis belongs to a turning
  * tyre's main rolling resistance, which the model does not have
  * (rolling_resistance.h). The running mean's own scatter adds about
- * 1 / (2 N) of the part, N the strips it holds (0.08% at 0.25 m of road on
- * the 0.384 mm step).
+ * 1 / (2 N) of the part, N the strips it holds (0.15% at 0.25 m of road,
+ * strips 0.77 mm apart on the main job's grid and step).
  *
- * **Power.** Each strip carries the forces of a V dt long part of the
- * dx long rectangles it crosses, so it dissipates (V dt / dx) E, and the
- * strips that leave at a step put that energy in the step's record.
+ * **Power.** Each strip carries the forces of an m V dt long part of the
+ * dx long rectangles it crosses, so it dissipates (m V dt / dx) E, and the
+ * strip that leaves at a step puts that energy in the step's record.
  */
 
 namespace greentread
@@ -124,13 +127,19 @@ namespace greentread
       void
       fill(unsigned int slot, unsigned int age, const Eigen::VectorXd &f, const Eigen::VectorXd &w);
 
-      double        eta, strip; ///< eta, and V dt / dx
+      /// The slot of the strip that entered at time index @p entry (a multiple of stride).
+      unsigned int
+      slot_of(long entry) const;
+
+      double        eta, strip = 0.; ///< eta, and the strips' spacing over dx, stride V dt / dx
       TreadLossGrid grid;
-      unsigned int  n_age = 0, n_memory = 0, seen = 0;
-      long          next = 1;           ///< the time index of the next add() (0: the static start)
+      /// A strip enters every stride steps; n_slots strips are in the patch at most.
+      unsigned int stride = 1, n_slots = 0;
+      unsigned int n_age = 0, n_memory = 0, seen = 0;
+      long         next = 1;            ///< the time index of the next add() (0: the static start)
       std::vector<unsigned int> column; ///< per age: the column at or behind the strip
       std::vector<double>       weight; ///< per age: the next column's interpolation weight
-      /// Per strip in the patch (slot = its entry's time index mod n_age):
+      /// Per strip in the patch (slot_of() its entry's time index):
       /// its history, one row per age, one column per row of points.
       std::vector<Eigen::MatrixXd> history_f, history_w;
       Eigen::MatrixXd              mean_f, mean_w, kernel, cw;
