@@ -367,9 +367,9 @@ namespace greentread
       base::plot_png(directory / "rolling_resistance.png",
                      "set grid\nset xlabel 'mean profile depth MPD [mm]'\n"
                      "set ylabel 'C_{RR} added by the texture [10^{-3}]'\nset key top left\n"
-                     "set title 'GreenTread: rolling resistance the texture adds, structure and "
-                     "tread (dashed: structure; error bars: standard error and "
-                     "discretisations)'\n" +
+                     "set title \"GreenTread: rolling resistance the texture adds, structure "
+                     "and tread\\n(dashed: the structure alone; bars: standard error and "
+                     "discretisations)\"\n" +
                        plot.str() + "\n" + data.str(),
                      record);
     }
