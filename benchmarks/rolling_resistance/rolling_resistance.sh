@@ -20,8 +20,9 @@
 # Defaults: output build/greentread 4 2 1 0.5 0.25 0.125 (the factors from
 # coarse to fine, each half the one before). --quick makes its own stages on
 # the coarse ring (common/saved_stages.sh) in DIR/stages and rolls 1.2 m at
-# factors 2 1 0.5. Every run writes the table as
-# DIR/rolling_resistance.csv (DIR: build/benchmark-output/rolling_resistance).
+# factors 2 1 0.5. Every run writes the table of the power into the
+# structure as DIR/rolling_resistance.csv and that of the tread's losses as
+# DIR/rolling_resistance_tread.csv (DIR: build/benchmark-output/rolling_resistance).
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/../common/saved_stages.sh"
@@ -75,60 +76,70 @@ per_step() {
     "$work/$1.log"
 }
 
-echo "Rolling resistance against the time step: road-A and road-B at 70 km/h over $distance m, on the $($quick && echo "coarse ring's" || echo "main job's") saved stages"
-echo "road,factor,dt_us,coefficient,coefficient_se,ms_per_step,step_error" > "$work/runs.csv"
-for road in road-A road-B; do
-  # The scene's error bar, on its run of the plan.
-  estimate=$(awk -F, -v road="$road" '!/^#/ && $1 == road && $5 == "plan" { print $16; exit }' \
-    "$work/estimate/rolling_resistance.csv")
-  [[ -n "$estimate" ]] ||
-    { echo "rolling_resistance.sh: the scene gave $road no time step's error bar" >&2; exit 1; }
-  for f in "${factors[@]}"; do
-    awk -F, -v road="$road" -v f="$f" -v ms="$(per_step "f$f" "$road")" \
-      -v e="$([[ $f == 1 ]] && echo "$estimate" || echo n/a)" \
-      '!/^#/ && $1 == road { printf "%s,%s,%s,%s,%s,%s,%s\n", road, f, $6, $14, $15, ms, e; exit }' \
-      "$work/f$f/rolling_resistance.csv" >> "$work/runs.csv"
+# One part of the rolling resistance: its table on screen and in $3.
+# $1: the part's column offset in the scene's rolling_resistance.csv (0 the
+# structure's columns, 12 the tread's), $2 its name.
+tabulate() {
+  local off=$1
+  echo "Rolling resistance ($2) against the time step: road-A and road-B at 70 km/h over $distance m, on the $($quick && echo "coarse ring's" || echo "main job's") saved stages"
+  echo "road,factor,dt_us,coefficient,coefficient_se,ms_per_step,step_error" > "$work/runs.csv"
+  for road in road-A road-B; do
+    # The scene's error bar, on its run of the plan.
+    estimate=$(awk -F, -v road="$road" -v off="$off" '!/^#/ && $1 == road && $5 == "plan" { print $(16 + off); exit }' \
+      "$work/estimate/rolling_resistance.csv")
+    [[ -n "$estimate" ]] ||
+      { echo "rolling_resistance.sh: the scene gave $road no time step's error bar" >&2; exit 1; }
+    for f in "${factors[@]}"; do
+      awk -F, -v road="$road" -v f="$f" -v off="$off" -v ms="$(per_step "f$f" "$road")" \
+        -v e="$([[ $f == 1 ]] && echo "$estimate" || echo n/a)" \
+        '!/^#/ && $1 == road { printf "%s,%s,%s,%s,%s,%s,%s\n", road, f, $6, $(14 + off), $(15 + off), ms, e; exit }' \
+        "$work/f$f/rolling_resistance.csv" >> "$work/runs.csv"
+    done
   done
-done
 
-# Per road: each step's change from the next finer, the order three
-# successive steps show (log2 of the ratio of their changes, the factors
-# halve), and from the finest two at the finest order shown the
-# extrapolated limit and each step's distance from it.
-awk -F, '
-  NR == 1 { next }
-  { n[$1]++; k = n[$1]; f[$1, k] = $2; dt[$1, k] = $3; c[$1, k] = $4; se[$1, k] = $5; ms[$1, k] = $6; e[$1, k] = $7
-    if (!(($1) in seen)) { seen[$1] = 1; roads[++nr] = $1 } }
-  END {
-    print "road,factor,dt_us,coefficient,coefficient_se,change_from_finer,observed_order,from_limit_percent,ms_per_step,step_error,step_error_over_distance"
-    for (r = 1; r <= nr; r++) {
-      road = roads[r]; m = n[road]
-      for (k = 1; k < m; k++) d[k] = c[road, k + 1] - c[road, k]
-      p = "n/a"
-      for (k = 1; k + 1 < m; k++) {
-        o[k] = (d[k] * d[k + 1] > 0) ? log(d[k] / d[k + 1]) / log(f[road, k] / f[road, k + 1]) : "n/a"
-        p = o[k]
+  # Per road: each step's change from the next finer, the order three
+  # successive steps show (log2 of the ratio of their changes, the factors
+  # halve), and from the finest two at the finest order shown the
+  # extrapolated limit and each step's distance from it.
+  awk -F, '
+    NR == 1 { next }
+    { n[$1]++; k = n[$1]; f[$1, k] = $2; dt[$1, k] = $3; c[$1, k] = $4; se[$1, k] = $5; ms[$1, k] = $6; e[$1, k] = $7
+      if (!(($1) in seen)) { seen[$1] = 1; roads[++nr] = $1 } }
+    END {
+      print "road,factor,dt_us,coefficient,coefficient_se,change_from_finer,observed_order,from_limit_percent,ms_per_step,step_error,step_error_over_distance"
+      for (r = 1; r <= nr; r++) {
+        road = roads[r]; m = n[road]
+        for (k = 1; k < m; k++) d[k] = c[road, k + 1] - c[road, k]
+        p = "n/a"
+        for (k = 1; k + 1 < m; k++) {
+          o[k] = (d[k] * d[k + 1] > 0) ? log(d[k] / d[k + 1]) / log(f[road, k] / f[road, k + 1]) : "n/a"
+          p = o[k]
+        }
+        # The limit from the finest two at the finest order shown.
+        if (p != "n/a" && p > 0) {
+          ratio = f[road, m - 1] / f[road, m]
+          limit = c[road, m] + d[m - 1] / (ratio ^ p - 1)
+        } else limit = "n/a"
+        for (k = 1; k <= m; k++) {
+          change = (k < m) ? sprintf("%.6e", d[k]) : "n/a"
+          order = (k + 1 < m && o[k] != "n/a") ? sprintf("%.3f", o[k]) : "n/a"
+          away = (limit != "n/a") ? sprintf("%.2f", 100 * (c[road, k] - limit) / limit) : "n/a"
+          # The error bar of the scene against the distance from the limit.
+          over = (e[road, k] != "n/a" && limit != "n/a") ? sprintf("%.3f", e[road, k] / sqrt((c[road, k] - limit) ^ 2)) : "n/a"
+          printf "%s,%s,%s,%.6e,%.6e,%s,%s,%s,%s,%s,%s\n", road, f[road, k], dt[road, k], c[road, k], se[road, k], change, order, away, ms[road, k], e[road, k], over
+        }
       }
-      # The limit from the finest two at the finest order shown.
-      if (p != "n/a" && p > 0) {
-        ratio = f[road, m - 1] / f[road, m]
-        limit = c[road, m] + d[m - 1] / (ratio ^ p - 1)
-      } else limit = "n/a"
-      for (k = 1; k <= m; k++) {
-        change = (k < m) ? sprintf("%.6e", d[k]) : "n/a"
-        order = (k + 1 < m && o[k] != "n/a") ? sprintf("%.3f", o[k]) : "n/a"
-        away = (limit != "n/a") ? sprintf("%.2f", 100 * (c[road, k] - limit) / limit) : "n/a"
-        # The error bar of the scene against the distance from the limit.
-        over = (e[road, k] != "n/a" && limit != "n/a") ? sprintf("%.3f", e[road, k] / sqrt((c[road, k] - limit) ^ 2)) : "n/a"
-        printf "%s,%s,%s,%.6e,%.6e,%s,%s,%s,%s,%s,%s\n", road, f[road, k], dt[road, k], c[road, k], se[road, k], change, order, away, ms[road, k], e[road, k], over
-      }
-    }
-  }' "$work/runs.csv" > "$work/table.csv"
+    }' "$work/runs.csv" > "$work/table.csv"
 
-echo "| road | road samples per step | dt [us] | C_RR [1e-3] | its standard error [1e-3] | change to the next finer step [1e-3] | order shown with the next two | from the extrapolated limit [%] | the scene's time step error bar [1e-3] | it over the distance from the limit | ms per step |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-awk -F, 'NR > 1 {
-    printf "| %s | %.3g | %.4g | %.4g | %.2g | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, 1e3 * $4, 1e3 * $5,
-      ($6 == "n/a") ? "" : sprintf("%.3g", 1e3 * $6), ($7 == "n/a") ? "" : $7, $8,
-      ($10 == "n/a") ? "" : sprintf("%.3g", 1e3 * $10), ($11 == "n/a") ? "" : $11, $9 }' "$work/table.csv"
-write_csv "$output/rolling_resistance.csv" < "$work/table.csv"
+  echo "| road | road samples per step | dt [us] | C_RR [1e-3] | its standard error [1e-3] | change to the next finer step [1e-3] | order shown with the next two | from the extrapolated limit [%] | the scene's time step error bar [1e-3] | it over the distance from the limit | ms per step |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  awk -F, 'NR > 1 {
+      printf "| %s | %.3g | %.4g | %.4g | %.2g | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, 1e3 * $4, 1e3 * $5,
+        ($6 == "n/a") ? "" : sprintf("%.3g", 1e3 * $6), ($7 == "n/a") ? "" : $7, $8,
+        ($10 == "n/a") ? "" : sprintf("%.3g", 1e3 * $10), ($11 == "n/a") ? "" : $11, $9 }' "$work/table.csv"
+  write_csv "$output/$3" < "$work/table.csv"
+}
+
+tabulate 0 "into the structure" rolling_resistance.csv
+echo
+tabulate 12 "the tread's losses" rolling_resistance_tread.csv
